@@ -1,0 +1,102 @@
+#pragma once
+// The processor interface: the unit of work that the GUI, the CLI and pipelines all run the same way.
+//
+// A processor reads input streams/tables (read-only), computes, and returns new items. It never
+// writes into the project itself: the ProcessorRunner validates parameters and inputs, calls run(),
+// attaches provenance and stores the outputs only when run() succeeded and was not cancelled.
+#include "core/model/Project.h"
+#include "core/processing/ParameterSpec.h"
+#include "core/util/Expected.h"
+#include "core/util/Progress.h"
+
+#include <QJsonObject>
+#include <QString>
+#include <QStringList>
+#include <QVariantMap>
+#include <memory>
+#include <optional>
+#include <variant>
+#include <vector>
+
+namespace athlos {
+
+struct InputSpec {
+    QString name;          // role, e.g. "signal", "tdoa", "beacons"
+    QStringList kinds;     // accepted kinds; empty = any stream
+    bool table = false;    // a table instead of a stream
+    bool optional = false;
+    QString help;
+};
+
+struct OutputSpec {
+    QString kind;          // kind of the produced stream/table
+    bool table = false;
+    QString suffix;        // empty for the main output; else stored as "<output>-<suffix>"
+    QString help;
+};
+
+// One produced item. The runner names it after --output (plus suffix) and adds provenance.
+struct ProcessorOutput {
+    QString suffix;
+    std::variant<Stream, Table> item;
+};
+
+class RunContext {
+public:
+    RunContext(const Project& project, std::vector<const Stream*> streams, std::vector<const Table*> tables,
+               std::vector<QString> inputPaths, QVariantMap parameters, QString outputPath, Progress progress);
+
+    const Project& project() const { return project_; }
+    // Inputs in the order of Processor::inputs(); absent optional inputs are nullptr.
+    const Stream* stream(int index) const;
+    const Table* table(int index) const;
+    const QString& inputPath(int index) const { return inputPaths_.at(index); }
+    int inputCount() const { return static_cast<int>(inputPaths_.size()); }
+    const QString& outputPath() const { return outputPath_; }
+
+    const QVariantMap& parameters() const { return parameters_; }
+    bool has(const QString& name) const { return parameters_.contains(name); }
+    double number(const QString& name) const { return parameters_.value(name).toDouble(); }
+    int integer(const QString& name) const { return parameters_.value(name).toInt(); }
+    bool flag(const QString& name) const { return parameters_.value(name).toBool(); }
+    QString text(const QString& name) const { return parameters_.value(name).toString(); }
+
+    const Progress& progress() const { return progress_; }
+    void report(double fraction, const QString& message = {}) const { progress_.report(fraction, message); }
+    bool isCancelled() const { return progress_.isCancelled(); }
+
+private:
+    const Project& project_;
+    std::vector<const Stream*> streams_;
+    std::vector<const Table*> tables_;
+    std::vector<QString> inputPaths_;
+    QVariantMap parameters_;
+    QString outputPath_;
+    Progress progress_;
+};
+
+class Processor {
+public:
+    virtual ~Processor() = default;
+
+    virtual QString id() const = 0;           // stable, used on the CLI: "resample"
+    virtual QString name() const = 0;         // translated display name
+    virtual QString description() const = 0;
+    virtual QString version() const = 0;      // bump when results change
+    virtual ParameterSpecs parameters() const = 0;
+    virtual QList<InputSpec> inputs() const = 0;
+    virtual QList<OutputSpec> outputs() const = 0;
+
+    // Cross-parameter and parameter-vs-data checks that need the inputs (e.g. cut-off below
+    // Nyquist). Called before run(); the default accepts.
+    virtual Status validate(const RunContext&) const { return {}; }
+
+    virtual Expected<std::vector<ProcessorOutput>> run(const RunContext& context) const = 0;
+
+    QJsonObject describe() const;  // schema as JSON (athlos processors --json)
+};
+
+// Error returned by run() when it noticed cancellation.
+inline Error cancelledError() { return makeError(QStringLiteral("cancelled")); }
+
+}  // namespace athlos

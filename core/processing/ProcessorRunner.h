@@ -1,0 +1,39 @@
+#pragma once
+// Runs a processor against a project the same way for the GUI, the CLI and pipelines:
+// resolves and type-checks inputs, validates parameters, runs, attaches provenance and stores the
+// outputs. On any error or cancellation the project is left unchanged.
+#include "core/model/Project.h"
+#include "core/processing/Processor.h"
+#include "core/util/Expected.h"
+#include "core/util/Progress.h"
+
+#include <QStringList>
+#include <QVariantMap>
+
+namespace athlos {
+
+struct RunRequest {
+    QString processorId;
+    QStringList inputs;      // "rec/item" in the order of the processor's inputs()
+    QString output;          // "rec/item" for the main output
+    QVariantMap parameters;  // strings from the CLI or typed values from the GUI
+};
+
+struct RunOutcome {
+    QStringList written;     // paths of the stored outputs
+    QJsonObject parameters;  // validated parameters, as recorded in provenance
+};
+
+Expected<RunOutcome> runProcessor(Project& project, const Processor& processor, const RunRequest& request,
+                                  const Progress& progress = {});
+// Looks the processor up in the registry first.
+Expected<RunOutcome> runProcessor(Project& project, const RunRequest& request, const Progress& progress = {});
+
+// A pipeline is a JSON document {"name": ..., "steps": [{"processor", "input" (string or array),
+// "output", "params": {k: v}}, ...]}. Steps run in order; any failure leaves the project unchanged.
+// The pipeline (with timestamps and outputs) is appended to the project's pipeline history.
+Expected<QStringList> runPipeline(Project& project, const QJsonObject& pipeline, const Progress& progress = {});
+// Parses a pipeline file, naming the file and the JSON error offset on failure.
+Expected<QJsonObject> readPipelineFile(const QString& path);
+
+}  // namespace athlos
