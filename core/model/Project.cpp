@@ -1,0 +1,192 @@
+#include "core/model/Project.h"
+
+#include "core/store/ProjectFile.h"
+#include "core/util/Version.h"
+
+#include <QDateTime>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QRandomGenerator>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <unistd.h>
+
+namespace athlos {
+namespace {
+
+QString nowUtc() { return QDateTime::currentDateTimeUtc().toString(Qt::ISODate); }
+
+// fsync a file or folder so that a rename that follows is durable (a crash after save() returns
+// never shows the old file, nor an empty new one).
+bool syncPath(const QString& path) {
+    const int fd = ::open(QFile::encodeName(path).constData(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return false;
+    const bool ok = ::fsync(fd) == 0;
+    ::close(fd);
+    return ok;
+}
+
+}  // namespace
+
+ItemPath ItemPath::parse(const QString& path) {
+    const int slash = path.indexOf(QLatin1Char('/'));
+    if (slash < 0) return {path, {}};
+    return {path.left(slash), path.mid(slash + 1)};
+}
+
+Project::Project(QString path) : path_(std::move(path)) {}
+Project::~Project() = default;
+
+std::unique_ptr<Project> Project::create(const QString& path, const QString& sport) {
+    std::unique_ptr<Project> project(new Project(QFileInfo(path).absoluteFilePath()));
+    project->meta_.formatVersion = kFormatVersion;
+    project->meta_.appVersion = appVersion();
+    project->meta_.created = nowUtc();
+    project->meta_.modified = project->meta_.created;
+    project->meta_.sport = sport;
+    project->modified_ = true;
+    return project;
+}
+
+Expected<std::unique_ptr<Project>> Project::open(const QString& path) {
+    std::unique_ptr<Project> project(new Project(QFileInfo(path).absoluteFilePath()));
+    if (Status status = ProjectFile::read(project->path_, *project); !status) return status.error();
+    project->modified_ = false;
+    return project;
+}
+
+Status Project::save(const Progress& progress) { return saveAs(path_, progress); }
+
+Status Project::saveAs(const QString& path, const Progress& progress) {
+    const QFileInfo target(path);
+    const QString absolute = target.absoluteFilePath();
+    const QDir dir = target.absoluteDir();
+    if (!dir.exists())
+        return makeError(QStringLiteral("cannot save '%1': folder '%2' does not exist").arg(path, dir.path()));
+
+    // The temporary file lives in the same folder so that rename() is atomic (same file system).
+    const QString tmp = dir.filePath(QStringLiteral(".%1.tmp-%2")
+                                         .arg(target.fileName())
+                                         .arg(QRandomGenerator::global()->generate64(), 16, 16, QLatin1Char('0')));
+    const ProjectMeta previous = meta_;
+    meta_.appVersion = appVersion();
+    meta_.modified = nowUtc();
+    if (meta_.created.isEmpty()) meta_.created = meta_.modified;
+
+    Status written = ProjectFile::write(*this, tmp, progress);
+    if (written && !syncPath(tmp))
+        written = makeError(QStringLiteral("cannot save '%1': flushing '%2' failed: %3")
+                                .arg(path, tmp, QString::fromLocal8Bit(std::strerror(errno))));
+    if (written && ::rename(QFile::encodeName(tmp).constData(), QFile::encodeName(absolute).constData()) != 0)
+        written = makeError(QStringLiteral("cannot save '%1': %2").arg(path, QString::fromLocal8Bit(std::strerror(errno))));
+    if (!written) {
+        QFile::remove(tmp);
+        meta_ = previous;
+        return written;
+    }
+    syncPath(dir.absolutePath());
+    path_ = absolute;
+    ProjectFile::rebind(*this, path_);
+    modified_ = false;
+    return {};
+}
+
+QStringList Project::recordingNames() const {
+    QStringList names;
+    for (const auto& [name, rec] : recordings_) names << name;
+    return names;
+}
+
+Recording* Project::recording(const QString& name) {
+    auto it = recordings_.find(name);
+    return it == recordings_.end() ? nullptr : &it->second;
+}
+
+const Recording* Project::recording(const QString& name) const {
+    auto it = recordings_.find(name);
+    return it == recordings_.end() ? nullptr : &it->second;
+}
+
+Recording& Project::ensureRecording(const QString& name) {
+    auto& rec = recordings_[name];
+    if (rec.name.isEmpty()) {
+        rec.name = name;
+        modified_ = true;
+    }
+    return rec;
+}
+
+bool Project::removeRecording(const QString& name) {
+    const bool removed = recordings_.erase(name) > 0;
+    modified_ |= removed;
+    return removed;
+}
+
+const Stream* Project::stream(const QString& path) const {
+    const auto p = ItemPath::parse(path);
+    const Recording* rec = recording(p.recording);
+    if (!rec) return nullptr;
+    auto it = rec->streams.find(p.item);
+    return it == rec->streams.end() ? nullptr : &it->second;
+}
+
+Stream* Project::stream(const QString& path) {
+    return const_cast<Stream*>(std::as_const(*this).stream(path));
+}
+
+const Table* Project::table(const QString& path) const {
+    const auto p = ItemPath::parse(path);
+    const Recording* rec = recording(p.recording);
+    if (!rec) return nullptr;
+    auto it = rec->tables.find(p.item);
+    return it == rec->tables.end() ? nullptr : &it->second;
+}
+
+Table* Project::table(const QString& path) { return const_cast<Table*>(std::as_const(*this).table(path)); }
+
+void Project::putStream(const QString& path, Stream stream) {
+    const auto p = ItemPath::parse(path);
+    Recording& rec = ensureRecording(p.recording);
+    rec.tables.erase(p.item);
+    stream.info().name = p.item;
+    rec.streams.insert_or_assign(p.item, std::move(stream));
+    modified_ = true;
+}
+
+void Project::putTable(const QString& path, Table table) {
+    const auto p = ItemPath::parse(path);
+    Recording& rec = ensureRecording(p.recording);
+    rec.streams.erase(p.item);
+    table.name = p.item;
+    rec.tables.insert_or_assign(p.item, std::move(table));
+    modified_ = true;
+}
+
+bool Project::removeItem(const QString& path) {
+    const auto p = ItemPath::parse(path);
+    Recording* rec = recording(p.recording);
+    if (!rec) return false;
+    const bool removed = rec->streams.erase(p.item) + rec->tables.erase(p.item) > 0;
+    modified_ |= removed;
+    return removed;
+}
+
+QStringList Project::streamPaths() const {
+    QStringList paths;
+    for (const auto& [name, rec] : recordings_)
+        for (const auto& [item, s] : rec.streams) paths << name + QLatin1Char('/') + item;
+    return paths;
+}
+
+QStringList Project::tablePaths() const {
+    QStringList paths;
+    for (const auto& [name, rec] : recordings_)
+        for (const auto& [item, t] : rec.tables) paths << name + QLatin1Char('/') + item;
+    return paths;
+}
+
+}  // namespace athlos
