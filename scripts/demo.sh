@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# The embedded default: builds Athlos, makes a demo project from ../shared/data (a BROAD trial with
+# its optical reference and the gaitmap walk), runs the processors on it, and then opens the GUI
+# on it — or, without a display, prints a summary and writes screenshots.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+ATHLOS="${ATHLOS_BUILD_DIR:-build}/bin/athlos"
+SHARED="${ATHLOS_SHARED_DIR:-$(cd .. && pwd)/shared}"
+OUT="${ATHLOS_DEMO_DIR:-out}"
+mkdir -p "$OUT"
+P="$OUT/demo.athlos"
+
+"$ATHLOS" new "$P" --sport "lab" --force
+"$ATHLOS" import "$P" "$SHARED/data/broad/07_undisturbed_fast_rotation_B.hdf5" --as broad07 --format broad
+"$ATHLOS" import "$P" "$SHARED/data/gaitmap/imu_sample_ic_stride.csv" --as walk --format gaitmap
+"$ATHLOS" pipeline "$P" resources/demo/pipeline.json
+"$ATHLOS" info "$P"
+for view in $("$ATHLOS" screenshot --help | sed -n 's/.*One of: \(.*\)/\1/p' | tr -d ','); do
+  "$ATHLOS" screenshot "$P" --view "$view" --to "$OUT/demo-$view.png"
+  echo "screenshot: $OUT/demo-$view.png"
+done
+if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ] && [ -z "${CI:-}" ]; then
+  exec "$ATHLOS" "$P"
+fi
+echo "demo project: $P (open it with: $ATHLOS $P)"
