@@ -1,6 +1,7 @@
 #pragma once
 // The known stream kinds: default stream name under a recording, default frame, and the SI unit
 // each known column must have. Importers use it to name streams and to check/convert units.
+// TDoA streams (kind "lps-tdoa") are stored wide, one dt_<id> column per beacon: see core/io/TdoaLayout.h.
 #include <QString>
 #include <QStringList>
 #include <optional>
