@@ -25,6 +25,7 @@ struct ParameterSpec {
     QString help;
     bool optional = false;   // may be absent (no default), e.g. output_rate
 
+    // def = NaN makes the parameter required (no default).
     static ParameterSpec number(QString name, double def, double min, double max, QString unit, QString help);
     static ParameterSpec integer(QString name, int def, int min, int max, QString help);
     static ParameterSpec boolean(QString name, bool def, QString help);

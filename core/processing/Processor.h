@@ -29,7 +29,7 @@ struct InputSpec {
 };
 
 struct OutputSpec {
-    QString kind;          // kind of the produced stream/table
+    QString kind;          // kind of the produced stream/table; empty = the kind of the first input
     bool table = false;
     QString suffix;        // empty for the main output; else stored as "<output>-<suffix>"
     QString help;
