@@ -32,6 +32,13 @@ bool syncPath(const QString& path) {
 
 }  // namespace
 
+bool ItemPath::isValid() const {
+    auto ok = [](const QString& name) {
+        return !name.isEmpty() && name != u"." && name != u".." && !name.contains(QLatin1Char('/'));
+    };
+    return ok(recording) && ok(item);
+}
+
 ItemPath ItemPath::parse(const QString& path) {
     const int slash = path.indexOf(QLatin1Char('/'));
     if (slash < 0) return {path, {}};
@@ -62,7 +69,9 @@ Expected<std::unique_ptr<Project>> Project::open(const QString& path) {
 Status Project::save(const Progress& progress) { return saveAs(path_, progress); }
 
 Status Project::saveAs(const QString& path, const Progress& progress) {
-    const QFileInfo target(path);
+    // Saving through a symlink replaces the link's target, not the link.
+    const QFileInfo given(path);
+    const QFileInfo target(given.isSymLink() ? given.symLinkTarget() : given.absoluteFilePath());
     const QString absolute = target.absoluteFilePath();
     const QDir dir = target.absoluteDir();
     if (!dir.exists())
@@ -78,6 +87,10 @@ Status Project::saveAs(const QString& path, const Progress& progress) {
     if (meta_.created.isEmpty()) meta_.created = meta_.modified;
 
     Status written = ProjectFile::write(*this, tmp, progress);
+    if (!written && written.message() != u"cancelled")
+        written = makeError(QStringLiteral("cannot save '%1': %2").arg(path, written.message()));
+    // Keep the permissions of the file being replaced (a shared, group-writable project stays so).
+    if (written && target.exists()) QFile::setPermissions(tmp, QFile::permissions(absolute));
     if (written && !syncPath(tmp))
         written = makeError(QStringLiteral("cannot save '%1': flushing '%2' failed: %3")
                                 .arg(path, tmp, QString::fromLocal8Bit(std::strerror(errno))));
@@ -89,7 +102,7 @@ Status Project::saveAs(const QString& path, const Progress& progress) {
         return written;
     }
     syncPath(dir.absolutePath());
-    path_ = absolute;
+    path_ = given.isSymLink() ? given.absoluteFilePath() : absolute;
     ProjectFile::rebind(*this, path_);
     modified_ = false;
     return {};

@@ -33,7 +33,8 @@ struct ItemPath {
     QString item;
     static ItemPath parse(const QString& path);
     QString toString() const { return recording + QLatin1Char('/') + item; }
-    bool isValid() const { return !recording.isEmpty() && !item.isEmpty(); }
+    // Both parts non-empty, not "." or "..", without '/'.
+    bool isValid() const;
 };
 
 class Project {
