@@ -1,0 +1,162 @@
+// The importer registry, format detection, item naming and the all-or-nothing apply step.
+//
+// Naming: importers return items under their default names ("imu"; BROAD "imu" and "reference";
+// gaitmap "left-foot" and "right-foot"; NMEA "gnss"). importFile() puts them under the target:
+//   "rec"         → rec/<default name>
+//   "rec/name"    → rec/name for a single item, rec/name-<default name> for each of several
+//   "" (none)     → the recording is named after the file ("run1.csv" → run1/<default name>).
+#include "core/io/BroadImporter.h"
+#include "core/io/CsvImporter.h"
+#include "core/io/GaitmapImporter.h"
+#include "core/io/Importer.h"
+#include "core/io/NmeaImporter.h"
+#include "core/util/Version.h"
+
+#include <QDateTime>
+#include <QFile>
+#include <QFileInfo>
+#include <QSet>
+
+namespace athlos {
+namespace {
+
+constexpr qint64 kHeadBytes = 4096;
+
+struct Target {
+    QString recording;
+    QString item;
+};
+
+Expected<Target> parseTarget(const QString& target, const QString& file) {
+    if (target.trimmed().isEmpty())
+        return Target{QFileInfo(file).completeBaseName(), {}};
+    const QStringList parts = target.trimmed().split(QLatin1Char('/'));
+    if (parts.size() > 2 || parts.front().isEmpty() || (parts.size() == 2 && parts.back().isEmpty()))
+        return makeError(QStringLiteral("target '%1': expected <recording> or <recording>/<stream>").arg(target));
+    return Target{parts.front(), parts.size() == 2 ? parts.back() : QString()};
+}
+
+Provenance importProvenance(const Importer& importer, const QString& file, const ImportOptions& options) {
+    Provenance p;
+    p.processorId = QStringLiteral("import:") + importer.format();
+    p.processorVersion = appVersion();
+    p.parameters = QJsonObject{{"format", importer.format()},
+                               {"kind", options.kind},
+                               {"time_repair", options.timeRepair},
+                               {"frame", options.frame},
+                               {"target", options.target}};
+    p.sourceFile = QFileInfo(file).absoluteFilePath();
+    p.appVersion = appVersion();
+    p.time = QDateTime::currentDateTimeUtc();
+    return p;
+}
+
+}  // namespace
+
+const std::vector<std::unique_ptr<Importer>>& importers() {
+    // Order is the auto-detection order: specific signatures first, plain CSV last.
+    static const auto list = [] {
+        std::vector<std::unique_ptr<Importer>> v;
+        v.push_back(std::make_unique<BroadImporter>());
+        v.push_back(std::make_unique<GaitmapImporter>());
+        v.push_back(std::make_unique<NmeaImporter>());
+        v.push_back(std::make_unique<CsvImporter>());
+        return v;
+    }();
+    return list;
+}
+
+const Importer* findImporter(const QString& format) {
+    for (const auto& importer : importers())
+        if (importer->format() == format)
+            return importer.get();
+    return nullptr;
+}
+
+Expected<ImportResult> importFile(const QString& file, const ImportOptions& options, const Progress& progress) {
+    const QFileInfo info(file);
+    if (!info.exists())
+        return makeError(QStringLiteral("%1: no such file").arg(file));
+    if (!info.isFile())
+        return makeError(QStringLiteral("%1: not a file").arg(file));
+    const auto target = parseTarget(options.target, file);
+    if (!target)
+        return target.error();
+
+    const Importer* importer = nullptr;
+    if (options.format.isEmpty() || options.format == QLatin1String("auto")) {
+        QFile f(file);
+        if (!f.open(QIODevice::ReadOnly))
+            return makeError(QStringLiteral("%1: cannot open: %2").arg(file, f.errorString()));
+        const QByteArray head = f.read(kHeadBytes);
+        for (const auto& candidate : importers())
+            if (candidate->canRead(file, head)) {
+                importer = candidate.get();
+                break;
+            }
+        if (!importer) {
+            QStringList formats;
+            for (const auto& candidate : importers())
+                formats << candidate->format();
+            return makeError(QStringLiteral("%1: cannot tell the file format; give one of: %2")
+                                 .arg(file, formats.join(QStringLiteral(", "))));
+        }
+    } else if (!(importer = findImporter(options.format))) {
+        QStringList formats;
+        for (const auto& candidate : importers())
+            formats << candidate->format();
+        return makeError(QStringLiteral("unknown import format '%1' (known: auto, %2)")
+                             .arg(options.format, formats.join(QStringLiteral(", "))));
+    }
+
+    auto result = importer->read(file, options, progress);
+    if (!result)
+        return result;
+    const Provenance provenance = importProvenance(*importer, file, options);
+    const bool several = result->items.size() > 1;
+    for (ImportedItem& item : result->items) {
+        const QString defaultName = item.path;
+        const QString name = target->item.isEmpty() ? defaultName
+                             : several               ? target->item + QLatin1Char('-') + defaultName
+                                                     : target->item;
+        item.path = target->recording + QLatin1Char('/') + name;
+        if (auto* stream = std::get_if<Stream>(&item.item)) {
+            stream->info().name = name;
+            stream->info().provenance = provenance;
+            if (!options.frame.isEmpty())
+                stream->info().frame = options.frame;
+        } else {
+            auto& table = std::get<Table>(item.item);
+            table.name = name;
+            table.provenance = provenance;
+            if (!options.frame.isEmpty())
+                table.attributes.insert(QStringLiteral("frame"), options.frame);
+        }
+    }
+    return result;
+}
+
+Status applyImport(Project& project, ImportResult result, bool overwrite) {
+    QSet<QString> seen;
+    for (const ImportedItem& item : result.items) {
+        const ItemPath path = ItemPath::parse(item.path);
+        if (!path.isValid())
+            return makeError(QStringLiteral("'%1' is not a valid item name (<recording>/<stream>)").arg(item.path));
+        if (seen.contains(item.path))
+            return makeError(QStringLiteral("the import has two items named '%1'").arg(item.path));
+        seen.insert(item.path);
+        if (!overwrite && (project.stream(item.path) || project.table(item.path)))
+            return makeError(QStringLiteral("'%1' already exists in the project (overwrite to replace it)").arg(item.path));
+    }
+    for (ImportedItem& item : result.items) {
+        if (project.stream(item.path) || project.table(item.path))
+            project.removeItem(item.path);  // a table may replace a stream and vice versa
+        if (auto* stream = std::get_if<Stream>(&item.item))
+            project.putStream(item.path, std::move(*stream));
+        else
+            project.putTable(item.path, std::move(std::get<Table>(item.item)));
+    }
+    return {};
+}
+
+}  // namespace athlos
