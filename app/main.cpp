@@ -6,7 +6,10 @@
 
 #include <QApplication>
 #include <QCoreApplication>
+#include <QDir>
+#include <QFile>
 #include <QFileInfo>
+#include <unistd.h>
 #include <cstdio>
 #include <functional>
 #include <map>
@@ -30,6 +33,16 @@ const char* kUsage =
     "\n"
     "Every command has --help. Exit code 0 on success, non-zero with a one-line reason otherwise.\n";
 
+// Qt warns on stderr when XDG_RUNTIME_DIR is unset (root shells, CI); a private folder keeps the
+// one-line-error contract of the CLI.
+void ensureRuntimeDir() {
+    if (qEnvironmentVariableIsSet("XDG_RUNTIME_DIR")) return;
+    const QByteArray dir = QDir::tempPath().toLocal8Bit() + "/athlos-runtime-" + QByteArray::number(getuid());
+    QDir().mkpath(QString::fromLocal8Bit(dir));
+    QFile::setPermissions(QString::fromLocal8Bit(dir), QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
+    qputenv("XDG_RUNTIME_DIR", dir);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -48,7 +61,7 @@ int main(int argc, char** argv) {
     }
     if (command == u"--version" || command == u"-v") {
         QCoreApplication app(argc, argv);
-        std::printf("%s\n", qUtf8Printable(athlos::libraryVersions()));
+        std::printf("%s\n", qUtf8Printable(athlos::ui::libraryVersions()));
         return Ok;
     }
     if (auto it = headless.find(command); it != headless.end()) {
@@ -60,13 +73,14 @@ int main(int argc, char** argv) {
     if (command == u"screenshot") {
         // Rendering is always offscreen: deterministic, and it works without a display (CI).
         qputenv("QT_QPA_PLATFORM", "offscreen");
+        ensureRuntimeDir();
         QApplication app(argc, argv);
         QCoreApplication::setApplicationName(QStringLiteral("Athlos"));
         athlos::ui::installTranslations(app);
         return cmdScreenshot(app.arguments().mid(1));
     }
     if (!command.isEmpty() && (command.startsWith(QLatin1Char('-')) || !QFileInfo(command).suffix().startsWith(u"athlos"))) {
-        std::fprintf(stderr, "athlos: unknown command '%s'\n\n%s", qUtf8Printable(command), kUsage);
+        std::fprintf(stderr, "athlos: unknown command '%s' (see athlos --help)\n", qUtf8Printable(command));
         return Usage;
     }
 

@@ -18,5 +18,8 @@ int runMainWindow(const QString& projectPath);
 Status renderScreenshot(const QString& projectPath, const QString& view, const QString& pngPath,
                         QSize size = QSize(1280, 800));
 QStringList screenshotViews();
+// athlos::libraryVersions() plus the libraries only the UI links (QCustomPlot), one per line:
+// for "About" and `athlos --version`.
+QString libraryVersions();
 
 }  // namespace athlos::ui

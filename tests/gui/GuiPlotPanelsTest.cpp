@@ -1,0 +1,217 @@
+// The plot panels: graphs per column with units, decimated point counts at full range, raw
+// samples when zoomed in, peaks kept, y auto-fit, load errors; the trajectory with equal scaling
+// and start/end markers.
+#include "GuiTestSupport.h"
+#include "ui/TimeSeriesPanel.h"
+#include "ui/TrajectoryPanel.h"
+
+#include <QSignalSpy>
+#include <QtTest>
+#include <qcustomplot.h>
+
+using namespace athlos;
+using namespace athlos::ui;
+
+namespace {
+
+std::shared_ptr<const Stream> shared(Stream stream)
+{
+    return std::make_shared<const Stream>(std::move(stream));
+}
+
+// n samples at 1 kHz of a slow sine with one +100 spike at `spikeAt`.
+Stream bigStream(std::size_t n, std::size_t spikeAt)
+{
+    StreamInfo info;
+    info.kind = QStringLiteral("imu");
+    info.columns = {{"acc_x", "m/s^2"}};
+    StreamData data(n, 1);
+    for (std::size_t i = 0; i < n; ++i) {
+        data.t[i] = 1e-3 * double(i);
+        data.at(i, 0) = std::sin(1e-4 * double(i));
+    }
+    data.at(spikeAt, 0) = 100.0;
+    return Stream(std::move(info), std::move(data));
+}
+
+}  // namespace
+
+class GuiPlotPanelsTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void plotsEveryColumnWithUnits();
+    void decimatesLargeStreamsWithoutLosingPeaks();
+    void choosesColumns();
+    void reportsLoadErrors();
+    void trajectoryHasEqualScalingAndMarkers();
+    void recognisesPositionStreams();
+};
+
+void GuiPlotPanelsTest::plotsEveryColumnWithUnits()
+{
+    TimeSeriesPanel panel;
+    panel.resize(1000, 600);
+    panel.show();
+    QSignalSpy loaded(&panel, &TimeSeriesPanel::loaded);
+    panel.setStream(shared(testing::makeImuStream()), QStringLiteral("run1/imu"));
+    QVERIFY(panel.isLoading());
+    QVERIFY(loaded.wait(10000));
+    QVERIFY(!panel.isLoading());
+
+    QCustomPlot* plot = panel.plot();
+    QCOMPARE(plot->graphCount(), 6);
+    QCOMPARE(plot->graph(0)->name(), QStringLiteral("acc_x [m/s^2]"));
+    QCOMPARE(plot->graph(5)->name(), QStringLiteral("gyr_z [rad/s]"));
+    QCOMPARE(plot->xAxis->label(), QStringLiteral("t [s]"));
+    QVERIFY(plot->legend->visible());
+    QCOMPARE(plot->xAxis->range().lower, 0.0);
+    QCOMPARE(plot->xAxis->range().upper, 19.99);
+    // 2000 samples over ~900 px: decimated to at most 2 points per pixel column (+2 neighbours).
+    plot->replot();
+    const int width = plot->axisRect()->width();
+    QVERIFY(width > 500);
+    for (int g = 0; g < plot->graphCount(); ++g) {
+        QVERIFY(plot->graph(g)->dataCount() > 0);
+        QVERIFY(plot->graph(g)->dataCount() <= 2 * width + 2);
+    }
+    QCOMPARE(panel.visibleColumns().size(), 6);
+}
+
+void GuiPlotPanelsTest::decimatesLargeStreamsWithoutLosingPeaks()
+{
+    const std::size_t n = 2'000'000, spike = 1'234'567;
+    TimeSeriesPanel panel;
+    panel.resize(1200, 500);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    panel.setStream(shared(bigStream(n, spike)));
+    panel.waitForLoad();
+    QCustomPlot* plot = panel.plot();
+    plot->replot();
+    QCOMPARE(plot->graphCount(), 1);
+    const int width = plot->axisRect()->width();
+    QCOMPARE(panel.decimationWidth(), width);
+    QCPGraph* graph = plot->graph(0);
+    QVERIFY2(graph->dataCount() <= 2 * width + 2, qPrintable(QString::number(graph->dataCount())));
+    QVERIFY(graph->dataCount() >= width);
+    bool spikeShown = false;
+    for (auto it = graph->data()->constBegin(); it != graph->data()->constEnd(); ++it) spikeShown |= it->value == 100.0;
+    QVERIFY(spikeShown);
+    // Auto-fit y includes the spike at full range.
+    QVERIFY(plot->yAxis->range().upper >= 100.0);
+
+    // Zoomed to 100 samples around the spike: raw samples (+1 neighbour each side), with markers.
+    const double t = 1e-3 * double(spike);
+    plot->xAxis->setRange(t - 0.0495, t + 0.0505);
+    QCOMPARE(graph->dataCount(), 100 + 2);
+    QVERIFY(graph->scatterStyle().shape() != QCPScatterStyle::ssNone);
+    QCOMPARE(graph->data()->at(1)->key, 1e-3 * double(spike - 49));
+
+    // Zoomed away from the spike, auto-fit y follows the visible samples only.
+    plot->xAxis->setRange(100.0, 110.0);
+    QVERIFY(plot->yAxis->range().upper < 2.0);
+    QVERIFY(graph->dataCount() <= 2 * width + 2);
+
+    // Without auto-fit the y range stays where it is.
+    panel.setAutoFitY(false);
+    const QCPRange y = plot->yAxis->range();
+    plot->xAxis->setRange(1000.0, 1200.0);
+    QCOMPARE(plot->yAxis->range().lower, y.lower);
+    QCOMPARE(plot->yAxis->range().upper, y.upper);
+
+    panel.showFullRange();
+    QCOMPARE(plot->xAxis->range().upper, 1e-3 * double(n - 1));
+}
+
+void GuiPlotPanelsTest::choosesColumns()
+{
+    TimeSeriesPanel panel;
+    panel.resize(800, 400);
+    panel.setStream(shared(testing::makeImuStream()), QStringLiteral("run1/imu"), {QStringLiteral("gyr_x")});
+    panel.waitForLoad();
+    QCOMPARE(panel.plot()->graphCount(), 1);
+    QCOMPARE(panel.plot()->graph(0)->name(), QStringLiteral("gyr_x [rad/s]"));
+    QCOMPARE(panel.plot()->yAxis->label(), QStringLiteral("[rad/s]"));
+
+    panel.setVisibleColumns({QStringLiteral("acc_x"), QStringLiteral("acc_z")});
+    QCOMPARE(panel.plot()->graphCount(), 2);
+    QCOMPARE(panel.visibleColumns(), QStringList({QStringLiteral("acc_x"), QStringLiteral("acc_z")}));
+    QVERIFY(panel.plottedPointCount() > 0);
+
+    panel.clear();
+    QCOMPARE(panel.plot()->graphCount(), 0);
+    QVERIFY(!panel.isLoading());
+}
+
+void GuiPlotPanelsTest::reportsLoadErrors()
+{
+    StreamInfo info;
+    info.name = QStringLiteral("broken");
+    info.kind = QStringLiteral("imu");
+    info.columns = {{"acc_x", "m/s^2"}};
+    info.rows = 10;
+    auto stream = std::make_shared<const Stream>(
+        info, FileSource{QStringLiteral("/nonexistent.athlos"), QStringLiteral("/recordings/r/broken")},
+        [] { return Expected<StreamData>(makeError(QStringLiteral("/nonexistent.athlos: cannot open"))); });
+    TimeSeriesPanel panel;
+    QSignalSpy failed(&panel, &TimeSeriesPanel::loadFailed);
+    panel.setStream(stream);
+    QVERIFY(failed.wait(10000) || failed.count() == 1);
+    QVERIFY(panel.errorString().contains(QStringLiteral("cannot open")));
+    QCOMPARE(panel.plot()->graphCount(), 0);
+}
+
+void GuiPlotPanelsTest::trajectoryHasEqualScalingAndMarkers()
+{
+    TrajectoryPanel panel;
+    panel.resize(1000, 500);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    Stream track = testing::makeTrackStream();
+    const StreamData expected = *track.data().value();
+    panel.setStream(shared(std::move(track)), QStringLiteral("run1/lps"));
+    panel.waitForLoad();
+    QCustomPlot* plot = panel.plot();
+    plot->replot();
+    QCOMPARE(panel.pointCount(), 800);
+    QCOMPARE(plot->xAxis->label(), QStringLiteral("x [m]"));
+
+    // Start and end markers sit on the first and last sample.
+    QCOMPARE(plot->graph(0)->dataCount(), 1);
+    QCOMPARE(plot->graph(0)->data()->at(0)->key, expected.at(0, 0));
+    QCOMPARE(plot->graph(0)->data()->at(0)->value, expected.at(0, 1));
+    QCOMPARE(plot->graph(1)->data()->at(0)->key, expected.at(799, 0));
+    QCOMPARE(plot->graph(1)->data()->at(0)->value, expected.at(799, 1));
+
+    // Equal scaling: metres per pixel are the same on both axes, and the whole track is visible.
+    const QRect rect = plot->axisRect()->rect();
+    const double sx = plot->xAxis->range().size() / rect.width();
+    const double sy = plot->yAxis->range().size() / rect.height();
+    QVERIFY2(std::abs(sx / sy - 1.0) < 0.01, qPrintable(QStringLiteral("%1 vs %2").arg(sx).arg(sy)));
+    QVERIFY(plot->xAxis->range().lower < -79.0 && plot->xAxis->range().upper > 79.0);
+    QVERIFY(plot->yAxis->range().lower < -36.8 && plot->yAxis->range().upper > 36.8);
+
+    // Still equal after a resize.
+    panel.resize(600, 700);
+    QCoreApplication::processEvents();
+    plot->replot();
+    const QRect r2 = plot->axisRect()->rect();
+    QVERIFY(std::abs((plot->xAxis->range().size() / r2.width()) / (plot->yAxis->range().size() / r2.height()) - 1.0) < 0.01);
+}
+
+void GuiPlotPanelsTest::recognisesPositionStreams()
+{
+    QVERIFY(TrajectoryPanel::isPositionStream(testing::makeTrackStream(5).info()));
+    QVERIFY(!TrajectoryPanel::isPositionStream(testing::makeImuStream(5).info()));
+    StreamInfo gnss;
+    gnss.kind = QStringLiteral("gnss");
+    gnss.columns = {{"lat", "deg"}, {"lon", "deg"}};
+    QVERIFY(!TrajectoryPanel::isPositionStream(gnss));  // geodetic only: no x/y to draw
+    gnss.columns.push_back({"x", "m"});
+    gnss.columns.push_back({"y", "m"});
+    QVERIFY(TrajectoryPanel::isPositionStream(gnss));
+}
+
+QTEST_MAIN(GuiPlotPanelsTest)
+#include "GuiPlotPanelsTest.moc"

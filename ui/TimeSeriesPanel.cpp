@@ -1,0 +1,346 @@
+#include "ui/TimeSeriesPanel.h"
+
+#include "core/model/Stream.h"
+#include "ui/PlotStyle.h"
+
+#include <QCheckBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMenu>
+#include <QToolButton>
+#include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
+#include <qcustomplot.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace athlos::ui {
+
+namespace {
+// Samples at least this many pixels apart get a marker, so single samples are visible when
+// zoomed far in.
+constexpr double kMarkerSpacingPixels = 6.0;
+}  // namespace
+
+TimeSeriesPanel::TimeSeriesPanel(QWidget* parent) : QWidget(parent)
+{
+    titleLabel_ = new QLabel(this);
+    titleLabel_->setTextFormat(Qt::PlainText);
+    QFont bold = titleLabel_->font();
+    bold.setBold(true);
+    titleLabel_->setFont(bold);
+
+    columnsMenu_ = new QMenu(this);
+    columnsButton_ = new QToolButton(this);
+    columnsButton_->setText(tr("Columns"));
+    columnsButton_->setToolTip(tr("Choose the columns to plot"));
+    columnsButton_->setPopupMode(QToolButton::InstantPopup);
+    columnsButton_->setMenu(columnsMenu_);
+    columnsButton_->setEnabled(false);
+
+    fitYBox_ = new QCheckBox(tr("Fit y to visible range"), this);
+    fitYBox_->setChecked(autoFitY_);
+    connect(fitYBox_, &QCheckBox::toggled, this, &TimeSeriesPanel::setAutoFitY);
+
+    auto* resetButton = new QToolButton(this);
+    resetButton->setText(tr("Full range"));
+    resetButton->setToolTip(tr("Show the whole recording (double-click the plot does the same)"));
+    connect(resetButton, &QToolButton::clicked, this, &TimeSeriesPanel::showFullRange);
+
+    plot_ = new QCustomPlot(this);
+    PlotStyle::apply(plot_);
+    plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+    plot_->axisRect()->setRangeZoom(Qt::Horizontal);
+    plot_->axisRect()->setRangeDrag(Qt::Horizontal);
+    plot_->xAxis->setLabel(tr("t [s]"));
+    plot_->legend->setVisible(false);
+    connect(plot_->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this,
+            &TimeSeriesPanel::onXRangeChanged);
+    connect(plot_, &QCustomPlot::afterLayout, this, &TimeSeriesPanel::onAfterLayout);
+    connect(plot_, &QCustomPlot::mouseDoubleClick, this, [this] { showFullRange(); });
+
+    auto* header = new QHBoxLayout;
+    header->setContentsMargins(6, 4, 6, 0);
+    header->addWidget(titleLabel_, 1);
+    header->addWidget(columnsButton_);
+    header->addWidget(fitYBox_);
+    header->addWidget(resetButton);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(2);
+    layout->addLayout(header);
+    layout->addWidget(plot_, 1);
+
+    connect(&watcher_, &QFutureWatcher<std::shared_ptr<Loaded>>::finished, this, &TimeSeriesPanel::applyLoaded);
+    updateHeader();
+}
+
+TimeSeriesPanel::~TimeSeriesPanel() = default;
+
+std::shared_ptr<TimeSeriesPanel::Loaded> TimeSeriesPanel::load(std::shared_ptr<const Stream> stream,
+                                                               quint64 generation)
+{
+    auto result = std::make_shared<Loaded>();
+    result->generation = generation;
+    auto data = stream->data();
+    if (!data) {
+        result->error = data.message();
+        return result;
+    }
+    result->data = data.value();
+    // Every column gets its pyramid now, so toggling columns later is instant.
+    result->pyramids.reserve(static_cast<std::size_t>(result->data->columns));
+    for (int c = 0; c < result->data->columns; ++c) result->pyramids.emplace_back(result->data, c);
+    return result;
+}
+
+void TimeSeriesPanel::setStream(std::shared_ptr<const Stream> stream, const QString& title,
+                                const QStringList& columns)
+{
+    clear();
+    if (!stream) return;
+    stream_ = std::move(stream);
+    title_ = title.isEmpty() ? stream_->name() : title;
+    requestedColumns_ = columns;
+    const quint64 generation = generation_;
+    watcher_.setFuture(QtConcurrent::run(&TimeSeriesPanel::load, stream_, generation));
+    updateHeader();
+}
+
+void TimeSeriesPanel::clear()
+{
+    ++generation_;  // results of loads still running are dropped when they arrive
+    stream_.reset();
+    loaded_.reset();
+    title_.clear();
+    error_.clear();
+    visible_.clear();
+    requestedColumns_.clear();
+    plot_->clearGraphs();
+    plot_->legend->setVisible(false);
+    plot_->yAxis->setLabel({});
+    rebuildColumnMenu();
+    updateHeader();
+    plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+bool TimeSeriesPanel::isLoading() const
+{
+    return stream_ && appliedGeneration_ != generation_;
+}
+
+void TimeSeriesPanel::waitForLoad()
+{
+    if (!isLoading()) return;
+    watcher_.waitForFinished();
+    applyLoaded();
+}
+
+void TimeSeriesPanel::applyLoaded()
+{
+    if (!watcher_.isFinished() || watcher_.future().resultCount() == 0) return;
+    std::shared_ptr<Loaded> result = watcher_.result();
+    if (!result || result->generation != generation_ || appliedGeneration_ == generation_) return;
+    appliedGeneration_ = generation_;
+
+    if (!result->error.isEmpty()) {
+        error_ = result->error;
+        updateHeader();
+        emit loadFailed(error_);
+        return;
+    }
+    loaded_ = std::move(result);
+
+    visible_.clear();
+    const StreamInfo& info = stream_->info();
+    for (int c = 0; c < loaded_->data->columns; ++c) {
+        const QString name = c < int(info.columns.size()) ? info.columns[std::size_t(c)].name : QString();
+        if (requestedColumns_.isEmpty() || requestedColumns_.contains(name)) visible_.push_back(c);
+    }
+    rebuildColumnMenu();
+    rebuildGraphs();
+    updateHeader();
+    showFullRange();
+    emit loaded();
+}
+
+QStringList TimeSeriesPanel::visibleColumns() const
+{
+    QStringList names;
+    if (!stream_) return names;
+    for (int c : visible_) names << stream_->info().columns.at(std::size_t(c)).name;
+    return names;
+}
+
+void TimeSeriesPanel::setVisibleColumns(const QStringList& columns)
+{
+    requestedColumns_ = columns;
+    if (!loaded_) return;
+    visible_.clear();
+    const Columns& cols = stream_->info().columns;
+    for (int c = 0; c < int(cols.size()) && c < loaded_->data->columns; ++c)
+        if (columns.contains(cols[std::size_t(c)].name)) visible_.push_back(c);
+    rebuildColumnMenu();
+    rebuildGraphs();
+    redecimate();
+    plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void TimeSeriesPanel::setAutoFitY(bool on)
+{
+    autoFitY_ = on;
+    fitYBox_->setChecked(on);
+    // With auto-fit the y range belongs to the panel; without it the user may drag it too.
+    plot_->axisRect()->setRangeDrag(on ? Qt::Horizontal : Qt::Horizontal | Qt::Vertical);
+    plot_->axisRect()->setRangeZoom(on ? Qt::Horizontal : Qt::Horizontal | Qt::Vertical);
+    if (on) {
+        redecimate();
+        plot_->replot(QCustomPlot::rpQueuedReplot);
+    }
+}
+
+void TimeSeriesPanel::rebuildColumnMenu()
+{
+    columnsMenu_->clear();
+    columnsButton_->setEnabled(loaded_ != nullptr);
+    if (!loaded_) return;
+    const Columns& cols = stream_->info().columns;
+    for (int c = 0; c < int(cols.size()) && c < loaded_->data->columns; ++c) {
+        QAction* action = columnsMenu_->addAction(PlotStyle::columnLabel(cols[std::size_t(c)].name,
+                                                                         cols[std::size_t(c)].unit));
+        action->setCheckable(true);
+        action->setChecked(std::find(visible_.begin(), visible_.end(), c) != visible_.end());
+        action->setData(cols[std::size_t(c)].name);
+        connect(action, &QAction::toggled, this, [this] {
+            QStringList names;
+            for (QAction* a : columnsMenu_->actions())
+                if (a->isChecked()) names << a->data().toString();
+            // Deferred: setVisibleColumns() rebuilds this menu, which deletes the sender.
+            QMetaObject::invokeMethod(this, [this, names] { setVisibleColumns(names); }, Qt::QueuedConnection);
+        });
+    }
+}
+
+void TimeSeriesPanel::rebuildGraphs()
+{
+    plot_->clearGraphs();
+    if (!loaded_) return;
+    const Columns& cols = stream_->info().columns;
+    QStringList units;
+    for (int c : visible_) {
+        const Column& column = cols[std::size_t(c)];
+        QCPGraph* graph = plot_->addGraph();
+        graph->setName(PlotStyle::columnLabel(column.name, column.unit));
+        graph->setPen(QPen(PlotStyle::seriesColor(c), 1.2));
+        // We hand over at most ~2 points per pixel already; QCustomPlot's own sampling would
+        // only cost time.
+        graph->setAdaptiveSampling(false);
+        if (!units.contains(column.unit)) units << column.unit;
+    }
+    plot_->legend->setVisible(!visible_.empty());
+    // One shared unit labels the axis; mixed units are in the legend only.
+    plot_->yAxis->setLabel(units.size() == 1 ? PlotStyle::unitSuffix(units.front()).trimmed() : QString());
+}
+
+void TimeSeriesPanel::updateHeader()
+{
+    QString text = title_;
+    if (stream_ && !error_.isEmpty()) {
+        text = tr("%1 — could not load: %2").arg(title_, error_);
+        titleLabel_->setStyleSheet(QStringLiteral("color: #b00020;"));
+    } else {
+        titleLabel_->setStyleSheet({});
+        if (stream_ && isLoading()) text = tr("%1 — loading…").arg(title_);
+        else if (stream_ && loaded_)
+            text = tr("%1 — %2 samples").arg(title_, QLocale().toString(qlonglong(loaded_->data->rows())));
+        else if (!stream_)
+            text = tr("Select a stream in the project tree to plot it.");
+    }
+    titleLabel_->setText(text);
+}
+
+void TimeSeriesPanel::showFullRange()
+{
+    if (!loaded_ || loaded_->data->rows() == 0) return;
+    const StreamData& data = *loaded_->data;
+    double t0 = data.t.front(), t1 = data.t.back();
+    if (t1 <= t0) {
+        t0 -= 0.5;
+        t1 += 0.5;
+    }
+    plot_->xAxis->setRange(t0, t1);
+    redecimate();  // also when the range did not change (no rangeChanged then)
+    if (!autoFitY_) {
+        Extremes all;
+        for (int c : visible_) all = Extremes::combine(all, loaded_->pyramids[std::size_t(c)].rangeExtremes(0, data.rows()));
+        fitY(all);
+    }
+    plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+int TimeSeriesPanel::plotWidthPixels() const
+{
+    const int width = plot_->axisRect()->width();
+    // Before the first layout the axis rect has no size yet; guess from the widget.
+    return width > 10 ? width : std::max(100, plot_->width() - 80);
+}
+
+void TimeSeriesPanel::redecimate()
+{
+    if (!loaded_ || decimating_) return;
+    decimating_ = true;
+    const QCPRange range = plot_->xAxis->range();
+    const int pixels = plotWidthPixels();
+    decimatedWidth_ = pixels;
+    Extremes visible;
+    for (int g = 0; g < plot_->graphCount() && g < int(visible_.size()); ++g) {
+        const MinMaxPyramid& pyramid = loaded_->pyramids[std::size_t(visible_[std::size_t(g)])];
+        const DecimatedSeries series = pyramid.decimate(range.lower, range.upper, pixels);
+        QCPGraph* graph = plot_->graph(g);
+        graph->setData(series.keys, series.values, true);
+        const bool markers = series.raw && series.visibleSamples > 0
+                             && pixels / double(series.visibleSamples) >= kMarkerSpacingPixels;
+        graph->setScatterStyle(markers ? QCPScatterStyle(QCPScatterStyle::ssDisc, 4) : QCPScatterStyle());
+        visible = Extremes::combine(visible, series.visible);
+    }
+    if (autoFitY_) fitY(visible);
+    decimating_ = false;
+}
+
+void TimeSeriesPanel::fitY(const Extremes& extremes)
+{
+    if (extremes.isEmpty() || !std::isfinite(extremes.min) || !std::isfinite(extremes.max)) return;
+    double lo = extremes.min, hi = extremes.max;
+    const double span = hi - lo;
+    // A constant signal still gets a visible band around it.
+    const double pad = span > 0 ? 0.05 * span : std::max(0.05 * std::abs(hi), 0.5);
+    plot_->yAxis->setRange(lo - pad, hi + pad);
+}
+
+void TimeSeriesPanel::onXRangeChanged(const QCPRange&)
+{
+    redecimate();
+    // Drag and wheel replot on their own; programmatic changes need the request. Queued
+    // replots coalesce, so asking twice costs nothing.
+    plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void TimeSeriesPanel::onAfterLayout()
+{
+    // A resize changes the number of pixel columns; the data drawn right after this signal
+    // must match the new width.
+    if (loaded_ && plot_->axisRect()->width() != decimatedWidth_) {
+        redecimate();
+        plot_->replot(QCustomPlot::rpQueuedReplot);
+    }
+}
+
+long long TimeSeriesPanel::plottedPointCount() const
+{
+    long long n = 0;
+    for (int g = 0; g < plot_->graphCount(); ++g) n += plot_->graph(g)->dataCount();
+    return n;
+}
+
+}  // namespace athlos::ui

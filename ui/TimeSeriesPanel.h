@@ -1,0 +1,108 @@
+#pragma once
+// Plots columns of one stream against time with QCustomPlot. Samples load and their decimation
+// pyramids build on a worker thread; on every x-range change the plot is fed ~2 points per pixel
+// column (min and max, in time order), or the raw samples once few enough are visible. That keeps
+// dragging and zooming fluid with 10 million samples per column.
+#include "ui/MinMaxPyramid.h"
+
+#include <QFutureWatcher>
+#include <QStringList>
+#include <QWidget>
+#include <memory>
+#include <vector>
+
+class QCheckBox;
+class QCPRange;
+class QCustomPlot;
+class QLabel;
+class QMenu;
+class QToolButton;
+
+namespace athlos {
+class Stream;
+}
+
+namespace athlos::ui {
+
+class TimeSeriesPanel : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit TimeSeriesPanel(QWidget* parent = nullptr);
+    ~TimeSeriesPanel() override;
+
+    // Plots stream (the pointer keeps it alive, e.g. an aliasing pointer into a shared project).
+    // columns: names to show; empty shows all. Returns at once; loaded() or loadFailed() follows.
+    void setStream(std::shared_ptr<const Stream> stream, const QString& title = {},
+                   const QStringList& columns = {});
+    void clear();
+    const Stream* stream() const { return stream_.get(); }
+    QString title() const { return title_; }
+
+    QStringList visibleColumns() const;
+    void setVisibleColumns(const QStringList& columns);
+
+    // Fit the y axis to what is visible after every x change (then y is not dragged by mouse).
+    bool autoFitY() const { return autoFitY_; }
+    void setAutoFitY(bool on);
+
+    bool isLoading() const;
+    // Blocks until the pending load finished and its graphs are in place (tests, screenshots,
+    // and before anything that must not run concurrently with a load, such as saving).
+    void waitForLoad();
+    QString errorString() const { return error_; }
+
+    QCustomPlot* plot() const { return plot_; }
+    // Points currently handed to QCustomPlot, over all graphs.
+    long long plottedPointCount() const;
+    // Pixel columns the last decimation was computed for.
+    int decimationWidth() const { return decimatedWidth_; }
+
+public slots:
+    void showFullRange();
+    // Recomputes the plotted points for the current x range and plot width.
+    void redecimate();
+
+signals:
+    void loaded();
+    void loadFailed(const QString& message);
+
+private:
+    struct Loaded {
+        quint64 generation = 0;
+        std::shared_ptr<const StreamData> data;
+        std::vector<MinMaxPyramid> pyramids;  // one per stream column
+        QString error;
+    };
+    static std::shared_ptr<Loaded> load(std::shared_ptr<const Stream> stream, quint64 generation);
+
+    void applyLoaded();
+    void rebuildGraphs();
+    void rebuildColumnMenu();
+    void updateHeader();
+    void fitY(const Extremes& extremes);
+    void onXRangeChanged(const QCPRange& range);
+    void onAfterLayout();
+    int plotWidthPixels() const;
+
+    QCustomPlot* plot_ = nullptr;
+    QLabel* titleLabel_ = nullptr;
+    QToolButton* columnsButton_ = nullptr;
+    QMenu* columnsMenu_ = nullptr;
+    QCheckBox* fitYBox_ = nullptr;
+
+    std::shared_ptr<const Stream> stream_;
+    QString title_;
+    QString error_;
+    QStringList requestedColumns_;
+    std::vector<int> visible_;  // stream column indices with a graph, in graph order
+    std::shared_ptr<Loaded> loaded_;
+    QFutureWatcher<std::shared_ptr<Loaded>> watcher_;
+    quint64 generation_ = 0;
+    quint64 appliedGeneration_ = 0;
+    bool autoFitY_ = true;
+    bool decimating_ = false;
+    int decimatedWidth_ = 0;
+};
+
+}  // namespace athlos::ui
