@@ -1,0 +1,14 @@
+#include "plugins/inertial/InertialPlugin.h"
+
+#include "plugins/inertial/GnssImuProcessor.h"
+#include "plugins/inertial/ImuCalibrationProcessor.h"
+#include "plugins/inertial/OrientationProcessor.h"
+
+namespace athlos::inertial {
+
+std::vector<std::shared_ptr<const Processor>> InertialPlugin::processors() const {
+    return {std::make_shared<OrientationProcessor>(), std::make_shared<ImuCalibrationProcessor>(),
+            std::make_shared<GnssImuProcessor>(), std::make_shared<SimulateImuGnssProcessor>()};
+}
+
+}  // namespace athlos::inertial
