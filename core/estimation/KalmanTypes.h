@@ -1,0 +1,90 @@
+#pragma once
+// Shared types of the estimation framework (EKF, UKF, SRUKF, RTS / fixed-lag smoothing, robust
+// runner, noise estimation). Filters are templates over a motion/measurement Model with fixed
+// sizes, so that the inner loop works on stack matrices (Eigen fixed-size) without allocation.
+//
+// The Model concept (all members const; t = time at the end of the step in s, T = step in s):
+//   static constexpr int kStateDim, kMeasurementDim;
+//   StateVector  predict(const StateVector& x, double T, double t, StateMatrix* jacobian)
+//                F(x, T) (eq. 2.10); fills Φ = ∂F/∂x when jacobian != nullptr (EKF). One call
+//                for both because the Jacobian reuses the prediction's trigonometry and map queries.
+//   StateMatrix  processNoise(double T, double t)                          Q_k
+//   Measurement  measure(const StateVector& x, double t)                   h(x)
+//   MeasurementJacobian measurementJacobian(const StateVector& x, double t)  C = ∂h/∂x (EKF only)
+//   MeasurementMatrix   measurementNoise(double t)                         R
+//   Measurement  residual(const Measurement& y, const Measurement& yHat)  y − ŷ (wraps angles)
+//   StateVector  difference(const StateVector& a, const StateVector& b)   a − b (wraps angles)
+//   void         normalize(StateVector& x)                                 e.g. wrap the heading
+// ModelDefaults<N, M> supplies plain-subtraction residual/difference and a no-op normalize.
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <cmath>
+#include <limits>
+
+namespace athlos::estimation {
+
+template <int N>
+using Vector = Eigen::Matrix<double, N, 1>;
+template <int R, int C>
+using Matrix = Eigen::Matrix<double, R, C>;
+
+template <int N, int M>
+struct ModelDefaults {
+    static constexpr int kStateDim = N;
+    static constexpr int kMeasurementDim = M;
+    using StateVector = Vector<N>;
+    using StateMatrix = Matrix<N, N>;
+    using Measurement = Vector<M>;
+    using MeasurementMatrix = Matrix<M, M>;
+    using MeasurementJacobian = Matrix<M, N>;
+
+    Measurement residual(const Measurement& y, const Measurement& yHat) const { return y - yHat; }
+    StateVector difference(const StateVector& a, const StateVector& b) const { return a - b; }
+    void normalize(StateVector&) const {}
+};
+
+// Outcome of one measurement update (also reported when the update was gated out).
+struct Innovation {
+    double mahalanobis2 = 0.0;  // d_k² = z_kᵀ Σ_k⁻¹ z_k                              (eq. 4.1, squared)
+    double logDetSigma = 0.0;   // log det Σ_k, for the innovation likelihood (eq. 4.9)
+    bool accepted = true;       // false: d_k² > α, update skipped (outlier)
+};
+
+constexpr double kNoGate = std::numeric_limits<double>::infinity();
+
+// In-place rank-1 Cholesky update/downdate of a lower-triangular factor: L Lᵀ + sign·v vᵀ.
+// Returns false when a downdate would lose positive definiteness (L is then left unchanged).
+template <int N>
+bool choleskyRankOne(Matrix<N, N>& L, Vector<N> v, double sign) {
+    const Matrix<N, N> backup = L;
+    for (int k = 0; k < N; ++k) {
+        const double r2 = L(k, k) * L(k, k) + sign * v(k) * v(k);
+        if (!(r2 > 0.0)) {
+            L = backup;
+            return false;
+        }
+        const double r = std::sqrt(r2), c = r / L(k, k), s = v(k) / L(k, k);
+        L(k, k) = r;
+        if (k + 1 < N) {
+            const int rest = N - k - 1;
+            L.col(k).tail(rest) = (L.col(k).tail(rest) + sign * s * v.tail(rest)) / c;
+            v.tail(rest) = c * v.tail(rest) - s * L.col(k).tail(rest);
+        }
+    }
+    return true;
+}
+
+// Lower Cholesky factor with a tiny diagonal jitter fallback for semi-definite matrices
+// (Q with zero position entries, predicted covariances right after a reset of a constrained state).
+template <int N>
+Matrix<N, N> robustCholesky(const Matrix<N, N>& P) {
+    Eigen::LLT<Matrix<N, N>> llt(P);
+    double jitter = 1e-12 * std::max(P.diagonal().cwiseAbs().maxCoeff(), 1e-12);
+    while (llt.info() != Eigen::Success && jitter < 1e6) {
+        llt.compute(P + jitter * Matrix<N, N>::Identity());
+        jitter *= 10.0;
+    }
+    return llt.matrixL();
+}
+
+}  // namespace athlos::estimation

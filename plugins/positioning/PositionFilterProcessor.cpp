@@ -1,0 +1,290 @@
+#include "plugins/positioning/PositionFilterProcessor.h"
+
+#include <QCoreApplication>
+#include <QJsonObject>
+#include <cmath>
+#include <limits>
+
+namespace athlos::positioning {
+
+namespace {
+QString tr(const char* text) { return QCoreApplication::translate("athlos::positioning", text); }
+const double kInf = std::numeric_limits<double>::infinity();
+
+ParameterSpec optionalNumber(const QString& name, double min, double max, const QString& unit, const QString& help) {
+    ParameterSpec spec = ParameterSpec::number(name, 0.0, min, max, unit, help);
+    spec.defaultValue = QVariant();
+    spec.optional = true;
+    return spec;
+}
+
+Expected<PositionSamples> loadPositions(const RunContext& context) {
+    const Stream* stream = context.stream(0);
+    const QString path = context.inputCount() > 0 ? context.inputPath(0) : QString();
+    if (!stream) return makeError(QStringLiteral("input stream '%1' is missing").arg(path));
+    const int cx = stream->info().columnIndex(QStringLiteral("x")), cy = stream->info().columnIndex(QStringLiteral("y"));
+    if (cx < 0 || cy < 0) return makeError(QStringLiteral("input stream '%1' needs columns x and y").arg(path));
+    auto data = stream->data();
+    if (!data) return makeError(QStringLiteral("cannot read input stream '%1': %2").arg(path, data.message()));
+    PositionSamples samples;
+    const StreamData& d = **data;
+    for (std::size_t k = 0; k < d.rows(); ++k) {
+        const double x = d.at(k, cx), y = d.at(k, cy);
+        if (!std::isfinite(x) || !std::isfinite(y)) continue;  // missing fixes are gaps, not zeros
+        samples.t.push_back(d.t[k]);
+        samples.p.emplace_back(x, y);
+    }
+    if (samples.t.size() < 10)
+        return makeError(QStringLiteral("input stream '%1' has %2 valid samples; position-filter needs at least 10")
+                             .arg(path)
+                             .arg(samples.t.size()));
+    return samples;
+}
+}  // namespace
+
+QString PositionFilterProcessor::name() const { return tr("Position filter"); }
+
+QString PositionFilterProcessor::description() const {
+    return tr("Robust Kalman filtering of LPS positions (EKF, UKF or square-root UKF): outlier gating by the "
+              "Mahalanobis distance, output on any time grid from non-uniform input, RTS or fixed-lag smoothing, "
+              "noise parameters estimated from the data, and track constraints either in an augmented motion model "
+              "or as pseudo-measurements.");
+}
+
+ParameterSpecs PositionFilterProcessor::parameters() const {
+    const CtraNoise n;
+    const NoiseSettings ns;
+    return {
+        ParameterSpec::choice(QStringLiteral("filter"), {QStringLiteral("ekf"), QStringLiteral("ukf"), QStringLiteral("srukf")},
+                              QStringLiteral("ekf"), tr("Kalman filter variant.")),
+        ParameterSpec::choice(QStringLiteral("model"),
+                              {QStringLiteral("unconstrained"), QStringLiteral("pseudo"), QStringLiteral("augmented"),
+                               QStringLiteral("constant-velocity")},
+                              QStringLiteral("augmented"),
+                              tr("Motion model: CTRA (unconstrained), CTRA with track pseudo-measurements, CTRA with the "
+                                 "track-augmented prediction, or constant velocity.")),
+        ParameterSpec::text(QStringLiteral("track"), QStringLiteral("iaaf-400m"),
+                            tr("Track geometry: a name under the project's /geometry or a built-in (iaaf-400m, "
+                               "indoor-200m). Used by model=pseudo|augmented.")),
+        optionalNumber(QStringLiteral("track_x"), -kInf, kInf, QStringLiteral("m"),
+                       tr("Track origin x in LPS coordinates (overrides the geometry's pose).")),
+        optionalNumber(QStringLiteral("track_y"), -kInf, kInf, QStringLiteral("m"), tr("Track origin y in LPS coordinates.")),
+        optionalNumber(QStringLiteral("track_rotation"), -10.0, 10.0, QStringLiteral("rad"),
+                       tr("Rotation of the track frame in LPS coordinates (counter-clockwise).")),
+        ParameterSpec::choice(QStringLiteral("noise"), {QStringLiteral("auto"), QStringLiteral("manual")},
+                              QStringLiteral("auto"),
+                              tr("auto: estimate Q, R and the gate from the input itself (innovation likelihood, no "
+                                 "ground truth); manual: use the q_*, r_* and gate parameters.")),
+        ParameterSpec::number(QStringLiteral("q_position"), n.qPosition, 0.0, kInf, QStringLiteral("m^2/s"),
+                              tr("Process noise density of the position (manual).")),
+        ParameterSpec::number(QStringLiteral("q_speed"), n.qSpeed, 0.0, kInf, QStringLiteral("m^2/s^3"),
+                              tr("Process noise density of the speed (manual).")),
+        ParameterSpec::number(QStringLiteral("q_accel"), n.qAccel, 0.0, kInf, QStringLiteral("m^2/s^5"),
+                              tr("Process noise density of the acceleration; for constant-velocity the white-noise "
+                                 "acceleration density (m^2/s^3) (manual).")),
+        ParameterSpec::number(QStringLiteral("q_heading"), n.qHeading, 0.0, kInf, QStringLiteral("rad^2/s"),
+                              tr("Process noise density of the heading (manual).")),
+        ParameterSpec::number(QStringLiteral("q_turn_rate"), n.qTurnRate, 0.0, kInf, QStringLiteral("rad^2/s^3"),
+                              tr("Process noise density of the turn rate (manual).")),
+        ParameterSpec::number(QStringLiteral("r_x"), n.rX, 1e-12, kInf, QStringLiteral("m^2"),
+                              tr("Measurement noise variance in x (manual).")),
+        ParameterSpec::number(QStringLiteral("r_y"), n.rY, 1e-12, kInf, QStringLiteral("m^2"),
+                              tr("Measurement noise variance in y (manual).")),
+        ParameterSpec::number(QStringLiteral("r_heading"), ns.rHeading, 1e-12, kInf, QStringLiteral("rad^2"),
+                              tr("Pseudo-measurement variance of heading − track heading (model=pseudo, manual).")),
+        ParameterSpec::number(QStringLiteral("r_turn_rate"), ns.rTurnRate, 1e-12, kInf, QStringLiteral("rad^2/s^2"),
+                              tr("Pseudo-measurement variance of turn rate − v·curvature (model=pseudo, manual).")),
+        ParameterSpec::number(QStringLiteral("r_accel"), ns.rAccel, 1e-12, kInf, QStringLiteral("m^2/s^4"),
+                              tr("Pseudo-measurement variance of the acceleration after the start (model=pseudo, manual).")),
+        ParameterSpec::number(QStringLiteral("gate"), ns.gate, 0.0, kInf, QString(),
+                              tr("Outlier gate α on the squared Mahalanobis distance of the innovation (manual); "
+                                 "0 disables gating.")),
+        ParameterSpec::choice(QStringLiteral("smoother"),
+                              {QStringLiteral("none"), QStringLiteral("rts"), QStringLiteral("fixed-lag")},
+                              QStringLiteral("rts"),
+                              tr("none: causal filter output (real-time behaviour); rts: Rauch–Tung–Striebel smoothing "
+                                 "over the whole recording; fixed-lag: smoothing with `lag` seconds of look-ahead.")),
+        ParameterSpec::number(QStringLiteral("lag"), 0.5, 0.0, kInf, QStringLiteral("s"),
+                              tr("Look-ahead of the fixed-lag smoother.")),
+        optionalNumber(QStringLiteral("output_rate"), 0.0, 1e4, QStringLiteral("Hz"),
+                       tr("Output on a uniform grid at this rate (multiples of 1/rate); absent: at the input time stamps.")),
+        ParameterSpec::number(QStringLiteral("max_step"), 0.1, 1e-3, 10.0, QStringLiteral("s"),
+                              tr("Longest prediction step; outages are crossed in steps of at most this length.")),
+        ParameterSpec::boolean(QStringLiteral("cv_switch"), true,
+                               tr("Track models: switch from constant acceleration to constant velocity after the "
+                                  "start phase.")),
+        ParameterSpec::number(QStringLiteral("accel_phase"), 6.0, 0.0, kInf, QStringLiteral("s"),
+                              tr("Duration of the constant-acceleration phase after the detected start.")),
+    };
+}
+
+QList<InputSpec> PositionFilterProcessor::inputs() const {
+    return {InputSpec{QStringLiteral("positions"), {QStringLiteral("lps-position")}, false, false,
+                      tr("LPS fixes t, x, y (m), possibly non-uniform, with outliers and outages.")}};
+}
+
+QList<OutputSpec> PositionFilterProcessor::outputs() const {
+    return {OutputSpec{QStringLiteral("trajectory"), false, QString(),
+                       tr("x, y (m), speed (m/s), heading (rad), turn_rate (rad/s), accel (m/s^2), outlier (1 if an "
+                          "input sample in this output sample's interval was rejected).")},
+            OutputSpec{QStringLiteral("outliers"), false, QStringLiteral("outliers"),
+                       tr("Per input sample: outlier (0/1) and mahalanobis (squared distance d^2).")}};
+}
+
+Expected<PositionFilter::Params> PositionFilterProcessor::readParams(const RunContext& c) const {
+    PositionFilter::Params p;
+    const QString filter = c.text(QStringLiteral("filter")), model = c.text(QStringLiteral("model"));
+    p.filter = filter == QLatin1String("ukf") ? FilterKind::Ukf : filter == QLatin1String("srukf") ? FilterKind::SrUkf
+                                                                                                    : FilterKind::Ekf;
+    p.model = model == QLatin1String("unconstrained") ? ModelKind::Unconstrained
+              : model == QLatin1String("pseudo")      ? ModelKind::Pseudo
+              : model == QLatin1String("constant-velocity") ? ModelKind::ConstantVelocity
+                                                            : ModelKind::Augmented;
+    if (p.model == ModelKind::Pseudo || p.model == ModelKind::Augmented) {
+        auto track = TrackGeometry::resolve(c.project().geometry(), c.text(QStringLiteral("track")));
+        if (!track) return makeError(QStringLiteral("track: %1").arg(track.message()));
+        TrackPose pose = track->pose();
+        if (c.has(QStringLiteral("track_x"))) pose.x = c.number(QStringLiteral("track_x"));
+        if (c.has(QStringLiteral("track_y"))) pose.y = c.number(QStringLiteral("track_y"));
+        if (c.has(QStringLiteral("track_rotation"))) pose.rotation = c.number(QStringLiteral("track_rotation"));
+        track->setPose(pose);
+        p.track = std::make_shared<const TrackGeometry>(std::move(*track));
+    }
+    NoiseSettings& n = p.noise;
+    n.ctra.qPosition = c.number(QStringLiteral("q_position"));
+    n.ctra.qSpeed = c.number(QStringLiteral("q_speed"));
+    n.ctra.qAccel = c.number(QStringLiteral("q_accel"));
+    n.qAccelCv = n.ctra.qAccel;
+    n.ctra.qHeading = c.number(QStringLiteral("q_heading"));
+    n.ctra.qTurnRate = c.number(QStringLiteral("q_turn_rate"));
+    n.ctra.rX = c.number(QStringLiteral("r_x"));
+    n.ctra.rY = c.number(QStringLiteral("r_y"));
+    n.rHeading = c.number(QStringLiteral("r_heading"));
+    n.rTurnRate = c.number(QStringLiteral("r_turn_rate"));
+    n.rAccel = c.number(QStringLiteral("r_accel"));
+    n.gate = c.number(QStringLiteral("gate")) > 0 ? c.number(QStringLiteral("gate")) : kInf;
+    const QString smoother = c.text(QStringLiteral("smoother"));
+    p.smoothing = smoother == QLatin1String("rts")         ? estimation::Smoothing::Rts
+                  : smoother == QLatin1String("fixed-lag") ? estimation::Smoothing::FixedLag
+                                                           : estimation::Smoothing::None;
+    p.lag = c.number(QStringLiteral("lag"));
+    if (p.smoothing == estimation::Smoothing::FixedLag && !(p.lag > 0))
+        return makeError(QStringLiteral("lag must be > 0 s with smoother=fixed-lag"));
+    if (c.has(QStringLiteral("output_rate")) && !(c.number(QStringLiteral("output_rate")) > 0))
+        return makeError(QStringLiteral("output_rate must be > 0 Hz (leave it out to output at the input times)"));
+    p.maxStep = c.number(QStringLiteral("max_step"));
+    p.cvSwitch = c.flag(QStringLiteral("cv_switch"));
+    p.accelPhase = c.number(QStringLiteral("accel_phase"));
+    return p;
+}
+
+Status PositionFilterProcessor::validate(const RunContext& context) const {
+    auto params = readParams(context);
+    if (!params) return params.error();
+    auto samples = loadPositions(context);
+    if (!samples) return samples.error();
+    return {};
+}
+
+Expected<std::vector<ProcessorOutput>> PositionFilterProcessor::run(const RunContext& context) const {
+    auto paramsOr = readParams(context);
+    if (!paramsOr) return paramsOr.error();
+    PositionFilter::Params params = std::move(*paramsOr);
+    auto samplesOr = loadPositions(context);
+    if (!samplesOr) return samplesOr.error();
+    const PositionSamples& in = *samplesOr;
+    const bool autoNoise = context.text(QStringLiteral("noise")) == QLatin1String("auto");
+
+    QJsonObject attributes;
+    if (autoNoise) {
+        const Progress sub = context.progress().sub(0.0, 0.8);
+        const auto estimate = PositionFilter::estimateNoise(params, {in}, estimation::NoiseEstimator::Params{},
+                                                            [&](double f) {
+                                                                sub.report(f, QStringLiteral("estimating noise"));
+                                                                return !context.isCancelled();
+                                                            });
+        if (estimate.cancelled || context.isCancelled()) return cancelledError();
+        params.noise = estimate.noise;
+        QJsonObject estimated;
+        for (const auto& [name, value] : estimate.values) estimated.insert(QString::fromStdString(name), value);
+        estimated.insert(QStringLiteral("objective"), estimate.objective);
+        estimated.insert(QStringLiteral("evaluations"), estimate.evaluations);
+        attributes.insert(QStringLiteral("estimated_noise"), estimated);
+    }
+    const NoiseSettings& n = params.noise;
+    attributes.insert(QStringLiteral("noise"),
+                      QJsonObject{{QStringLiteral("q_position"), n.ctra.qPosition}, {QStringLiteral("q_speed"), n.ctra.qSpeed},
+                                  {QStringLiteral("q_accel"), params.model == ModelKind::ConstantVelocity ? n.qAccelCv
+                                                                                                          : n.ctra.qAccel},
+                                  {QStringLiteral("q_heading"), n.ctra.qHeading}, {QStringLiteral("q_turn_rate"), n.ctra.qTurnRate},
+                                  {QStringLiteral("r_x"), n.ctra.rX}, {QStringLiteral("r_y"), n.ctra.rY},
+                                  {QStringLiteral("r_heading"), n.rHeading}, {QStringLiteral("r_turn_rate"), n.rTurnRate},
+                                  {QStringLiteral("r_accel"), n.rAccel},
+                                  {QStringLiteral("gate"), std::isfinite(n.gate) ? n.gate : 0.0}});
+
+    const bool grid = context.has(QStringLiteral("output_rate"));
+    const double rate = grid ? context.number(QStringLiteral("output_rate")) : 0.0;
+    const std::vector<double> tOut = grid ? PositionFilter::outputGrid(in.t.front(), in.t.back(), rate) : in.t;
+    const Progress sub = context.progress().sub(autoNoise ? 0.8 : 0.0, 1.0);
+    const PositionFilter filter(params);
+    const PositionFilterResult r = filter.run(in, tOut, [&](double f) {
+        sub.report(f, QStringLiteral("filtering"));
+        return !context.isCancelled();
+    });
+    if (r.cancelled || context.isCancelled()) return cancelledError();
+
+    // Main output: kinematics on the grid, plus the outlier flag of the input samples nearest to each
+    // output sample (interval [t − Δ/2, t + Δ/2)).
+    StreamData out(r.t.size(), 7);
+    out.t = r.t;
+    std::size_t next = 0;
+    for (std::size_t k = 0; k < r.t.size(); ++k) {
+        const Kinematics& s = r.states[k];
+        const bool reverse = s.speed < 0;  // a negative speed state is the same motion heading + π
+        out.at(k, 0) = s.x;
+        out.at(k, 1) = s.y;
+        out.at(k, 2) = std::abs(s.speed);
+        out.at(k, 3) = reverse ? TrackGeometry::wrapAngle(s.heading + M_PI) : s.heading;
+        out.at(k, 4) = s.turnRate;
+        out.at(k, 5) = s.accel;
+        double flag = 0.0;
+        if (grid) {
+            const double hi = r.t[k] + 0.5 / rate, lo = r.t[k] - 0.5 / rate;
+            while (next < in.t.size() && in.t[next] < lo) ++next;
+            for (std::size_t i = next; i < in.t.size() && in.t[i] < hi; ++i) flag = std::max(flag, double(r.outlier[i]));
+        } else {
+            flag = r.outlier[k];
+        }
+        out.at(k, 6) = flag;
+    }
+    StreamInfo info;
+    info.kind = QStringLiteral("trajectory");
+    info.frame = context.stream(0)->info().frame.isEmpty() ? QStringLiteral("lps") : context.stream(0)->info().frame;
+    info.columns = {{QStringLiteral("x"), QStringLiteral("m")},        {QStringLiteral("y"), QStringLiteral("m")},
+                    {QStringLiteral("speed"), QStringLiteral("m/s")},  {QStringLiteral("heading"), QStringLiteral("rad")},
+                    {QStringLiteral("turn_rate"), QStringLiteral("rad/s")}, {QStringLiteral("accel"), QStringLiteral("m/s^2")},
+                    {QStringLiteral("outlier"), QStringLiteral("1")}};
+    if (grid) attributes.insert(QStringLiteral("sampling_rate"), rate);
+    int outliers = 0;
+    for (char o : r.outlier) outliers += o;
+    attributes.insert(QStringLiteral("outliers"), outliers);
+    info.attributes = attributes;
+
+    StreamData flags(in.t.size(), 2);
+    flags.t = in.t;
+    for (std::size_t i = 0; i < in.t.size(); ++i) {
+        flags.at(i, 0) = r.outlier[i];
+        flags.at(i, 1) = r.mahalanobis2[i];
+    }
+    StreamInfo flagInfo;
+    flagInfo.kind = QStringLiteral("outliers");
+    flagInfo.frame = info.frame;
+    flagInfo.columns = {{QStringLiteral("outlier"), QStringLiteral("1")}, {QStringLiteral("mahalanobis"), QStringLiteral("1")}};
+
+    std::vector<ProcessorOutput> outputs;
+    outputs.push_back({QString(), Stream(std::move(info), std::move(out))});
+    outputs.push_back({QStringLiteral("outliers"), Stream(std::move(flagInfo), std::move(flags))});
+    return outputs;
+}
+
+}  // namespace athlos::positioning

@@ -1,0 +1,12 @@
+#include "plugins/positioning/PositioningPlugin.h"
+
+#include "plugins/positioning/PositionFilterProcessor.h"
+#include "plugins/positioning/SimulateTrackRunProcessor.h"
+
+namespace athlos::positioning {
+
+std::vector<std::shared_ptr<const Processor>> PositioningPlugin::processors() const {
+    return {std::make_shared<PositionFilterProcessor>(), std::make_shared<SimulateTrackRunProcessor>()};
+}
+
+}  // namespace athlos::positioning
