@@ -1,0 +1,86 @@
+#pragma once
+// Beacon selection against NLOS readings (thesis §3.2): which readings of one instant enter the
+// fix of Eqn. 2.5, always keeping at least B_min = 4 (over-determined planar fix).
+//   All             every reading, equal weights (baseline, method 1)
+//   Irls            iteratively reweighted LS, bisquare weights, zero above k·MAD (method 6, k = 2.5)
+//   LargestResidual drop the reading with the largest |e_i| until the mean |e| of the rest is below
+//                   a threshold (method 8)
+//   FieldOfView     keep beacon i if G_t(φ_i) − L_fs(m̂_ini, b_i) + κ > 0   (Eqn. 3.8–3.10), the
+//                   proposed method: φ_i is the bearing to the beacon relative to the body heading,
+//                   m̂_ini the median of the last five fixes. Without such a history (start, gaps)
+//                   the fix falls back to LargestResidual. With fovRefine, LargestResidual then
+//                   runs on the beacons in view (an addition of this project, see docs).
+#include "plugins/lps/GainPattern.h"
+#include "plugins/lps/TdoaSolver.h"
+
+#include <deque>
+
+namespace athlos::lps {
+
+class BeaconSelection {
+public:
+    enum class Method { All, Irls, LargestResidual, FieldOfView };
+
+    struct Params {
+        Method method = Method::Irls;
+        int minBeacons = 4;
+        double irlsK = 2.5;               // bisquare cut-off in units of the (σ-scaled) MAD
+        double irlsMinScale = 0.05;       // m, floor of 1.4826·MAD (noise-free data has MAD → 0)
+        int irlsIterations = 10;
+        double rejectionThreshold = 0.25; // m, mean |e| at which LargestResidual stops
+        double kappa = 100.0;             // dB, κ of Eqn. 3.8 for the default pattern (grid search, docs/validation/lps.md)
+        // After the field-of-view selection, largest-residual rejection among the beacons in view:
+        // removes the gross outliers (late detections) a field of view cannot predict.
+        bool fovRefine = true;
+        double frequency = 5.8e9;         // Hz, carrier of the thesis' LPS (free-space loss)
+        GainPattern gain;
+    };
+
+    // The body's view for the field-of-view rule: m̂_ini and the heading φ_body (rad, LPS frame).
+    struct View {
+        Vector3 position = Vector3::Zero();
+        double heading = 0.0;
+    };
+
+    BeaconSelection() : BeaconSelection(Params()) {}
+    explicit BeaconSelection(const Params& params) : params_(params) {}
+    const Params& params() const { return params_; }
+
+    // Selects (sets input.weights) and solves one instant. start: warm start or nullptr.
+    TagFix solve(FixInput& input, TdoaSolver& solver, const TagFix* start, const View* view = nullptr) const;
+
+    // Link margin G_t(φ_i) − L_fs(|m̂ − b_i|) + κ (dB) of a beacon; > 0 = in the field of view.
+    double linkMargin(const Vector3& beacon, const View& view) const;
+    // Free-space loss (Eqn. 3.9): 20 log10 d + 20 log10 f − 147.55 (d in m, f in Hz).
+    double freeSpaceLoss(double distance) const;
+
+    TagFix solveAll(FixInput& input, TdoaSolver& solver, const TagFix* start) const;
+    TagFix solveIrls(FixInput& input, TdoaSolver& solver, const TagFix* start) const;
+    TagFix solveLargestResidual(FixInput& input, TdoaSolver& solver, const TagFix* start) const;
+    TagFix solveFieldOfView(FixInput& input, TdoaSolver& solver, const TagFix* start, const View& view) const;
+
+private:
+    // Method 8's loop from the current weights and fix.
+    TagFix rejectLargest(FixInput& input, TdoaSolver& solver, TagFix fix) const;
+    Params params_;
+};
+
+// m̂_ini of the field-of-view rule: component-wise median of the last `size` valid fixes, forgotten
+// after a gap longer than maxGap seconds.
+class FixHistory {
+public:
+    explicit FixHistory(int size = 5, double maxGap = 2.0) : size_(size), maxGap_(maxGap) {}
+    void push(const TagFix& fix);
+    // Median position, or nothing while the history is empty or stale at time t.
+    std::optional<Vector3> median(double t) const;
+    // Direction of travel (rad) over the history, if it moved at least minDistance metres.
+    std::optional<double> motionHeading(double t, double minDistance = 0.5) const;
+    void clear() { fixes_.clear(); }
+
+private:
+    int size_;
+    double maxGap_;
+    std::deque<TagFix> fixes_;
+};
+
+}  // namespace athlos::lps

@@ -1,0 +1,224 @@
+#include "plugins/lps/PositioningProcessor.h"
+
+#include "plugins/lps/ProcessorSupport.h"
+
+#include <QJsonArray>
+#include <algorithm>
+#include <cmath>
+
+namespace athlos::lps {
+
+struct PositioningProcessor::Plan {
+    TdoaPositioning::Params params;
+    BeaconLayout layout;
+    TrackGeometry track;
+    EpochSet epochs;
+    std::shared_ptr<const StreamData> orientation;
+    int orientationColumns[4] = {-1, -1, -1, -1};
+};
+
+QString PositioningProcessor::name() const { return tr("LPS positioning (TDoA)"); }
+
+QString PositioningProcessor::description() const {
+    return tr("Tag positions and clock offsets from TDoA readings and a beacon table, one fix per instant "
+              "(2D at tag_height or 3D), with beacon selection against NLOS: all, IRLS (bisquare, 2.5·MAD), "
+              "largest-residual rejection or the field of view of the body-worn tag.");
+}
+
+ParameterSpecs PositioningProcessor::parameters() const {
+    const double inf = std::numeric_limits<double>::infinity();
+    return {
+        ParameterSpec::choice(QStringLiteral("dimension"), {QStringLiteral("auto"), QStringLiteral("2d"), QStringLiteral("3d")},
+                              QStringLiteral("auto"),
+                              tr("2d solves x, y at tag_height; 3d also z; auto = 3d only when the beacons' height span "
+                                 "is at least 30 % of their horizontal extent (else z is ill-conditioned).")),
+        ParameterSpec::number(QStringLiteral("tag_height"), 1.2, -100, 1000, QStringLiteral("m"),
+                              tr("Tag height in the LPS frame for 2D fixes.")),
+        ParameterSpec::choice(QStringLiteral("selection"),
+                              {QStringLiteral("all"), QStringLiteral("irls"), QStringLiteral("largest-residual"),
+                               QStringLiteral("field-of-view")},
+                              QStringLiteral("irls"), tr("Beacon selection method (thesis §3.2).")),
+        ParameterSpec::choice(QStringLiteral("loss"), {QStringLiteral("none"), QStringLiteral("huber"), QStringLiteral("cauchy")},
+                              QStringLiteral("none"), tr("Robust loss of the fix (solved with a ceres::Problem; slower).")),
+        ParameterSpec::number(QStringLiteral("loss_scale"), 0.5, 1e-3, 100, QStringLiteral("m"),
+                              tr("Residual at which the robust loss leaves its quadratic part.")),
+        ParameterSpec::integer(QStringLiteral("min_beacons"), 4, 4, 64, tr("Fewest beacons per fix (thesis: 4).")),
+        ParameterSpec::number(QStringLiteral("irls_k"), 2.5, 0.5, 10, QString(),
+                              tr("IRLS: bisquare cut-off in units of 1.4826·MAD of the residuals.")),
+        ParameterSpec::number(QStringLiteral("rejection_threshold"), 0.25, 0.0, 100, QStringLiteral("m"),
+                              tr("largest-residual: stop rejecting when the mean |residual| is below this.")),
+        ParameterSpec::number(QStringLiteral("kappa"), 100.0, -inf, inf, QStringLiteral("dB"),
+                              tr("field-of-view: κ of the rule G_t(φ) − L_fs + κ > 0 (Eqn. 3.8).")),
+        ParameterSpec::text(QStringLiteral("gain_pattern"), QString(),
+                            tr("field-of-view: body-worn tag pattern as 'angle_deg:linear_gain,…' (0° = forward; "
+                               "0…180° is mirrored); empty = ((1+cos φ)/2)^6 with −30 dB behind.")),
+        ParameterSpec::number(QStringLiteral("frequency"), 5.8e9, 1e6, 1e12, QStringLiteral("Hz"),
+                              tr("field-of-view: carrier frequency for the free-space loss.")),
+        ParameterSpec::boolean(QStringLiteral("fov_refine"), true,
+                               tr("field-of-view: afterwards reject gross outliers among the beacons in view "
+                                  "(largest-residual rule).")),
+        ParameterSpec::choice(QStringLiteral("heading"), {QStringLiteral("track"), QStringLiteral("orientation"), QStringLiteral("motion")},
+                              QStringLiteral("track"),
+                              tr("field-of-view: body heading from the track geometry and running direction, from the "
+                                 "orientation input (sensor x axis = forward) or from the direction of travel.")),
+        ParameterSpec::text(QStringLiteral("track"), QStringLiteral("iaaf-400m"),
+                            tr("field-of-view, heading=track: project geometry name or built-in track; the LPS frame "
+                               "must be the track's (see lps-align).")),
+        ParameterSpec::choice(QStringLiteral("direction"), {QStringLiteral("ccw"), QStringLiteral("cw")}, QStringLiteral("ccw"),
+                              tr("field-of-view, heading=track: running direction (athletics: counter-clockwise).")),
+    };
+}
+
+QList<InputSpec> PositioningProcessor::inputs() const {
+    return {InputSpec{QStringLiteral("tdoa"), {QStringLiteral("lps-tdoa")}, false, false,
+                      tr("TDoA readings t, beacon, dt (s), several rows per instant.")},
+            InputSpec{QStringLiteral("beacons"), {QStringLiteral("beacons")}, true, false,
+                      tr("Beacon table id, x, y, z (m), from any recording; a row 'ref' places the reference node.")},
+            InputSpec{QStringLiteral("orientation"), {QStringLiteral("orientation")}, false, true,
+                      tr("Optional orientation (qw, qx, qy, qz) for heading=orientation.")}};
+}
+
+QList<OutputSpec> PositioningProcessor::outputs() const {
+    return {OutputSpec{QStringLiteral("lps-position"), false, QString(),
+                       tr("t, x, y, z (m), offset (s), rms_residual (m), n_beacons per fix.")}};
+}
+
+bool PositioningProcessor::geometryAllows3d(const BeaconLayout& layout) {
+    double zMin = INFINITY, zMax = -INFINITY, extent = 0.0;
+    for (const auto& a : layout.positions) {
+        zMin = std::min(zMin, a.z());
+        zMax = std::max(zMax, a.z());
+        for (const auto& b : layout.positions) extent = std::max(extent, (a - b).head<2>().norm());
+    }
+    return zMax - zMin >= 0.3 * extent;
+}
+
+Expected<PositioningProcessor::Plan> PositioningProcessor::prepare(const RunContext& context) const {
+    Plan plan;
+    auto layout = loadBeacons(context, 1);
+    if (!layout) return layout.error();
+    plan.layout = std::move(*layout);
+
+    auto& solver = plan.params.solver;
+    const QString dimension = context.text(QStringLiteral("dimension"));
+    const bool spatial = dimension == QLatin1String("3d") || (dimension == QLatin1String("auto") && geometryAllows3d(plan.layout));
+    solver.geometry = spatial ? TdoaSolver::Geometry::Spatial : TdoaSolver::Geometry::Planar;
+    solver.tagHeight = context.number(QStringLiteral("tag_height"));
+    const QString loss = context.text(QStringLiteral("loss"));
+    solver.loss = loss == QLatin1String("huber")    ? TdoaSolver::Loss::Huber
+                  : loss == QLatin1String("cauchy") ? TdoaSolver::Loss::Cauchy
+                                                    : TdoaSolver::Loss::None;
+    solver.lossScale = context.number(QStringLiteral("loss_scale"));
+
+    auto& sel = plan.params.selection;
+    const QString method = context.text(QStringLiteral("selection"));
+    sel.method = method == QLatin1String("all")                ? BeaconSelection::Method::All
+                 : method == QLatin1String("largest-residual") ? BeaconSelection::Method::LargestResidual
+                 : method == QLatin1String("field-of-view")    ? BeaconSelection::Method::FieldOfView
+                                                               : BeaconSelection::Method::Irls;
+    sel.minBeacons = std::max(context.integer(QStringLiteral("min_beacons")), spatial ? 5 : 4);
+    sel.irlsK = context.number(QStringLiteral("irls_k"));
+    sel.rejectionThreshold = context.number(QStringLiteral("rejection_threshold"));
+    sel.kappa = context.number(QStringLiteral("kappa"));
+    sel.frequency = context.number(QStringLiteral("frequency"));
+    sel.fovRefine = context.flag(QStringLiteral("fov_refine"));
+    if (const QString pattern = context.text(QStringLiteral("gain_pattern")); !pattern.trimmed().isEmpty()) {
+        auto gain = GainPattern::parse(pattern);
+        if (!gain) return gain.error();
+        sel.gain = *gain;
+    }
+    if (plan.layout.size() < sel.minBeacons)
+        return makeError(QStringLiteral("min_beacons = %1 but the beacon table '%2' has only %3 beacons")
+                             .arg(sel.minBeacons).arg(context.inputPath(1)).arg(plan.layout.size()));
+
+    const QString heading = context.text(QStringLiteral("heading"));
+    plan.params.heading = heading == QLatin1String("orientation") ? TdoaPositioning::HeadingSource::Orientation
+                          : heading == QLatin1String("motion")    ? TdoaPositioning::HeadingSource::Motion
+                                                                  : TdoaPositioning::HeadingSource::Track;
+    plan.params.clockwise = context.text(QStringLiteral("direction")) == QLatin1String("cw");
+    if (sel.method == BeaconSelection::Method::FieldOfView) {
+        if (plan.params.heading == TdoaPositioning::HeadingSource::Track) {
+            auto track = TrackGeometry::resolve(context.project().geometry(), context.text(QStringLiteral("track")));
+            if (!track) return makeError(QStringLiteral("track: %1").arg(track.message()));
+            plan.track = std::move(*track);
+        }
+        if (plan.params.heading == TdoaPositioning::HeadingSource::Orientation) {
+            const Stream* stream = context.inputCount() > 2 ? context.stream(2) : nullptr;
+            if (!stream)
+                return makeError(QStringLiteral("heading=orientation needs the orientation input (a third --input)"));
+            const char* names[] = {"qw", "qx", "qy", "qz"};
+            for (int c = 0; c < 4; ++c) {
+                plan.orientationColumns[c] = stream->info().columnIndex(QString::fromLatin1(names[c]));
+                if (plan.orientationColumns[c] < 0)
+                    return makeError(QStringLiteral("orientation stream '%1' has no column %2").arg(context.inputPath(2), names[c]));
+            }
+            auto data = stream->data();
+            if (!data) return data.error();
+            plan.orientation = *data;
+        }
+    }
+    auto epochs = loadEpochs(context, 0, plan.layout);
+    if (!epochs) return epochs.error();
+    plan.epochs = std::move(*epochs);
+    return plan;
+}
+
+Status PositioningProcessor::validate(const RunContext& context) const {
+    auto plan = prepare(context);
+    return plan ? Status() : Status(plan.error());
+}
+
+Expected<std::vector<ProcessorOutput>> PositioningProcessor::run(const RunContext& context) const {
+    auto plan = prepare(context);
+    if (!plan) return plan.error();
+    TdoaPositioning::HeadingFunction orientationHeading;
+    if (plan->orientation) {
+        // Yaw of the sensor x axis rotated into the earth frame, at the nearest sample within 0.5 s.
+        const StreamData* q = plan->orientation.get();
+        const auto cols = plan->orientationColumns;
+        orientationHeading = [q, cols](double t) -> std::optional<double> {
+            auto it = std::lower_bound(q->t.begin(), q->t.end(), t);
+            std::size_t k = std::size_t(it - q->t.begin());
+            if (k == q->t.size() || (k > 0 && t - q->t[k - 1] < q->t[k] - t)) k = k ? k - 1 : 0;
+            if (q->t.empty() || std::abs(q->t[k] - t) > 0.5) return std::nullopt;
+            const double w = q->at(k, cols[0]), x = q->at(k, cols[1]), y = q->at(k, cols[2]), z = q->at(k, cols[3]);
+            return std::atan2(2.0 * (x * y + w * z), 1.0 - 2.0 * (y * y + z * z));
+        };
+    }
+    TdoaPositioning positioning(plan->params, plan->layout, plan->track, orientationHeading);
+    auto fixes = positioning.run(plan->epochs.epochs, context.progress());
+    if (!fixes) return cancelledError();
+
+    StreamInfo info;
+    info.name = QStringLiteral("lps");
+    info.kind = QStringLiteral("lps-position");
+    info.frame = QStringLiteral("lps");
+    info.columns = {{QStringLiteral("x"), QStringLiteral("m")},        {QStringLiteral("y"), QStringLiteral("m")},
+                    {QStringLiteral("z"), QStringLiteral("m")},        {QStringLiteral("offset"), QStringLiteral("s")},
+                    {QStringLiteral("rms_residual"), QStringLiteral("m")}, {QStringLiteral("n_beacons"), QStringLiteral("1")}};
+    std::size_t valid = 0;
+    for (const auto& f : *fixes) valid += f.valid;
+    StreamData data(valid, 6);
+    std::size_t r = 0;
+    for (const auto& f : *fixes) {
+        if (!f.valid) continue;
+        data.t[r] = f.t;
+        data.at(r, 0) = f.position.x();
+        data.at(r, 1) = f.position.y();
+        data.at(r, 2) = f.position.z();
+        data.at(r, 3) = -f.offset / kSpeedOfLight;  // t_off of Eqn. 3.5
+        data.at(r, 4) = f.rmsResidual;
+        data.at(r, 5) = f.beaconsUsed;
+        ++r;
+    }
+    info.attributes.insert(QStringLiteral("fixes_total"), qint64(fixes->size()));
+    info.attributes.insert(QStringLiteral("fixes_dropped"), qint64(fixes->size() - valid));
+    info.attributes.insert(QStringLiteral("readings_skipped"), qint64(plan->epochs.readingsSkipped));
+    info.attributes.insert(QStringLiteral("solver"), plan->params.solver.geometry == TdoaSolver::Geometry::Planar
+                                                         ? QStringLiteral("2d") : QStringLiteral("3d"));
+    std::vector<ProcessorOutput> outputs;
+    outputs.push_back({QString(), Stream(std::move(info), std::move(data))});
+    return outputs;
+}
+
+}  // namespace athlos::lps
