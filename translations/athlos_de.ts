@@ -2,6 +2,128 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE" sourcelanguage="en">
 <context>
+    <name>athlos::ui::AnnotationEditor</name>
+    <message>
+        <source>Open a project first.</source>
+        <translation>Öffnen Sie zuerst ein Projekt.</translation>
+    </message>
+    <message>
+        <source>The project is being saved; try again in a moment.</source>
+        <translation>Das Projekt wird gerade gespeichert; versuchen Sie es gleich noch einmal.</translation>
+    </message>
+    <message>
+        <source>No recording &apos;%1&apos;.</source>
+        <translation>Keine Aufnahme „%1“.</translation>
+    </message>
+    <message>
+        <source>No annotation %1 in &apos;%2&apos;.</source>
+        <translation>Keine Annotation %1 in „%2“.</translation>
+    </message>
+    <message>
+        <source>Choose or add an annotation class first.</source>
+        <translation>Wählen Sie zuerst eine Annotationsklasse oder legen Sie eine an.</translation>
+    </message>
+    <message>
+        <source>An annotation needs a start before its end.</source>
+        <translation>Eine Annotation braucht einen Anfang vor ihrem Ende.</translation>
+    </message>
+    <message>
+        <source>Create %1</source>
+        <translation>%1 anlegen</translation>
+    </message>
+    <message>
+        <source>Edit %1</source>
+        <translation>%1 bearbeiten</translation>
+    </message>
+    <message>
+        <source>Delete %1</source>
+        <translation>%1 löschen</translation>
+    </message>
+    <message>
+        <source>A class needs a name.</source>
+        <translation>Eine Klasse braucht einen Namen.</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::AnnotationPanel</name>
+    <message>
+        <source>Class of new intervals (keys 1–9 on the plot)</source>
+        <translation>Klasse neuer Intervalle (Tasten 1–9 im Diagramm)</translation>
+    </message>
+    <message>
+        <source>Add Class…</source>
+        <translation>Klasse hinzufügen…</translation>
+    </message>
+    <message>
+        <source>Class</source>
+        <translation>Klasse</translation>
+    </message>
+    <message>
+        <source>Start [s]</source>
+        <translation>Beginn [s]</translation>
+    </message>
+    <message>
+        <source>End [s]</source>
+        <translation>Ende [s]</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>Quelle</translation>
+    </message>
+    <message>
+        <source>Next to Review</source>
+        <translation>Nächste prüfen</translation>
+    </message>
+    <message>
+        <source>Select the next annotation made by a processor</source>
+        <translation>Die nächste von einem Prozessor erzeugte Annotation auswählen</translation>
+    </message>
+    <message>
+        <source>Accept</source>
+        <translation>Annehmen</translation>
+    </message>
+    <message>
+        <source>Reject</source>
+        <translation>Verwerfen</translation>
+    </message>
+    <message>
+        <source>Classes:</source>
+        <translation>Klassen:</translation>
+    </message>
+    <message>
+        <source>manual (%1)</source>
+        <translation>manuell (%1)</translation>
+    </message>
+    <message>
+        <source>%1, %2% confident</source>
+        <translation>%1, %2 % sicher</translation>
+    </message>
+    <message>
+        <source>Select a stream to annotate its recording.</source>
+        <translation>Wählen Sie einen Datenstrom, um seine Aufnahme zu annotieren.</translation>
+    </message>
+    <message>
+        <source>No annotations on %1 yet. Shift+drag on the plot (or use annotate mode) to add one.</source>
+        <translation>Noch keine Annotationen in %1. Umschalt+Ziehen im Diagramm (oder der Annotationsmodus) legt eine an.</translation>
+    </message>
+    <message>
+        <source>Annotations to review: %1</source>
+        <translation>Zu prüfende Annotationen: %1</translation>
+    </message>
+    <message>
+        <source>Nothing left to review.</source>
+        <translation>Nichts mehr zu prüfen.</translation>
+    </message>
+    <message>
+        <source>Add Annotation Class</source>
+        <translation>Annotationsklasse hinzufügen</translation>
+    </message>
+    <message>
+        <source>Class name:</source>
+        <translation>Klassenname:</translation>
+    </message>
+</context>
+<context>
     <name>athlos::ui::BackgroundTask</name>
     <message>
         <source>Cancel</source>
@@ -373,6 +495,263 @@
         <source>Importing %1 files…</source>
         <translation>%1 Dateien werden importiert…</translation>
     </message>
+    <message>
+        <source>&amp;Run Processor…</source>
+        <translation>Prozessor &amp;ausführen…</translation>
+    </message>
+    <message>
+        <source>Run any processor on streams of the project</source>
+        <translation>Einen beliebigen Prozessor auf Datenströme des Projekts anwenden</translation>
+    </message>
+    <message>
+        <source>Add &amp;Time-Series Panel</source>
+        <translation>&amp;Zeitreihen-Ansicht hinzufügen</translation>
+    </message>
+    <message>
+        <source>Plot the selected stream in another panel that shares the time cursor</source>
+        <translation>Den gewählten Datenstrom in einer weiteren Ansicht mit gemeinsamem Zeitcursor zeigen</translation>
+    </message>
+    <message>
+        <source>Select a stream first.</source>
+        <translation>Wählen Sie zuerst einen Datenstrom.</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederholen</translation>
+    </message>
+    <message>
+        <source>&amp;Annotate Mode</source>
+        <translation>&amp;Annotationsmodus</translation>
+    </message>
+    <message>
+        <source>Drag on the plot to create intervals of the current class (Shift+drag works always)</source>
+        <translation>Ziehen im Diagramm legt Intervalle der aktuellen Klasse an (Umschalt+Ziehen geht immer)</translation>
+    </message>
+    <message>
+        <source>Add Annotation &amp;Class…</source>
+        <translation>Annotations&amp;klasse hinzufügen…</translation>
+    </message>
+    <message>
+        <source>&amp;Preferences…</source>
+        <translation>&amp;Einstellungen…</translation>
+    </message>
+    <message>
+        <source>Preferences</source>
+        <translation>Einstellungen</translation>
+    </message>
+    <message>
+        <source>Annotator name:</source>
+        <translation>Name des Annotierenden:</translation>
+    </message>
+    <message>
+        <source>&amp;Export View…</source>
+        <translation>Ansicht e&amp;xportieren…</translation>
+    </message>
+    <message>
+        <source>Save the shown plot as PNG, SVG or PDF</source>
+        <translation>Das gezeigte Diagramm als PNG, SVG oder PDF speichern</translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation>%1 exportiert</translation>
+    </message>
+    <message>
+        <source>Show &amp;All</source>
+        <translation>&amp;Alles zeigen</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <source>&amp;Processing</source>
+        <translation>&amp;Verarbeitung</translation>
+    </message>
+    <message>
+        <source>Open a project first.</source>
+        <translation>Öffnen Sie zuerst ein Projekt.</translation>
+    </message>
+    <message>
+        <source>Another job is still running.</source>
+        <translation>Eine andere Aufgabe läuft noch.</translation>
+    </message>
+    <message>
+        <source>Unknown processor &apos;%1&apos;.</source>
+        <translation>Unbekannter Prozessor „%1“.</translation>
+    </message>
+    <message>
+        <source>Running %1…</source>
+        <translation>%1 läuft…</translation>
+    </message>
+    <message>
+        <source>%1 cancelled; the project is unchanged.</source>
+        <translation>%1 abgebrochen; das Projekt ist unverändert.</translation>
+    </message>
+    <message>
+        <source>Cancelled; the project is unchanged.</source>
+        <translation>Abgebrochen; das Projekt ist unverändert.</translation>
+    </message>
+    <message>
+        <source>The processor did not run.</source>
+        <translation>Der Prozessor wurde nicht ausgeführt.</translation>
+    </message>
+    <message>
+        <source>%1 wrote %2</source>
+        <translation>%1 hat %2 geschrieben</translation>
+    </message>
+    <message>
+        <source>Re-run</source>
+        <translation>Erneut ausführen</translation>
+    </message>
+    <message>
+        <source>The processor &apos;%1&apos; is not available (is its plugin installed?).</source>
+        <translation>Der Prozessor „%1“ ist nicht verfügbar (ist sein Plugin installiert?).</translation>
+    </message>
+    <message>
+        <source>Re-run with Changed Parameters…</source>
+        <translation>Mit geänderten Parametern erneut ausführen…</translation>
+    </message>
+    <message>
+        <source>Annotations</source>
+        <translation>Annotationen</translation>
+    </message>
+    <message>
+        <source>Autosave failed: %1 (the journal keeps your edits)</source>
+        <translation>Automatisches Speichern fehlgeschlagen: %1 (das Journal bewahrt Ihre Änderungen)</translation>
+    </message>
+    <message>
+        <source>Autosaved</source>
+        <translation>Automatisch gespeichert</translation>
+    </message>
+    <message>
+        <source>Recover annotations</source>
+        <translation>Annotationen wiederherstellen</translation>
+    </message>
+    <message>
+        <source>%1 has annotation edits that were not saved (the program ended unexpectedly). Recover them?</source>
+        <translation>%1 hat ungespeicherte Annotationsänderungen (das Programm wurde unerwartet beendet). Wiederherstellen?</translation>
+    </message>
+    <message>
+        <source>Could not recover annotations</source>
+        <translation>Annotationen konnten nicht wiederhergestellt werden</translation>
+    </message>
+    <message>
+        <source>Annotation edits recovered from the journal: %1</source>
+        <translation>Aus dem Journal wiederhergestellte Annotationsänderungen: %1</translation>
+    </message>
+    <message>
+        <source>Export View…</source>
+        <translation>Ansicht exportieren…</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::ParameterForm</name>
+    <message>
+        <source>This processor has no parameters.</source>
+        <translation>Dieser Prozessor hat keine Parameter.</translation>
+    </message>
+    <message>
+        <source>Set %1 (otherwise the processor decides)</source>
+        <translation>%1 setzen (sonst entscheidet der Prozessor)</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::PlotExporter</name>
+    <message>
+        <source>Nothing to export.</source>
+        <translation>Nichts zu exportieren.</translation>
+    </message>
+    <message>
+        <source>Unknown export format &apos;%1&apos;; use .png, .svg or .pdf.</source>
+        <translation>Unbekanntes Exportformat „%1“; verwenden Sie .png, .svg oder .pdf.</translation>
+    </message>
+    <message>
+        <source>Could not write %1.</source>
+        <translation>%1 konnte nicht geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png)</source>
+        <translation>PNG-Bild (*.png)</translation>
+    </message>
+    <message>
+        <source>SVG drawing (*.svg)</source>
+        <translation>SVG-Zeichnung (*.svg)</translation>
+    </message>
+    <message>
+        <source>PDF document (*.pdf)</source>
+        <translation>PDF-Dokument (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Export View</source>
+        <translation>Ansicht exportieren</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::ProcessorDialog</name>
+    <message>
+        <source>Run Processor</source>
+        <translation>Prozessor ausführen</translation>
+    </message>
+    <message>
+        <source>Inputs and output</source>
+        <translation>Eingaben und Ausgabe</translation>
+    </message>
+    <message>
+        <source>Output:</source>
+        <translation>Ausgabe:</translation>
+    </message>
+    <message>
+        <source>recording/name</source>
+        <translation>aufnahme/name</translation>
+    </message>
+    <message>
+        <source>Where the result is stored, as recording/name</source>
+        <translation>Wo das Ergebnis gespeichert wird, als aufnahme/name</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Ausführen</translation>
+    </message>
+    <message>
+        <source>Processor:</source>
+        <translation>Prozessor:</translation>
+    </message>
+    <message>
+        <source>No processors were found. Check the plugin folder (ATHLOS_PLUGIN_PATH).</source>
+        <translation>Keine Prozessoren gefunden. Prüfen Sie den Plugin-Ordner (ATHLOS_PLUGIN_PATH).</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(keine)</translation>
+    </message>
+    <message>
+        <source>Choose a processor.</source>
+        <translation>Wählen Sie einen Prozessor.</translation>
+    </message>
+    <message>
+        <source>Open a project first.</source>
+        <translation>Öffnen Sie zuerst ein Projekt.</translation>
+    </message>
+    <message>
+        <source>The output name must be recording/name, e.g. run1/imu-100hz.</source>
+        <translation>Der Ausgabename muss aufnahme/name lauten, z. B. run1/imu-100hz.</translation>
+    </message>
+    <message>
+        <source>Input &apos;%1&apos; needs a stream of kind %2; the project has none.</source>
+        <translation>Eingabe „%1“ braucht einen Datenstrom der Art %2; das Projekt hat keinen.</translation>
+    </message>
 </context>
 <context>
     <name>athlos::ui::ProjectTreeModel</name>
@@ -451,6 +830,30 @@
         <source>Select a stream in the project tree to plot it.</source>
         <translation>Wählen Sie im Projektbaum einen Datenstrom aus, um ihn darzustellen.</translation>
     </message>
+    <message>
+        <source>t = %1 s</source>
+        <translation>t = %1 s</translation>
+    </message>
+    <message>
+        <source>at cursor</source>
+        <translation>am Cursor</translation>
+    </message>
+    <message>
+        <source>mean</source>
+        <translation>Mittel</translation>
+    </message>
+    <message>
+        <source>SD</source>
+        <translation>SA</translation>
+    </message>
+    <message>
+        <source>min</source>
+        <translation>Min.</translation>
+    </message>
+    <message>
+        <source>max</source>
+        <translation>Max.</translation>
+    </message>
 </context>
 <context>
     <name>athlos::ui::TrajectoryPanel</name>
@@ -494,6 +897,10 @@
         <source>%1 — %2 samples</source>
         <translation>%1 — %2 Messwerte</translation>
     </message>
+    <message>
+        <source>Cursor</source>
+        <translation>Cursor</translation>
+    </message>
 </context>
 <context>
     <name>athlos::ui::UiEntry</name>
@@ -512,6 +919,459 @@
     <message>
         <source>cannot write %1</source>
         <translation>%1 kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>the project has no stream to annotate; import a recording first</source>
+        <translation>das Projekt hat keinen Datenstrom zum Annotieren; importieren Sie zuerst eine Aufnahme</translation>
+    </message>
+    <message>
+        <source>the project has no streams to show in view &apos;%1&apos;</source>
+        <translation>das Projekt hat keine Datenströme für die Ansicht „%1“</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::LpsCalibrationWizard</name>
+    <message>
+        <source>Calibrate LPS</source>
+        <translation>LPS kalibrieren</translation>
+    </message>
+    <message>
+        <source>Initial beacon positions</source>
+        <translation>Anfängliche Bakenpositionen</translation>
+    </message>
+    <message>
+        <source>Rough positions (a few metres are fine) from the project or a CSV file (id, x, y, z).</source>
+        <translation>Grobe Positionen (einige Meter Abweichung genügen) aus dem Projekt oder einer CSV-Datei (id, x, y, z).</translation>
+    </message>
+    <message>
+        <source>Import CSV…</source>
+        <translation>CSV importieren…</translation>
+    </message>
+    <message>
+        <source>Beacon table:</source>
+        <translation>Bakentabelle:</translation>
+    </message>
+    <message>
+        <source>Venue drawing:</source>
+        <translation>Anlagenzeichnung:</translation>
+    </message>
+    <message>
+        <source>Import beacon table</source>
+        <translation>Bakentabelle importieren</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv *.txt)</source>
+        <translation>CSV-Dateien (*.csv *.txt)</translation>
+    </message>
+    <message>
+        <source>initial</source>
+        <translation>anfänglich</translation>
+    </message>
+    <message>
+        <source>Calibration walk</source>
+        <translation>Kalibrierlauf</translation>
+    </message>
+    <message>
+        <source>The TDoA recording of the walk and the calibration settings. Next runs the calibration.</source>
+        <translation>Die TDoA-Aufzeichnung des Kalibrierlaufs und die Kalibriereinstellungen. „Weiter“ startet die Kalibrierung.</translation>
+    </message>
+    <message>
+        <source>Show the walk positions (runs lps-positioning with the calibrated beacons)</source>
+        <translation>Positionen des Laufs anzeigen (führt lps-positioning mit den kalibrierten Baken aus)</translation>
+    </message>
+    <message>
+        <source>TDoA stream:</source>
+        <translation>TDoA-Datenstrom:</translation>
+    </message>
+    <message>
+        <source>Output (rec/table):</source>
+        <translation>Ausgabe (Aufnahme/Tabelle):</translation>
+    </message>
+    <message>
+        <source>The lps-calibration processor was not found; check the plugin folder.</source>
+        <translation>Der Prozessor lps-calibration wurde nicht gefunden; bitte den Plugin-Ordner prüfen.</translation>
+    </message>
+    <message>
+        <source>Calibration result</source>
+        <translation>Kalibrierergebnis</translation>
+    </message>
+    <message>
+        <source>Next keeps the result; Retry discards it so you can change the settings.</source>
+        <translation>„Weiter“ behält das Ergebnis; „Erneut versuchen“ verwirft es, damit Sie die Einstellungen ändern können.</translation>
+    </message>
+    <message>
+        <source>RMS residual [m]</source>
+        <translation>RMS-Residuum [m]</translation>
+    </message>
+    <message>
+        <source>Retry with other settings</source>
+        <translation>Erneut versuchen mit anderen Einstellungen</translation>
+    </message>
+    <message>
+        <source>Align and save</source>
+        <translation>Ausrichten und speichern</translation>
+    </message>
+    <message>
+        <source>Optionally move the beacons so that surveyed venue marks land on their known coordinates.</source>
+        <translation>Optional die Baken so verschieben, dass vermessene Markierungen der Anlage auf ihren bekannten Koordinaten liegen.</translation>
+    </message>
+    <message>
+        <source>Align to venue marks (lps-align)</source>
+        <translation>An Markierungen der Anlage ausrichten (lps-align)</translation>
+    </message>
+    <message>
+        <source>Marks:</source>
+        <translation>Markierungen:</translation>
+    </message>
+    <message>
+        <source>Mode:</source>
+        <translation>Modus:</translation>
+    </message>
+    <message>
+        <source>Save as (rec/table):</source>
+        <translation>Speichern als (Aufnahme/Tabelle):</translation>
+    </message>
+    <message>
+        <source>Choose the TDoA stream of the calibration walk.</source>
+        <translation>Wählen Sie den TDoA-Datenstrom des Kalibrierlaufs.</translation>
+    </message>
+    <message>
+        <source>The output must be named rec/table.</source>
+        <translation>Die Ausgabe muss Aufnahme/Tabelle heißen.</translation>
+    </message>
+    <message>
+        <source>'%1' already exists; choose another name.</source>
+        <translation>„%1“ existiert bereits; wählen Sie einen anderen Namen.</translation>
+    </message>
+    <message>
+        <source>calibrated</source>
+        <translation>kalibriert</translation>
+    </message>
+    <message>
+        <source>nRMSR before: %1 m, after: %2 m; %3 fixes used, %4 removed; converged: %5</source>
+        <translation>nRMSR vorher: %1 m, nachher: %2 m; %3 Positionen verwendet, %4 entfernt; konvergiert: %5</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>nein</translation>
+    </message>
+    <message>
+        <source>There is no calibration result to save.</source>
+        <translation>Es gibt kein Kalibrierergebnis zum Speichern.</translation>
+    </message>
+    <message>
+        <source>The name must be rec/table.</source>
+        <translation>Der Name muss Aufnahme/Tabelle lauten.</translation>
+    </message>
+    <message>
+        <source>The aligned table needs a name of its own.</source>
+        <translation>Die ausgerichtete Tabelle braucht einen eigenen Namen.</translation>
+    </message>
+</context>
+<context>
+    <name>Tools</name>
+    <message>
+        <source>Calibrate LPS…</source>
+        <translation>LPS kalibrieren…</translation>
+    </message>
+    <message>
+        <source>Positioning</source>
+        <translation>Positionierung</translation>
+    </message>
+    <message>
+        <source>Orientation angles…</source>
+        <translation>Orientierungswinkel…</translation>
+    </message>
+    <message>
+        <source>Inertial</source>
+        <translation>Inertial</translation>
+    </message>
+    <message>
+        <source>Filter positions…</source>
+        <translation>Positionen filtern…</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::OrientationAnglesView</name>
+    <message>
+        <source>t [s]</source>
+        <translation>t [s]</translation>
+    </message>
+    <message>
+        <source>angle [°]</source>
+        <translation>Winkel [°]</translation>
+    </message>
+    <message>
+        <source>error [°]</source>
+        <translation>Fehler [°]</translation>
+    </message>
+    <message>
+        <source>Stream:</source>
+        <translation>Datenstrom:</translation>
+    </message>
+    <message>
+        <source>Sequence:</source>
+        <translation>Reihenfolge:</translation>
+    </message>
+    <message>
+        <source>'%1' is not an orientation stream (qw, qx, qy, qz)</source>
+        <translation>„%1“ ist kein Orientierungsdatenstrom (qw, qx, qy, qz)</translation>
+    </message>
+    <message>
+        <source>yaw (Z)</source>
+        <translation>Gieren (Z)</translation>
+    </message>
+    <message>
+        <source>pitch (Y)</source>
+        <translation>Nicken (Y)</translation>
+    </message>
+    <message>
+        <source>roll (X)</source>
+        <translation>Rollen (X)</translation>
+    </message>
+    <message>
+        <source>angle 1 (%1)</source>
+        <translation>Winkel 1 (%1)</translation>
+    </message>
+    <message>
+        <source>angle 2 (%1)</source>
+        <translation>Winkel 2 (%1)</translation>
+    </message>
+    <message>
+        <source>angle 3 (%1)</source>
+        <translation>Winkel 3 (%1)</translation>
+    </message>
+    <message>
+        <source>total (RMS %1°)</source>
+        <translation>gesamt (RMS %1°)</translation>
+    </message>
+    <message>
+        <source>heading (RMS %1°)</source>
+        <translation>Kurs (RMS %1°)</translation>
+    </message>
+    <message>
+        <source>inclination (RMS %1°)</source>
+        <translation>Neigung (RMS %1°)</translation>
+    </message>
+    <message>
+        <source>Error against %1 (%2 samples).</source>
+        <translation>Fehler gegenüber %1 (%2 Abtastwerte).</translation>
+    </message>
+    <message>
+        <source>No reference orientation (kind reference with qw..qz) in this recording.</source>
+        <translation>Keine Referenzorientierung (Art reference mit qw..qz) in dieser Aufnahme.</translation>
+    </message>
+    <message>
+        <source>Orientation angles</source>
+        <translation>Orientierungswinkel</translation>
+    </message>
+    <message>
+        <source>no orientation stream (kind orientation with qw, qx, qy, qz) in this project; run orientation first</source>
+        <translation>kein Orientierungsdatenstrom (Art orientation mit qw, qx, qy, qz) in diesem Projekt; zuerst orientation ausführen</translation>
+    </message>
+    <message>
+        <source>Orientation</source>
+        <translation>Orientierung</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::PositionFilterWizard</name>
+    <message>
+        <source>Filter positions</source>
+        <translation>Positionen filtern</translation>
+    </message>
+    <message>
+        <source>Position stream</source>
+        <translation>Positionsdatenstrom</translation>
+    </message>
+    <message>
+        <source>The LPS fixes (kind lps-position, columns x and y) to filter.</source>
+        <translation>Die zu filternden LPS-Positionen (Art lps-position, Spalten x und y).</translation>
+    </message>
+    <message>
+        <source>Stream:</source>
+        <translation>Datenstrom:</translation>
+    </message>
+    <message>
+        <source>This project has no lps-position stream; import one first.</source>
+        <translation>Dieses Projekt hat keinen lps-position-Datenstrom; importieren Sie zuerst einen.</translation>
+    </message>
+    <message>
+        <source>Track and pose</source>
+        <translation>Bahn und Lage</translation>
+    </message>
+    <message>
+        <source>Place the track over the raw positions: the track models follow its lanes.</source>
+        <translation>Legen Sie die Bahn über die Rohpositionen: Die Bahnmodelle folgen ihren Bahnen.</translation>
+    </message>
+    <message>
+        <source>Fit pose</source>
+        <translation>Lage anpassen</translation>
+    </message>
+    <message>
+        <source>Centre the track on the positions and turn it along their longest extent.</source>
+        <translation>Die Bahn auf die Positionen zentrieren und entlang ihrer größten Ausdehnung drehen.</translation>
+    </message>
+    <message>
+        <source>x [m]</source>
+        <translation>x [m]</translation>
+    </message>
+    <message>
+        <source>y [m]</source>
+        <translation>y [m]</translation>
+    </message>
+    <message>
+        <source>Track:</source>
+        <translation>Bahn:</translation>
+    </message>
+    <message>
+        <source>Origin x:</source>
+        <translation>Ursprung x:</translation>
+    </message>
+    <message>
+        <source>Origin y:</source>
+        <translation>Ursprung y:</translation>
+    </message>
+    <message>
+        <source>Rotation:</source>
+        <translation>Drehung:</translation>
+    </message>
+    <message>
+        <source>Filter and noise</source>
+        <translation>Filter und Rauschen</translation>
+    </message>
+    <message>
+        <source>Kalman filter variant, motion model and noise settings.</source>
+        <translation>Kalman-Filter-Variante, Bewegungsmodell und Rauscheinstellungen.</translation>
+    </message>
+    <message>
+        <source>Filter:</source>
+        <translation>Filter:</translation>
+    </message>
+    <message>
+        <source>Motion model:</source>
+        <translation>Bewegungsmodell:</translation>
+    </message>
+    <message>
+        <source>Noise:</source>
+        <translation>Rauschen:</translation>
+    </message>
+    <message>
+        <source>The position-filter processor was not found; check the plugin folder.</source>
+        <translation>Der Prozessor position-filter wurde nicht gefunden; bitte den Plugin-Ordner prüfen.</translation>
+    </message>
+    <message>
+        <source>Smoothing and output</source>
+        <translation>Glättung und Ausgabe</translation>
+    </message>
+    <message>
+        <source>Next runs the filter.</source>
+        <translation>„Weiter“ startet den Filter.</translation>
+    </message>
+    <message>
+        <source>Resample to a uniform rate</source>
+        <translation>Auf eine gleichmäßige Rate umtasten</translation>
+    </message>
+    <message>
+        <source>Smoother:</source>
+        <translation>Glätter:</translation>
+    </message>
+    <message>
+        <source>Lag:</source>
+        <translation>Verzögerung:</translation>
+    </message>
+    <message>
+        <source>Output (rec/stream):</source>
+        <translation>Ausgabe (Aufnahme/Datenstrom):</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>Ergebnis</translation>
+    </message>
+    <message>
+        <source>The output must be named rec/stream.</source>
+        <translation>Die Ausgabe muss Aufnahme/Datenstrom heißen.</translation>
+    </message>
+    <message>
+        <source>'%1' already exists; choose another name.</source>
+        <translation>„%1“ existiert bereits; wählen Sie einen anderen Namen.</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::TrackTrajectoryView</name>
+    <message>
+        <source>x [m]</source>
+        <translation>x [m]</translation>
+    </message>
+    <message>
+        <source>y [m]</source>
+        <translation>y [m]</translation>
+    </message>
+    <message>
+        <source>Raw positions</source>
+        <translation>Rohpositionen</translation>
+    </message>
+    <message>
+        <source>Filtered trajectory</source>
+        <translation>Gefilterte Trajektorie</translation>
+    </message>
+    <message>
+        <source>Outliers</source>
+        <translation>Ausreißer</translation>
+    </message>
+    <message>
+        <source>speed [m/s]</source>
+        <translation>Geschwindigkeit [m/s]</translation>
+    </message>
+    <message>
+        <source>'%1' is not a stream of this project</source>
+        <translation>„%1“ ist kein Datenstrom dieses Projekts</translation>
+    </message>
+    <message>
+        <source>'%1' has no x/y samples</source>
+        <translation>„%1“ hat keine x/y-Abtastwerte</translation>
+    </message>
+    <message>
+        <source>%1: %2 filtered samples, %3 raw fixes, %4 rejected as outliers</source>
+        <translation>%1: %2 gefilterte Abtastwerte, %3 Rohpositionen, %4 als Ausreißer verworfen</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <source>no position-filter result (kind trajectory) in this project; run position-filter first</source>
+        <translation>kein Ergebnis von position-filter (Art trajectory) in diesem Projekt; zuerst position-filter ausführen</translation>
+    </message>
+    <message>
+        <source>Track</source>
+        <translation>Bahn</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::VenuePlot</name>
+    <message>
+        <source>x [m]</source>
+        <translation>x [m]</translation>
+    </message>
+    <message>
+        <source>y [m]</source>
+        <translation>y [m]</translation>
+    </message>
+    <message>
+        <source>Walk</source>
+        <translation>Lauf</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::WizardParameterForm</name>
+    <message>
+        <source>(not set)</source>
+        <translation>(nicht gesetzt)</translation>
     </message>
 </context>
 </TS>

@@ -2,12 +2,21 @@
 
 #include "core/io/Importer.h"
 #include "core/model/Project.h"
+#include "core/processing/ProcessorRegistry.h"
 #include "core/util/Version.h"
+#include "core/model/AnnotationJournal.h"
+#include "ui/AnnotationEditor.h"
+#include "ui/AnnotationLayer.h"
+#include "ui/AnnotationPanel.h"
 #include "ui/BackgroundTask.h"
 #include "ui/ItemDescription.h"
+#include "ui/PlotExporter.h"
+#include "ui/ProcessorDialog.h"
 #include "ui/ProjectTreeModel.h"
 #include "ui/RecentProjects.h"
+#include "ui/TimeController.h"
 #include "ui/TimeSeriesPanel.h"
+#include "ui/ToolRegistry.h"
 #include "ui/TrajectoryPanel.h"
 #include "ui/UiEntry.h"
 
@@ -19,6 +28,9 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHeaderView>
+#include <QInputDialog>
+#include <QSettings>
+#include <QUndoStack>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
@@ -27,7 +39,12 @@
 #include <QTextBrowser>
 #include <QTimer>
 #include <QTreeView>
+#include <QJsonArray>
 #include <qcustomplot.h>
+
+#include <algorithm>
+#include <limits>
+#include <optional>
 
 namespace athlos::ui {
 
@@ -58,14 +75,21 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     setWindowIcon(QIcon(QStringLiteral(":/athlos/icons/athlos.svg")));
     setAcceptDrops(true);
 
+    timeController_ = new TimeController(this);
     timeSeries_ = new TimeSeriesPanel(this);
+    timeSeries_->setTimeController(timeController_);
+    addExportMenu(timeSeries_->plot());
+    connect(timeSeries_, &TimeSeriesPanel::loaded, this, &MainWindow::updateTimeBounds);
     trajectory_ = new TrajectoryPanel(this);
+    trajectory_->setTimeController(timeController_);
+    addExportMenu(trajectory_->plot());
     tabs_ = new QTabWidget(this);
     tabs_->setDocumentMode(true);
     tabs_->addTab(timeSeries_, tr("Time series"));
     tabs_->addTab(trajectory_, tr("Trajectory"));
     setCentralWidget(tabs_);
 
+    createAnnotationTool();
     createActions();
     createDocks();
     createMenus();
@@ -78,6 +102,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
 MainWindow::~MainWindow()
 {
     // Panels may hold pointers into the project; drop them before the project goes.
+    removeExtraPanels();
     timeSeries_->clear();
     trajectory_->clear();
     treeModel_->setProject(nullptr);
@@ -121,6 +146,54 @@ void MainWindow::createActions()
     aboutAction_ = new QAction(tr("&About Athlos"), this);
     aboutAction_->setMenuRole(QAction::AboutRole);
     connect(aboutAction_, &QAction::triggered, this, &MainWindow::about);
+
+    runProcessorAction_ = new QAction(tr("&Run Processor…"), this);
+    runProcessorAction_->setShortcut(Qt::CTRL | Qt::Key_R);
+    runProcessorAction_->setStatusTip(tr("Run any processor on streams of the project"));
+    connect(runProcessorAction_, &QAction::triggered, this, [this] { openProcessorDialog(); });
+
+    addPanelAction_ = new QAction(tr("Add &Time-Series Panel"), this);
+    addPanelAction_->setStatusTip(tr("Plot the selected stream in another panel that shares the time cursor"));
+    connect(addPanelAction_, &QAction::triggered, this, [this] {
+        const QString path = currentItem();
+        if (project_ && project_->stream(path)) addTimeSeriesPanel(path);
+        else statusBar()->showMessage(tr("Select a stream first."), 5000);
+    });
+    undoAction_ = annotationEditor_->undoStack()->createUndoAction(this, tr("&Undo"));
+    undoAction_->setShortcut(QKeySequence::Undo);
+    redoAction_ = annotationEditor_->undoStack()->createRedoAction(this, tr("&Redo"));
+    redoAction_->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence::Redo});
+    annotateModeAction_ = new QAction(tr("&Annotate Mode"), this);
+    annotateModeAction_->setCheckable(true);
+    annotateModeAction_->setShortcut(Qt::CTRL | Qt::Key_M);
+    annotateModeAction_->setStatusTip(tr("Drag on the plot to create intervals of the current class (Shift+drag works always)"));
+    connect(annotateModeAction_, &QAction::toggled, this, [this](bool on) {
+        annotationLayer_->setAnnotateMode(on);
+        if (on) showAnnotationPanel();
+    });
+    addClassAction_ = new QAction(tr("Add Annotation &Class…"), this);
+    connect(addClassAction_, &QAction::triggered, this, [this] { annotationPanel_->addClassDialog(); });
+    preferencesAction_ = new QAction(tr("&Preferences…"), this);
+    preferencesAction_->setMenuRole(QAction::PreferencesRole);
+    connect(preferencesAction_, &QAction::triggered, this, [this] {
+        bool ok = false;
+        const QString name = QInputDialog::getText(this, tr("Preferences"), tr("Annotator name:"), QLineEdit::Normal,
+                                                   AnnotationEditor::annotator(), &ok);
+        if (ok && !name.trimmed().isEmpty()) AnnotationEditor::setAnnotator(name);
+    });
+
+    exportViewAction_ = new QAction(tr("&Export View…"), this);
+    exportViewAction_->setShortcut(Qt::CTRL | Qt::Key_E);
+    exportViewAction_->setStatusTip(tr("Save the shown plot as PNG, SVG or PDF"));
+    connect(exportViewAction_, &QAction::triggered, this, [this] {
+        QCustomPlot* plot = tabs_->currentWidget() == trajectory_ ? trajectory_->plot() : timeSeries_->plot();
+        const QString written = PlotExporter::exportDialog(plot, this);
+        if (!written.isEmpty()) statusBar()->showMessage(tr("Exported %1").arg(QDir::toNativeSeparators(written)), 5000);
+    });
+
+    showAllAction_ = new QAction(tr("Show &All"), this);
+    showAllAction_->setShortcut(Qt::CTRL | Qt::Key_0);
+    connect(showAllAction_, &QAction::triggered, timeController_, &TimeController::showAll);
 }
 
 void MainWindow::createMenus()
@@ -136,8 +209,26 @@ void MainWindow::createMenus()
     file->addAction(saveAsAction_);
     file->addSeparator();
     file->addAction(importAction_);
+    file->addAction(exportViewAction_);
     file->addSeparator();
     file->addAction(quitAction_);
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    edit->addAction(undoAction_);
+    edit->addAction(redoAction_);
+    edit->addSeparator();
+    edit->addAction(annotateModeAction_);
+    edit->addAction(addClassAction_);
+    edit->addSeparator();
+    edit->addAction(preferencesAction_);
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    view->addAction(addPanelAction_);
+    view->addAction(showAllAction_);
+
+    QMenu* processing = menuBar()->addMenu(tr("&Processing"));
+    processing->addAction(runProcessorAction_);
+    createToolMenus(processing, view);
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(aboutAction_);
@@ -155,6 +246,8 @@ void MainWindow::createDocks()
     connect(tree_->selectionModel(), &QItemSelectionModel::currentChanged, this,
             [this](const QModelIndex& current) { onCurrentChanged(current); });
     connect(tree_, &QTreeView::activated, this, &MainWindow::onActivated);
+    tree_->setContextMenuPolicy(Qt::CustomContextMenu);
+    connect(tree_, &QTreeView::customContextMenuRequested, this, &MainWindow::showTreeContextMenu);
     // A model reset replaces the selection model's contents, not the object: connect once.
 
     auto* treeDock = new QDockWidget(tr("Project"), this);
@@ -179,14 +272,18 @@ void MainWindow::createDocks()
 
 void MainWindow::setProject(std::shared_ptr<Project> project)
 {
+    removeExtraPanels();
     timeSeries_->clear();
     trajectory_->clear();
     treeModel_->setProject(project.get());
+    annotationLayer_->setRecording({});
     project_ = std::move(project);
+    annotationEditor_->setProject(project_.get());
     tree_->expandAll();
     for (int c = 0; c < ProjectTreeModel::ColumnsColumn; ++c) tree_->resizeColumnToContents(c);
     details_->setHtml(project_ ? ItemDescription::projectHtml(*project_) : QString());
     if (project_) statusBar()->clearMessage();
+    restoreLayout();
     updateTitle();
     updateActions();
     emit projectChanged();
@@ -223,12 +320,14 @@ bool MainWindow::openProject(const QString& path)
     setProject(std::shared_ptr<Project>(std::move(opened).value()));
     RecentProjects::add(path);
     statusBar()->showMessage(tr("Opened %1").arg(QDir::toNativeSeparators(path)), 5000);
+    recoverJournal();
     return true;
 }
 
 bool MainWindow::saveProject()
 {
     if (!project_) return false;
+    storeLayout();
     // The panels' workers may be reading lazy samples; saving rebinds the streams to the new file.
     waitForLoads();
     std::shared_ptr<Project> project = project_;
@@ -242,6 +341,7 @@ bool MainWindow::saveProject()
         return false;
     }
     project_->setModified(false);
+    afterSave();
     updateTitle();
     statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(project_->path())), 5000);
     return true;
@@ -250,6 +350,7 @@ bool MainWindow::saveProject()
 bool MainWindow::saveProjectAs(const QString& path)
 {
     if (!project_) return false;
+    storeLayout();
     waitForLoads();
     std::shared_ptr<Project> project = project_;
     setBusy(true);
@@ -263,6 +364,7 @@ bool MainWindow::saveProjectAs(const QString& path)
         return false;
     }
     project_->setModified(false);
+    afterSave();
     RecentProjects::add(project_->path());
     updateTitle();
     details_->setHtml(ItemDescription::projectHtml(*project_));
@@ -338,6 +440,8 @@ bool MainWindow::maybeSaveChanges()
         tr("The project %1 has unsaved changes. Save them?").arg(QFileInfo(project_->path()).completeBaseName()),
         QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
     if (answer == QMessageBox::Save) return saveProject();
+    // Discarded on purpose: the journal must not offer the edits again.
+    if (answer == QMessageBox::Discard) annotationEditor_->journal().discard();
     return answer == QMessageBox::Discard;
 }
 
@@ -437,11 +541,14 @@ void MainWindow::updateTitle()
 void MainWindow::setBusy(bool busy)
 {
     busy_ = busy;
+    annotationEditor_->setLocked(busy);
     menuBar()->setEnabled(!busy);
     centralWidget()->setEnabled(!busy);
     for (QDockWidget* dock : findChildren<QDockWidget*>()) dock->setEnabled(!busy);
-    for (QAction* action : {newAction_, openAction_, saveAction_, saveAsAction_, importAction_, quitAction_})
+    for (QAction* action : {newAction_, openAction_, saveAction_, saveAsAction_, importAction_, quitAction_,
+                            runProcessorAction_})
         action->setEnabled(!busy);
+    for (QAction* action : toolActions_) action->setEnabled(!busy);
     if (!busy) updateActions();
 }
 
@@ -451,6 +558,9 @@ void MainWindow::updateActions()
     saveAction_->setEnabled(open);
     saveAsAction_->setEnabled(open);
     importAction_->setEnabled(open);
+    runProcessorAction_->setEnabled(open);
+    // Tools work on a project; they are offered once one is open.
+    for (QAction* action : toolActions_) action->setEnabled(open);
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)
@@ -523,18 +633,18 @@ QString MainWindow::firstPositionStream() const
 
 void MainWindow::waitForLoads()
 {
+    for (const ExtraPanel& extra : extraPanels_) extra.panel->waitForLoad();
     timeSeries_->waitForLoad();
     trajectory_->waitForLoad();
 }
 
 void MainWindow::waitForPlots()
 {
-    timeSeries_->waitForLoad();
-    trajectory_->waitForLoad();
+    waitForLoads();
     // Layout first (plot widths decide the decimation), then draw synchronously.
     for (int i = 0; i < 3; ++i) {
         QCoreApplication::processEvents();
-        timeSeries_->plot()->replot(QCustomPlot::rpImmediateRefresh);
+        for (TimeSeriesPanel* panel : timeSeriesPanels()) panel->plot()->replot(QCustomPlot::rpImmediateRefresh);
         trajectory_->plot()->replot(QCustomPlot::rpImmediateRefresh);
     }
 }
@@ -568,7 +678,11 @@ void MainWindow::plotItem(const QString& path)
 {
     std::shared_ptr<const Stream> stream = sharedStream(path);
     if (!stream) return;
-    if (timeSeries_->stream() != stream.get()) timeSeries_->setStream(stream, path);
+    if (timeSeries_->stream() != stream.get()) {
+        timeSeries_->setStream(stream, path);
+        annotationLayer_->setRecording(ItemPath::parse(path).recording);
+        annotationPanel_->refresh();
+    }
     if (TrajectoryPanel::isPositionStream(stream->info()) && trajectory_->stream() != stream.get())
         trajectory_->setStream(stream, path);
 }
@@ -588,6 +702,369 @@ void MainWindow::showDetails(const QString& path)
     } else if (const Recording* recording = project_->recording(path)) {
         details_->setHtml(ItemDescription::recordingHtml(*recording));
     }
+}
+
+// --- workspace: processors and tools ----------------------------------------------------------
+
+void MainWindow::createToolMenus(QMenu* processing, QMenu* view)
+{
+    // Menus appear in the order tools first name them, between Processing and Help.
+    std::vector<std::pair<QString, QMenu*>> menus{{QStringLiteral("Processing"), processing},
+                                                  {QStringLiteral("View"), view}};
+    QList<QMenu*> separated;
+    for (const ToolEntry& entry : registeredTools()) {
+        const QString menuName = QString::fromUtf8(entry.menu ? entry.menu : "Processing");
+        auto it = std::find_if(menus.begin(), menus.end(), [&](const auto& m) { return m.first == menuName; });
+        QMenu* menu = nullptr;
+        if (it == menus.end()) {
+            menu = menuBar()->addMenu(QCoreApplication::translate("Tools", entry.menu));
+            menus.emplace_back(menuName, menu);
+        } else {
+            menu = it->second;
+        }
+        if ((menu == processing || menu == view) && !separated.contains(menu)) {
+            menu->addSeparator();
+            separated << menu;
+        }
+        QAction* action = menu->addAction(QCoreApplication::translate("Tools", entry.text));
+        action->setData(entry.id);
+        action->setObjectName(entry.id);
+        const auto launch = entry.launch;
+        connect(action, &QAction::triggered, this, [this, launch] {
+            if (launch && !busy_) launch(*this);
+        });
+        toolActions_ << action;
+    }
+}
+
+QAction* MainWindow::toolAction(const QString& id) const
+{
+    for (QAction* action : toolActions_)
+        if (action->data().toString() == id) return action;
+    return nullptr;
+}
+
+Expected<RunOutcome> MainWindow::runProcessor(const RunRequest& request)
+{
+    if (!project_) return makeError(tr("Open a project first."));
+    if (busy_) return makeError(tr("Another job is still running."));
+    const auto processor = ProcessorRegistry::instance().find(request.processorId);
+    if (!processor) return makeError(tr("Unknown processor '%1'.").arg(request.processorId));
+
+    // The runner reads the inputs and finally inserts the outputs on the worker. Panel loads
+    // must not read concurrently, and a panel must not show a stream that is about to be
+    // replaced in place (re-running into the same output).
+    waitForLoads();
+    const auto replaced = [&](const Stream* shown) {
+        if (!shown) return false;
+        for (const QString& path : project_->streamPaths())
+            if (project_->stream(path) == shown
+                && (path == request.output || path.startsWith(request.output + QLatin1Char('-'))))
+                return true;
+        return false;
+    };
+    if (replaced(timeSeries_->stream())) timeSeries_->clear();
+    if (replaced(trajectory_->stream())) trajectory_->clear();
+
+    std::shared_ptr<Project> project = project_;
+    auto result = std::make_shared<std::optional<Expected<RunOutcome>>>();
+    setBusy(true);
+    const BackgroundTask::Outcome outcome = BackgroundTask::run(
+        this, tr("Running %1…").arg(processor->name()),
+        [project, processor, request, result](const Progress& progress) -> Status {
+            *result = athlos::runProcessor(*project, *processor, request, progress);
+            if (!result->value()) return result->value().error();
+            return {};
+        },
+        interactive_);
+    setBusy(false);
+    if (outcome.cancelled && !outcome.status) {
+        statusBar()->showMessage(tr("%1 cancelled; the project is unchanged.").arg(processor->name()), 5000);
+        return makeError(tr("Cancelled; the project is unchanged."));
+    }
+    if (!result->has_value()) return makeError(outcome.status ? tr("The processor did not run.") : outcome.status.message());
+    Expected<RunOutcome> run = std::move(**result);
+    if (!run) return run;
+    project_->setModified(true);
+    projectModified();
+    if (!run->written.isEmpty()) selectItem(run->written.front());
+    statusBar()->showMessage(tr("%1 wrote %2").arg(processor->name(), run->written.join(QStringLiteral(", "))), 8000);
+    return run;
+}
+
+void MainWindow::projectModified()
+{
+    if (!project_) return;
+    const QString current = currentItem();
+    treeModel_->refresh();
+    tree_->expandAll();
+    for (int c = 0; c < ProjectTreeModel::ColumnsColumn; ++c) tree_->resizeColumnToContents(c);
+    if (!current.isEmpty()) selectItem(current);
+    updateTitle();
+    emit projectChanged();
+}
+
+void MainWindow::showItem(const QString& path)
+{
+    if (!selectItem(path)) return;
+    const Stream* stream = project_ ? project_->stream(path) : nullptr;
+    if (stream && TrajectoryPanel::isPositionStream(stream->info()) && tabs_->currentWidget() == trajectory_) return;
+    if (stream) showTimeSeriesView();
+}
+
+RunRequest MainWindow::rerunRequest(const QString& path) const
+{
+    if (!project_) return {};
+    const Provenance* provenance = nullptr;
+    if (const Stream* stream = project_->stream(path)) provenance = &stream->info().provenance;
+    else if (const Table* table = project_->table(path)) provenance = &table->provenance;
+    if (!provenance || !ItemDescription::isResult(*provenance)) return {};
+    RunRequest request;
+    request.processorId = provenance->processorId;
+    for (const ProvenanceInput& input : provenance->inputs) request.inputs << input.name;
+    request.parameters = provenance->parameters.toVariantMap();
+    request.output = path;
+    return request;
+}
+
+void MainWindow::openProcessorDialog(const RunRequest& prefill)
+{
+    if (!project_ || busy_) return;
+    ProcessorDialog dialog(*this, this);
+    if (!prefill.processorId.isEmpty() && !dialog.setRequest(prefill)) {
+        showError(tr("Re-run"), tr("The processor '%1' is not available (is its plugin installed?).")
+                                    .arg(prefill.processorId));
+        return;
+    }
+    dialog.exec();
+}
+
+void MainWindow::showTreeContextMenu(const QPoint& pos)
+{
+    if (!project_ || busy_) return;
+    const QString path = treeModel_->pathOf(tree_->indexAt(pos));
+    QMenu menu(this);
+    const RunRequest rerun = rerunRequest(path);
+    if (!rerun.processorId.isEmpty()) {
+        menu.addAction(tr("Re-run with Changed Parameters…"), this, [this, rerun] { openProcessorDialog(rerun); });
+        menu.addSeparator();
+    }
+    menu.addAction(runProcessorAction_);
+    menu.exec(tree_->viewport()->mapToGlobal(pos));
+}
+
+// --- time panels and layout -------------------------------------------------------------------
+
+namespace {
+const QString kLayoutKey = QStringLiteral("ui_layout");
+const QString kPanelsKey = QStringLiteral("ui_panels");
+}  // namespace
+
+QList<TimeSeriesPanel*> MainWindow::timeSeriesPanels() const
+{
+    QList<TimeSeriesPanel*> panels{timeSeries_};
+    for (const ExtraPanel& extra : extraPanels_) panels << extra.panel;
+    return panels;
+}
+
+TimeSeriesPanel* MainWindow::addTimeSeriesPanel(const QString& path)
+{
+    std::shared_ptr<const Stream> stream = sharedStream(path);
+    if (!stream) return nullptr;
+    ExtraPanel extra;
+    extra.path = path;
+    extra.dock = new QDockWidget(path, this);
+    // Stable names: saveState/restoreState match docks by object name.
+    extra.dock->setObjectName(QStringLiteral("timeSeriesDock%1").arg(nextPanelNumber_++));
+    extra.dock->setAttribute(Qt::WA_DeleteOnClose);
+    extra.panel = new TimeSeriesPanel(extra.dock);
+    extra.panel->setTimeController(timeController_);
+    addExportMenu(extra.panel->plot());
+    extra.dock->setWidget(extra.panel);
+    addDockWidget(Qt::BottomDockWidgetArea, extra.dock);
+    connect(extra.panel, &TimeSeriesPanel::loaded, this, &MainWindow::updateTimeBounds);
+    QDockWidget* dock = extra.dock;
+    connect(dock, &QObject::destroyed, this, [this, dock] {
+        extraPanels_.removeIf([dock](const ExtraPanel& e) { return e.dock == dock; });
+    });
+    extra.panel->setStream(std::move(stream), path);
+    extraPanels_ << extra;
+    return extra.panel;
+}
+
+void MainWindow::removeExtraPanels()
+{
+    const QList<ExtraPanel> panels = extraPanels_;
+    extraPanels_.clear();
+    for (const ExtraPanel& extra : panels) {
+        extra.panel->waitForLoad();
+        extra.panel->clear();
+        removeDockWidget(extra.dock);
+        delete extra.dock;
+    }
+    nextPanelNumber_ = 1;
+}
+
+void MainWindow::updateTimeBounds()
+{
+    double begin = std::numeric_limits<double>::infinity(), end = -begin, step = 0;
+    for (TimeSeriesPanel* panel : timeSeriesPanels()) {
+        const StreamData* data = panel->data();
+        if (!data || data->rows() == 0) continue;
+        begin = std::min(begin, data->t.front());
+        end = std::max(end, data->t.back());
+        if (panel == timeSeries_ || step == 0) step = data->medianInterval();
+    }
+    if (!(begin <= end)) return;
+    // The view the panel chose (its full range) survives the reset of the bounds.
+    const double viewBegin = timeSeries_->data() ? timeController_->visibleBegin() : begin;
+    const double viewEnd = timeSeries_->data() ? timeController_->visibleEnd() : end;
+    timeController_->setBounds(begin, end);
+    if (step > 0) timeController_->setStep(step);
+    timeController_->setVisibleRange(viewBegin, viewEnd);
+}
+
+void MainWindow::storeLayout()
+{
+    if (!project_) return;
+    QJsonArray panels;
+    for (const ExtraPanel& extra : extraPanels_)
+        panels.append(QJsonObject{{QStringLiteral("name"), extra.dock->objectName()},
+                                  {QStringLiteral("stream"), extra.path}});
+    QJsonObject& meta = project_->meta().extra;
+    meta[kPanelsKey] = panels;
+    meta[kLayoutKey] = QString::fromLatin1(saveState().toBase64());
+}
+
+void MainWindow::restoreLayout()
+{
+    if (!project_) return;
+    const QJsonObject& meta = project_->meta().extra;
+    int highest = 0;
+    for (const QJsonValue& value : meta.value(kPanelsKey).toArray()) {
+        const QJsonObject panel = value.toObject();
+        const QString name = panel.value(QStringLiteral("name")).toString();
+        bool ok = false;
+        const int number = name.mid(QStringLiteral("timeSeriesDock").size()).toInt(&ok);
+        if (!ok) continue;
+        nextPanelNumber_ = number;  // reuse the saved name so restoreState finds the dock
+        if (addTimeSeriesPanel(panel.value(QStringLiteral("stream")).toString())) highest = std::max(highest, number);
+    }
+    nextPanelNumber_ = highest + 1;
+    const QByteArray state = QByteArray::fromBase64(meta.value(kLayoutKey).toString().toLatin1());
+    if (!state.isEmpty()) restoreState(state);
+}
+
+// --- annotation ---------------------------------------------------------------------------------
+
+void MainWindow::createAnnotationTool()
+{
+    annotationEditor_ = new AnnotationEditor(this);
+    annotationLayer_ = new AnnotationLayer(timeSeries_, annotationEditor_);
+    annotationPanel_ = new AnnotationPanel(annotationEditor_, annotationLayer_, this);
+    annotationDock_ = new QDockWidget(tr("Annotations"), this);
+    annotationDock_->setObjectName(QStringLiteral("annotationDock"));
+    annotationDock_->setWidget(annotationPanel_);
+    addDockWidget(Qt::RightDockWidgetArea, annotationDock_);
+    annotationDock_->hide();
+
+    autosaveTimer_ = new QTimer(this);
+    autosaveTimer_->setSingleShot(true);
+    autosaveTimer_->setInterval(QSettings().value(QStringLiteral("annotation/autosave_seconds"), 30).toInt() * 1000);
+    connect(autosaveTimer_, &QTimer::timeout, this, [this] { autosave(); });
+    connect(annotationEditor_, &AnnotationEditor::annotationsChanged, this, [this] {
+        updateTitle();
+        // Idle autosave: every edit postpones it.
+        if (autosaveTimer_->interval() > 0) autosaveTimer_->start();
+    });
+    connect(annotationEditor_, &AnnotationEditor::classesChanged, this, &MainWindow::updateTitle);
+    connect(annotationEditor_, &AnnotationEditor::errorOccurred, this, [this](const QString& message) {
+        statusBar()->showMessage(message, 8000);
+        emit errorReported(message);
+    });
+}
+
+void MainWindow::showAnnotationPanel()
+{
+    annotationDock_->show();
+    annotationDock_->raise();
+}
+
+void MainWindow::setAutosaveDelay(int milliseconds)
+{
+    autosaveTimer_->stop();
+    autosaveTimer_->setInterval(std::max(0, milliseconds));
+}
+
+bool MainWindow::autosave()
+{
+    if (!project_ || busy_ || !project_->isModified()) return false;
+    waitForLoads();
+    std::shared_ptr<Project> project = project_;
+    // Not setBusy(): the window stays usable; only commands that change the project wait.
+    busy_ = true;
+    annotationEditor_->setLocked(true);
+    const BackgroundTask::Outcome outcome = BackgroundTask::run(
+        this, tr("Saving…"), [project](const Progress& progress) { return project->save(progress); }, false);
+    busy_ = false;
+    annotationEditor_->setLocked(false);
+    if (!outcome.status) {
+        statusBar()->showMessage(tr("Autosave failed: %1 (the journal keeps your edits)").arg(outcome.status.message()), 8000);
+        return false;
+    }
+    project_->setModified(false);
+    afterSave();
+    updateTitle();
+    statusBar()->showMessage(tr("Autosaved"), 3000);
+    return true;
+}
+
+void MainWindow::afterSave()
+{
+    // The file now has every edit; a new journal starts (at the new path after Save As).
+    annotationEditor_->journal().discard();
+    annotationEditor_->journal().setProjectPath(project_->path());
+}
+
+void MainWindow::recoverJournal()
+{
+    if (!project_ || !AnnotationJournal::hasPendingEdits(project_->path())) return;
+    if (interactive_) {
+        const auto answer = QMessageBox::question(
+            this, tr("Recover annotations"),
+            tr("%1 has annotation edits that were not saved (the program ended unexpectedly). Recover them?")
+                .arg(QFileInfo(project_->path()).fileName()),
+            QMessageBox::Yes | QMessageBox::Discard, QMessageBox::Yes);
+        if (answer != QMessageBox::Yes) {
+            annotationEditor_->journal().discard();
+            return;
+        }
+    }
+    auto replayed = AnnotationJournal::replay(*project_);
+    if (!replayed) {
+        showError(tr("Could not recover annotations"), replayed.message());
+        return;
+    }
+    // The journal stays until the next save: the file still lacks these edits.
+    annotationEditor_->setProject(project_.get());
+    annotationLayer_->rebuild();
+    annotationPanel_->refresh();
+    updateTitle();
+    statusBar()->showMessage(tr("Annotation edits recovered from the journal: %1").arg(*replayed), 8000);
+}
+
+void MainWindow::addExportMenu(QCustomPlot* plot)
+{
+    plot->setContextMenuPolicy(Qt::CustomContextMenu);
+    connect(plot, &QWidget::customContextMenuRequested, this, [this, plot](const QPoint& pos) {
+        QMenu menu(this);
+        menu.addAction(tr("Export View…"), this, [this, plot] {
+            const QString written = PlotExporter::exportDialog(plot, this);
+            if (!written.isEmpty()) statusBar()->showMessage(tr("Exported %1").arg(QDir::toNativeSeparators(written)), 5000);
+        });
+        menu.addAction(showAllAction_);
+        menu.exec(plot->mapToGlobal(pos));
+    });
 }
 
 }  // namespace athlos::ui

@@ -2,15 +2,21 @@
 // The main window: project tree and details on the left, time-series and trajectory panels in
 // the centre. A thin shell: every change to the project goes through core (Project, importFile,
 // applyImport, save), long jobs run on worker threads.
+#include "ui/Workspace.h"
+
+#include <QList>
 #include <QMainWindow>
 #include <QString>
 #include <QStringList>
 #include <memory>
 
 class QAction;
+class QCustomPlot;
+class QDockWidget;
 class QMenu;
 class QModelIndex;
 class QTabWidget;
+class QTimer;
 class QTextBrowser;
 class QTreeView;
 
@@ -21,11 +27,15 @@ class Stream;
 
 namespace athlos::ui {
 
+class AnnotationEditor;
+class AnnotationLayer;
+class AnnotationPanel;
 class ProjectTreeModel;
+class TimeController;
 class TimeSeriesPanel;
 class TrajectoryPanel;
 
-class MainWindow : public QMainWindow {
+class MainWindow : public QMainWindow, public Workspace {
     Q_OBJECT
 
 public:
@@ -38,6 +48,23 @@ public:
     bool isInteractive() const { return interactive_; }
 
     Project* project() const { return project_.get(); }
+
+    // Workspace ------------------------------------------------------------------------
+    Project* project() override { return project_.get(); }
+    using QWidget::window;
+    QWidget* window() override { return this; }
+    // The window takes no input while the processor runs (the worker mutates the project).
+    Expected<RunOutcome> runProcessor(const RunRequest& request) override;
+    void projectModified() override;
+    void showItem(const QString& path) override;
+
+    // Processing → Run processor…, optionally pre-filled (re-run from provenance).
+    void openProcessorDialog(const RunRequest& prefill = {});
+    // The request that produced the result at path (processor, inputs, parameters, output),
+    // or an empty request if path is not a processor result.
+    RunRequest rerunRequest(const QString& path) const;
+    // The menu action of a registered tool (by ToolEntry::id), for tests.
+    QAction* toolAction(const QString& id) const;
     // Replaces the current project without asking about unsaved changes.
     void setProject(std::shared_ptr<Project> project);
 
@@ -61,6 +88,27 @@ public:
     // Blocks until both panels finished loading and lays out and replots them.
     void waitForPlots();
 
+    // The one time cursor every time panel follows.
+    TimeController* timeController() const { return timeController_; }
+    // Another time-series panel in a dock, linked to the cursor, plotting path ("rec/stream").
+    TimeSeriesPanel* addTimeSeriesPanel(const QString& path);
+    // The central panel first, then the docked ones.
+    QList<TimeSeriesPanel*> timeSeriesPanels() const;
+    // The window layout (docks, their streams) goes into the project's metadata on save and
+    // is restored on open, so every project reopens as it was left.
+    void storeLayout();
+    void restoreLayout();
+
+    // Annotation tool on the main time-series panel.
+    AnnotationEditor* annotationEditor() const { return annotationEditor_; }
+    AnnotationLayer* annotationLayer() const { return annotationLayer_; }
+    AnnotationPanel* annotationPanel() const { return annotationPanel_; }
+    void showAnnotationPanel();
+    // Idle time after an edit before the project is saved in the background (0 = never).
+    void setAutosaveDelay(int milliseconds);
+    // Saves without dialog and without taking input away; annotation edits wait meanwhile.
+    bool autosave();
+
     TimeSeriesPanel* timeSeriesPanel() const { return timeSeries_; }
     TrajectoryPanel* trajectoryPanel() const { return trajectory_; }
     ProjectTreeModel* treeModel() const { return treeModel_; }
@@ -80,6 +128,15 @@ private:
     void createActions();
     void createMenus();
     void createDocks();
+    void createToolMenus(QMenu* processing, QMenu* view);
+    void removeExtraPanels();
+    void addExportMenu(QCustomPlot* plot);
+    void createAnnotationTool();
+    // Offers (interactive) or applies (tests, offscreen) the crash journal of a just opened project.
+    void recoverJournal();
+    void afterSave();
+    void updateTimeBounds();
+    void showTreeContextMenu(const QPoint& pos);
     void updateTitle();
     void updateActions();
     void rebuildRecentMenu();
@@ -111,6 +168,19 @@ private:
     QTabWidget* tabs_ = nullptr;
     TimeSeriesPanel* timeSeries_ = nullptr;
     TrajectoryPanel* trajectory_ = nullptr;
+    TimeController* timeController_ = nullptr;
+    struct ExtraPanel {
+        QDockWidget* dock = nullptr;
+        TimeSeriesPanel* panel = nullptr;
+        QString path;
+    };
+    QList<ExtraPanel> extraPanels_;
+    AnnotationEditor* annotationEditor_ = nullptr;
+    AnnotationLayer* annotationLayer_ = nullptr;
+    AnnotationPanel* annotationPanel_ = nullptr;
+    QDockWidget* annotationDock_ = nullptr;
+    QTimer* autosaveTimer_ = nullptr;
+    int nextPanelNumber_ = 1;
 
     QMenu* recentMenu_ = nullptr;
     QAction* newAction_ = nullptr;
@@ -120,6 +190,16 @@ private:
     QAction* importAction_ = nullptr;
     QAction* quitAction_ = nullptr;
     QAction* aboutAction_ = nullptr;
+    QAction* runProcessorAction_ = nullptr;
+    QAction* addPanelAction_ = nullptr;
+    QAction* showAllAction_ = nullptr;
+    QAction* exportViewAction_ = nullptr;
+    QAction* undoAction_ = nullptr;
+    QAction* redoAction_ = nullptr;
+    QAction* annotateModeAction_ = nullptr;
+    QAction* addClassAction_ = nullptr;
+    QAction* preferencesAction_ = nullptr;
+    QList<QAction*> toolActions_;
 };
 
 }  // namespace athlos::ui

@@ -1,10 +1,33 @@
 #include "ui/PlotStyle.h"
 
+#include <QEvent>
+#include <QPalette>
 #include <qcustomplot.h>
 
 #include <array>
 
 namespace athlos::ui {
+
+namespace {
+// Re-styles its plot when the palette changes (system switches between light and dark).
+class PaletteFollower : public QObject {
+public:
+    explicit PaletteFollower(QCustomPlot* plot) : QObject(plot), plot_(plot) { plot->installEventFilter(this); }
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override
+    {
+        if (watched == plot_ && (event->type() == QEvent::PaletteChange || event->type() == QEvent::ApplicationPaletteChange)) {
+            PlotStyle::applyPalette(plot_, plot_->palette());
+            plot_->replot(QCustomPlot::rpQueuedReplot);
+        }
+        return QObject::eventFilter(watched, event);
+    }
+
+private:
+    QCustomPlot* plot_;
+};
+}  // namespace
 
 QColor PlotStyle::seriesColor(int index)
 {
@@ -29,7 +52,6 @@ QString PlotStyle::columnLabel(const QString& name, const QString& unit)
 
 void PlotStyle::apply(QCustomPlot* plot)
 {
-    plot->setBackground(Qt::white);
     // Antialiasing while dragging costs more than it is worth; the still image is smooth again.
     plot->setNoAntialiasingOnDrag(true);
     plot->setPlottingHint(QCP::phCacheLabels, true);
@@ -38,12 +60,30 @@ void PlotStyle::apply(QCustomPlot* plot)
     QFont legendFont = plot->font();
     legendFont.setPointSizeF(legendFont.pointSizeF() * 0.9);
     plot->legend->setFont(legendFont);
-    plot->legend->setBrush(QColor(255, 255, 255, 210));
-    plot->legend->setBorderPen(QPen(QColor(180, 180, 180)));
     plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
-    for (QCPAxis* axis : {plot->xAxis, plot->yAxis}) {
-        axis->grid()->setSubGridVisible(false);
-        axis->grid()->setPen(QPen(QColor(220, 220, 220), 0, Qt::DotLine));
+    for (QCPAxis* axis : {plot->xAxis, plot->yAxis}) axis->grid()->setSubGridVisible(false);
+    applyPalette(plot, plot->palette());
+    new PaletteFollower(plot);
+}
+
+void PlotStyle::applyPalette(QCustomPlot* plot, const QPalette& palette)
+{
+    const QColor base = palette.color(QPalette::Base);
+    const QColor text = palette.color(QPalette::Text);
+    const bool dark = base.lightnessF() < 0.5;
+    plot->setBackground(base);
+    QColor legend = base;
+    legend.setAlpha(210);
+    plot->legend->setBrush(legend);
+    plot->legend->setTextColor(text);
+    plot->legend->setBorderPen(QPen(dark ? base.lighter(250) : QColor(180, 180, 180)));
+    for (QCPAxis* axis : plot->axisRect()->axes()) {
+        axis->setBasePen(QPen(text, 0));
+        axis->setTickPen(QPen(text, 0));
+        axis->setSubTickPen(QPen(text, 0));
+        axis->setTickLabelColor(text);
+        axis->setLabelColor(text);
+        axis->grid()->setPen(QPen(dark ? base.lighter(220) : QColor(220, 220, 220), 0, Qt::DotLine));
     }
 }
 

@@ -4,6 +4,7 @@
 #include <QString>
 
 class QCustomPlot;
+class QPalette;
 
 namespace athlos::ui {
 
@@ -17,6 +18,9 @@ public:
     static QString unitSuffix(const QString& unit);
     // Fonts, legend and interaction defaults for a fresh plot.
     static void apply(QCustomPlot* plot);
+    // Background, text, axes and grid from the palette (light or dark system theme); apply()
+    // uses the plot's palette, panels call this again on a palette change.
+    static void applyPalette(QCustomPlot* plot, const QPalette& palette);
 };
 
 }  // namespace athlos::ui

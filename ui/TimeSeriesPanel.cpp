@@ -2,11 +2,15 @@
 
 #include "core/model/Stream.h"
 #include "ui/PlotStyle.h"
+#include "ui/RangeStatistics.h"
+#include "ui/TimeController.h"
 
 #include <QCheckBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMenu>
+#include <QMouseEvent>
+#include <QTimer>
 #include <QToolButton>
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
@@ -50,6 +54,10 @@ TimeSeriesPanel::TimeSeriesPanel(QWidget* parent) : QWidget(parent)
 
     plot_ = new QCustomPlot(this);
     PlotStyle::apply(plot_);
+    // Clicking the plot focuses the panel, so the transport keys reach it.
+    setFocusPolicy(Qt::StrongFocus);
+    plot_->setFocusPolicy(Qt::ClickFocus);
+    plot_->setFocusProxy(this);
     plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     plot_->axisRect()->setRangeZoom(Qt::Horizontal);
     plot_->axisRect()->setRangeDrag(Qt::Horizontal);
@@ -58,7 +66,33 @@ TimeSeriesPanel::TimeSeriesPanel(QWidget* parent) : QWidget(parent)
     connect(plot_->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this,
             &TimeSeriesPanel::onXRangeChanged);
     connect(plot_, &QCustomPlot::afterLayout, this, &TimeSeriesPanel::onAfterLayout);
+    connect(plot_, &QCustomPlot::afterReplot, this, [this] { replotted_ = true; });
     connect(plot_, &QCustomPlot::mouseDoubleClick, this, [this] { showFullRange(); });
+    connect(plot_, &QCustomPlot::mousePress, this, [this](QMouseEvent* event) {
+        pressPos_ = event->pos();
+        // Ctrl+drag: zoom to the dragged time span (all linked panels follow the x range).
+        plot_->setSelectionRectMode(event->modifiers() & Qt::ControlModifier ? QCP::srmZoom : QCP::srmNone);
+    });
+    connect(plot_, &QCustomPlot::mouseRelease, this, &TimeSeriesPanel::onPlotClicked);
+
+    // The cursor lives on its own buffered layer so moving it does not redraw 10^7-sample graphs.
+    plot_->layer(QStringLiteral("overlay"))->setMode(QCPLayer::lmBuffered);
+    cursorLine_ = new QCPItemStraightLine(plot_);
+    cursorLine_->setPen(QPen(QColor(0xd5, 0x5e, 0x00), 1.5));
+    cursorLine_->setSelectable(false);
+    cursorLine_->setVisible(false);
+    cursorLine_->setLayer(QStringLiteral("overlay"));
+
+    readout_ = new QLabel(this);
+    readout_->setTextFormat(Qt::RichText);
+    readout_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    readout_->setContentsMargins(6, 0, 6, 4);
+    readout_->setVisible(false);
+    // Statistics walk every visible sample: computed once the range settles, not per drag step.
+    readoutTimer_ = new QTimer(this);
+    readoutTimer_->setSingleShot(true);
+    readoutTimer_->setInterval(60);
+    connect(readoutTimer_, &QTimer::timeout, this, &TimeSeriesPanel::updateReadout);
 
     auto* header = new QHBoxLayout;
     header->setContentsMargins(6, 4, 6, 0);
@@ -71,6 +105,7 @@ TimeSeriesPanel::TimeSeriesPanel(QWidget* parent) : QWidget(parent)
     layout->setSpacing(2);
     layout->addLayout(header);
     layout->addWidget(plot_, 1);
+    layout->addWidget(readout_);
 
     connect(&watcher_, &QFutureWatcher<std::shared_ptr<Loaded>>::finished, this, &TimeSeriesPanel::applyLoaded);
     updateHeader();
@@ -120,6 +155,8 @@ void TimeSeriesPanel::clear()
     plot_->clearGraphs();
     plot_->legend->setVisible(false);
     plot_->yAxis->setLabel({});
+    readout_->clear();
+    readout_->setVisible(false);
     rebuildColumnMenu();
     updateHeader();
     plot_->replot(QCustomPlot::rpQueuedReplot);
@@ -162,6 +199,7 @@ void TimeSeriesPanel::applyLoaded()
     rebuildGraphs();
     updateHeader();
     showFullRange();
+    updateReadout();
     emit loaded();
 }
 
@@ -318,9 +356,11 @@ void TimeSeriesPanel::fitY(const Extremes& extremes)
     plot_->yAxis->setRange(lo - pad, hi + pad);
 }
 
-void TimeSeriesPanel::onXRangeChanged(const QCPRange&)
+void TimeSeriesPanel::onXRangeChanged(const QCPRange& range)
 {
     redecimate();
+    if (controller_ && !followingController_) controller_->setVisibleRange(range.lower, range.upper);
+    if (controller_) readoutTimer_->start();
     // Drag and wheel replot on their own; programmatic changes need the request. Queued
     // replots coalesce, so asking twice costs nothing.
     plot_->replot(QCustomPlot::rpQueuedReplot);
@@ -341,6 +381,102 @@ long long TimeSeriesPanel::plottedPointCount() const
     long long n = 0;
     for (int g = 0; g < plot_->graphCount(); ++g) n += plot_->graph(g)->dataCount();
     return n;
+}
+
+// --- time cursor ------------------------------------------------------------------------------
+
+void TimeSeriesPanel::setTimeController(TimeController* controller)
+{
+    if (controller_) disconnect(controller_, nullptr, this, nullptr);
+    controller_ = controller;
+    cursorLine_->setVisible(controller_ != nullptr);
+    readout_->setVisible(controller_ != nullptr && loaded_);
+    if (!controller_) return;
+    connect(controller_, &TimeController::cursorChanged, this, &TimeSeriesPanel::onCursorChanged);
+    connect(controller_, &TimeController::visibleRangeChanged, this, &TimeSeriesPanel::onControllerRange);
+    connect(controller_, &QObject::destroyed, this, [this] { controller_ = nullptr; });
+    onCursorChanged(controller_->cursor());
+}
+
+void TimeSeriesPanel::onCursorChanged(double t)
+{
+    cursorLine_->point1->setCoords(t, 0);
+    cursorLine_->point2->setCoords(t, 1);
+    // Only the cursor line changes: the overlay layer repaints without redrawing the graphs.
+    // Its paint buffer exists only after the first full replot.
+    if (replotted_) plot_->layer(QStringLiteral("overlay"))->replot();
+    else plot_->replot(QCustomPlot::rpQueuedReplot);
+    updateReadout();
+}
+
+void TimeSeriesPanel::onControllerRange(double begin, double end)
+{
+    const QCPRange current = plot_->xAxis->range();
+    if (current.lower == begin && current.upper == end) return;
+    followingController_ = true;
+    plot_->xAxis->setRange(begin, end);
+    followingController_ = false;
+}
+
+void TimeSeriesPanel::onPlotClicked(QMouseEvent* event)
+{
+    // A click (not the end of a drag) puts the cursor there.
+    if (!controller_ || event->button() != Qt::LeftButton || event->modifiers() != Qt::NoModifier) return;
+    if ((event->pos() - pressPos_).manhattanLength() > 3) return;
+    if (!plot_->axisRect()->rect().contains(event->pos())) return;
+    controller_->setCursor(plot_->xAxis->pixelToCoord(event->pos().x()));
+}
+
+void TimeSeriesPanel::keyPressEvent(QKeyEvent* event)
+{
+    if (controller_ && controller_->handleKey(event)) return;
+    QWidget::keyPressEvent(event);
+}
+
+const StreamData* TimeSeriesPanel::data() const
+{
+    return loaded_ ? loaded_->data.get() : nullptr;
+}
+
+QString TimeSeriesPanel::readoutText() const
+{
+    return readout_->text();
+}
+
+void TimeSeriesPanel::updateReadout()
+{
+    readoutTimer_->stop();
+    if (!controller_ || !loaded_ || visible_.empty()) {
+        readout_->setVisible(false);
+        return;
+    }
+    const StreamData& data = *loaded_->data;
+    const QCPRange range = plot_->xAxis->range();
+    const double t = controller_->cursor();
+    const QLocale locale;
+    auto number = [&](double v) { return std::isfinite(v) ? locale.toString(v, 'g', 5) : QStringLiteral("–"); };
+    QString html = QStringLiteral("<table cellspacing=0 cellpadding=1><tr><th align=left>%1</th>"
+                                  "<th align=right>&nbsp;%2&nbsp;</th><th align=right>&nbsp;%3&nbsp;</th>"
+                                  "<th align=right>&nbsp;%4&nbsp;</th><th align=right>&nbsp;%5&nbsp;</th>"
+                                  "<th align=right>&nbsp;%6</th></tr>")
+                       .arg(tr("t = %1 s").arg(number(t)), tr("at cursor"), tr("mean"), tr("SD"), tr("min"), tr("max"));
+    const Columns& cols = stream_->info().columns;
+    for (int c : visible_) {
+        const Column& column = cols[std::size_t(c)];
+        const RangeStatistics stats = RangeStatistics::compute(data, c, range.lower, range.upper);
+        html += QStringLiteral("<tr><td><font color='%1'>&#9632;</font> %2</td><td align=right>%3</td>"
+                               "<td align=right>%4</td><td align=right>%5</td><td align=right>%6</td>"
+                               "<td align=right>%7</td></tr>")
+                    .arg(PlotStyle::seriesColor(c).name(), PlotStyle::columnLabel(column.name, column.unit).toHtmlEscaped(),
+                         number(RangeStatistics::valueAt(data, c, t)),
+                         stats.count ? number(stats.mean) : QStringLiteral("–"),
+                         stats.count ? number(stats.sd) : QStringLiteral("–"),
+                         stats.count ? number(stats.min) : QStringLiteral("–"),
+                         stats.count ? number(stats.max) : QStringLiteral("–"));
+    }
+    html += QStringLiteral("</table>");
+    readout_->setText(html);
+    readout_->setVisible(true);
 }
 
 }  // namespace athlos::ui

@@ -12,10 +12,14 @@
 #include <vector>
 
 class QCheckBox;
+class QCPItemStraightLine;
 class QCPRange;
 class QCustomPlot;
 class QLabel;
 class QMenu;
+class QKeyEvent;
+class QMouseEvent;
+class QTimer;
 class QToolButton;
 
 namespace athlos {
@@ -23,6 +27,8 @@ class Stream;
 }
 
 namespace athlos::ui {
+
+class TimeController;
 
 class TimeSeriesPanel : public QWidget {
     Q_OBJECT
@@ -52,6 +58,17 @@ public:
     void waitForLoad();
     QString errorString() const { return error_; }
 
+    // Follows the window's time cursor: x range linked both ways, a cursor line, click sets
+    // the cursor, and a read-out of values at the cursor and statistics of the visible range.
+    void setTimeController(TimeController* controller);
+    TimeController* timeController() const { return controller_; }
+    QCPItemStraightLine* cursorLine() const { return cursorLine_; }
+    // The read-out as shown (HTML); refreshed at once by updateReadout().
+    QString readoutText() const;
+    void updateReadout();
+    // Samples of the loaded stream, or nullptr while none is loaded.
+    const StreamData* data() const;
+
     QCustomPlot* plot() const { return plot_; }
     // Points currently handed to QCustomPlot, over all graphs.
     long long plottedPointCount() const;
@@ -66,6 +83,10 @@ public slots:
 signals:
     void loaded();
     void loadFailed(const QString& message);
+
+protected:
+    // Transport keys (space, arrows, J/K/L) go to the time controller while the panel has focus.
+    void keyPressEvent(QKeyEvent* event) override;
 
 private:
     struct Loaded {
@@ -84,12 +105,22 @@ private:
     void onXRangeChanged(const QCPRange& range);
     void onAfterLayout();
     int plotWidthPixels() const;
+    void onCursorChanged(double t);
+    void onControllerRange(double begin, double end);
+    void onPlotClicked(QMouseEvent* event);
 
     QCustomPlot* plot_ = nullptr;
     QLabel* titleLabel_ = nullptr;
     QToolButton* columnsButton_ = nullptr;
     QMenu* columnsMenu_ = nullptr;
     QCheckBox* fitYBox_ = nullptr;
+    QLabel* readout_ = nullptr;
+    QCPItemStraightLine* cursorLine_ = nullptr;
+    TimeController* controller_ = nullptr;
+    QTimer* readoutTimer_ = nullptr;
+    bool followingController_ = false;  // applying the controller's range: do not echo it back
+    QPoint pressPos_;
+    bool replotted_ = false;
 
     std::shared_ptr<const Stream> stream_;
     QString title_;

@@ -2,6 +2,7 @@
 
 #include "core/model/Stream.h"
 #include "ui/PlotStyle.h"
+#include "ui/TimeController.h"
 
 #include <QHBoxLayout>
 #include <QLabel>
@@ -43,6 +44,13 @@ TrajectoryPanel::TrajectoryPanel(QWidget* parent) : QWidget(parent)
     endMarker_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssSquare, QPen(QColor(150, 30, 20), 2),
                                                 QColor(213, 94, 0), 10));
     endMarker_->setName(tr("End"));
+    // After the start and end markers: graph(0) and graph(1) stay what they were.
+    cursorMarker_ = plot_->addGraph();
+    cursorMarker_->setLineStyle(QCPGraph::lsNone);
+    cursorMarker_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, QPen(QColor(0xd5, 0x5e, 0x00), 2),
+                                                   QColor(0xd5, 0x5e, 0x00), 12));
+    cursorMarker_->setName(tr("Cursor"));
+    cursorMarker_->removeFromLegend();
     plot_->legend->setVisible(false);
 
     connect(plot_, &QCustomPlot::afterLayout, this, [this] {
@@ -136,6 +144,7 @@ void TrajectoryPanel::clear()
     curve_->data()->clear();
     startMarker_->data()->clear();
     endMarker_->data()->clear();
+    cursorMarker_->data()->clear();
     plot_->legend->setVisible(false);
     plot_->xAxis->setLabel(tr("x [m]"));
     plot_->yAxis->setLabel(tr("y [m]"));
@@ -186,6 +195,7 @@ void TrajectoryPanel::applyLoaded()
     }
     hasData_ = minX_ <= maxX_;
     if (!result->x.isEmpty()) {
+        updateCursorMarker();
         startMarker_->setData({result->x.front()}, {result->y.front()});
         endMarker_->setData({result->x.back()}, {result->y.back()});
     }
@@ -234,6 +244,39 @@ void TrajectoryPanel::updateHeader()
     if (!stream_) titleLabel_->setText(note_.isEmpty() ? tr("Select a position stream to show its path.") : note_);
     else if (isLoading()) titleLabel_->setText(tr("%1 — loading…").arg(title_));
     else titleLabel_->setText(tr("%1 — %2 samples").arg(title_, QLocale().toString(qlonglong(stream_->info().rows))));
+}
+
+void TrajectoryPanel::setTimeController(TimeController* controller)
+{
+    if (controller_) disconnect(controller_, nullptr, this, nullptr);
+    controller_ = controller;
+    if (!controller_) return;
+    connect(controller_, &TimeController::cursorChanged, this, &TrajectoryPanel::updateCursorMarker);
+    connect(controller_, &QObject::destroyed, this, [this] { controller_ = nullptr; });
+    updateCursorMarker();
+}
+
+QPointF TrajectoryPanel::cursorPosition() const
+{
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    if (!controller_ || curve_->data()->isEmpty()) return {nan, nan};
+    const double t = controller_->cursor();
+    const auto data = curve_->data();
+    // The curve's sort key is the sample time.
+    auto upper = data->findBegin(t, false);
+    if (upper == data->constEnd() || t < data->constBegin()->t || t > (data->constEnd() - 1)->t) return {nan, nan};
+    if (upper->t == t || upper == data->constBegin()) return {upper->key, upper->value};
+    auto lower = upper - 1;
+    const double f = (t - lower->t) / (upper->t - lower->t);
+    return {lower->key + f * (upper->key - lower->key), lower->value + f * (upper->value - lower->value)};
+}
+
+void TrajectoryPanel::updateCursorMarker()
+{
+    const QPointF p = cursorPosition();
+    if (std::isnan(p.x())) cursorMarker_->data()->clear();
+    else cursorMarker_->setData({p.x()}, {p.y()});
+    plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 
 }  // namespace athlos::ui

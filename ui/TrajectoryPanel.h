@@ -3,6 +3,7 @@
 // like one, and markers at start and end. Samples load on a worker thread.
 #include <QFutureWatcher>
 #include <QList>
+#include <QPointF>
 #include <QString>
 #include <QWidget>
 #include <memory>
@@ -18,6 +19,8 @@ struct StreamInfo;
 }  // namespace athlos
 
 namespace athlos::ui {
+
+class TimeController;
 
 class TrajectoryPanel : public QWidget {
     Q_OBJECT
@@ -41,6 +44,11 @@ public:
     QString errorString() const { return error_; }
     // Shown instead of a plot title when nothing is plotted, e.g. why there is no trajectory.
     void setNote(const QString& note);
+
+    // A marker at the position at the window's cursor time (interpolated along the path).
+    void setTimeController(TimeController* controller);
+    // Marker position, or NaN when the cursor is outside the path's time span.
+    QPointF cursorPosition() const;
 
     QCustomPlot* plot() const { return plot_; }
     QCPCurve* curve() const { return curve_; }
@@ -71,6 +79,9 @@ private:
     QCPCurve* curve_ = nullptr;
     QCPGraph* startMarker_ = nullptr;
     QCPGraph* endMarker_ = nullptr;
+    QCPGraph* cursorMarker_ = nullptr;
+    TimeController* controller_ = nullptr;
+    void updateCursorMarker();
     std::shared_ptr<const Stream> stream_;
     QString title_;
     QString error_;

@@ -2,7 +2,10 @@
 
 #include "core/model/Project.h"
 #include "core/util/Version.h"
+#include "ui/AnnotationLayer.h"
 #include "ui/MainWindow.h"
+#include "ui/TimeController.h"
+#include "ui/ToolRegistry.h"
 #include "ui/TimeSeriesPanel.h"
 #include "ui/TrajectoryPanel.h"
 
@@ -59,8 +62,49 @@ QString libraryVersions()
 
 QStringList screenshotViews()
 {
-    return {QStringLiteral("main"), QStringLiteral("trajectory")};
+    QStringList views{QStringLiteral("main"), QStringLiteral("trajectory"), QStringLiteral("annotate")};
+    // Tools add theirs (ATHLOS_REGISTER_VIEW); a built-in name wins over a registered one.
+    for (const ViewEntry& entry : registeredViews())
+        if (!views.contains(entry.name)) views << entry.name;
+    return views;
 }
+
+namespace {
+
+const ViewEntry* registeredView(const QString& name)
+{
+    for (const ViewEntry& entry : registeredViews())
+        if (entry.name == name) return &entry;
+    return nullptr;
+}
+
+// The time series of the first recording with annotations (else the first stream), the
+// annotation dock with classes and intervals, and the cursor in the middle.
+Status prepareAnnotateView(MainWindow& window)
+{
+    const Project* project = window.project();
+    QString path;
+    for (const auto& [name, recording] : project->recordings())
+        if (!recording.annotations.empty() && !recording.streams.empty()) {
+            path = name + QLatin1Char('/') + recording.streams.begin()->first;
+            break;
+        }
+    if (path.isEmpty()) path = window.firstStream();
+    if (path.isEmpty())
+        return makeError(QCoreApplication::translate("athlos::ui::UiEntry",
+                                                     "the project has no stream to annotate; import a recording first"));
+    window.selectItem(path);
+    window.showTimeSeriesView();
+    window.showAnnotationPanel();
+    window.annotationLayer()->setAnnotateMode(true);
+    window.waitForPlots();
+    TimeController* time = window.timeController();
+    time->setCursor(0.5 * (time->visibleBegin() + time->visibleEnd()));
+    window.waitForPlots();
+    return {};
+}
+
+}  // namespace
 
 Status renderScreenshot(const QString& projectPath, const QString& view, const QString& pngPath, QSize size)
 {
@@ -82,7 +126,14 @@ Status renderScreenshot(const QString& projectPath, const QString& view, const Q
     if (window.size() != size) window.setFixedSize(size);
     QCoreApplication::processEvents();
 
-    if (view == QLatin1String("trajectory")) {
+    if (view == QLatin1String("annotate")) {
+        if (Status prepared = prepareAnnotateView(window); !prepared) return prepared;
+    } else if (view != QLatin1String("main") && view != QLatin1String("trajectory")) {
+        if (Status prepared = registeredView(view)->prepare(window); !prepared) return prepared;
+    } else if (window.firstStream().isEmpty()) {
+        return makeError(QCoreApplication::translate("athlos::ui::UiEntry", "the project has no streams to show in view '%1'")
+                             .arg(view));
+    } else if (view == QLatin1String("trajectory")) {
         const QString path = window.firstPositionStream();
         if (path.isEmpty()) {
             const QString note = QCoreApplication::translate("athlos::ui::UiEntry", "No position stream (lps-position, trajectory or gnss with x/y) in this "

@@ -48,7 +48,7 @@ void GuiTranslationTest::windowIsGerman()
     const QList<QAction*> menus = window.menuBar()->actions();
     QVERIFY(menus.size() >= 2);
     QCOMPARE(menus.at(0)->text(), QStringLiteral("&Datei"));
-    QCOMPARE(menus.at(1)->text(), QStringLiteral("&Hilfe"));
+    QCOMPARE(menus.back()->text(), QStringLiteral("&Hilfe"));  // Help stays last
 }
 
 void GuiTranslationTest::tsFileIsComplete()

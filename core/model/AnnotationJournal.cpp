@@ -1,0 +1,97 @@
+#include "core/model/AnnotationJournal.h"
+
+#include "core/model/Project.h"
+
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonParseError>
+
+#ifdef Q_OS_UNIX
+#include <unistd.h>
+#endif
+
+namespace athlos {
+
+bool AnnotationJournal::hasPendingEdits(const QString& projectPath)
+{
+    const QFileInfo journal(pathFor(projectPath));
+    if (!journal.exists() || journal.size() == 0) return false;
+    const QFileInfo project(projectPath);
+    return !project.exists() || journal.lastModified() >= project.lastModified();
+}
+
+Expected<std::vector<AnnotationEdit>> AnnotationJournal::read(const QString& journalPath)
+{
+    QFile file(journalPath);
+    if (!file.open(QIODevice::ReadOnly)) return makeError(QStringLiteral("%1: %2").arg(journalPath, file.errorString()));
+    std::vector<AnnotationEdit> edits;
+    int lineNumber = 0;
+    while (!file.atEnd()) {
+        const QByteArray line = file.readLine();
+        ++lineNumber;
+        const bool complete = line.endsWith('\n');
+        if (line.trimmed().isEmpty()) continue;
+        QJsonParseError error;
+        const QJsonDocument doc = QJsonDocument::fromJson(line, &error);
+        if (error.error != QJsonParseError::NoError || !doc.isObject()) {
+            if (!complete) break;  // the write the crash interrupted
+            return makeError(QStringLiteral("%1:%2: %3").arg(journalPath).arg(lineNumber).arg(error.errorString()));
+        }
+        auto edit = AnnotationEdit::fromJson(doc.object());
+        if (!edit) return makeError(QStringLiteral("%1:%2: %3").arg(journalPath).arg(lineNumber).arg(edit.message()));
+        edits.push_back(std::move(edit).value());
+    }
+    return edits;
+}
+
+Expected<int> AnnotationJournal::replay(Project& project)
+{
+    const QString path = pathFor(project.path());
+    auto edits = read(path);
+    if (!edits) return edits.error();
+    int applied = 0;
+    for (const AnnotationEdit& edit : *edits) {
+        const Status status = edit.apply(project);
+        if (!status) return makeError(QStringLiteral("%1: edit %2: %3").arg(path).arg(applied + 1).arg(status.message()));
+        ++applied;
+    }
+    return applied;
+}
+
+AnnotationJournal::AnnotationJournal(QString projectPath)
+{
+    if (!projectPath.isEmpty()) setProjectPath(projectPath);
+}
+
+AnnotationJournal::~AnnotationJournal() = default;
+
+void AnnotationJournal::setProjectPath(const QString& projectPath)
+{
+    file_.close();
+    file_.setFileName(pathFor(projectPath));
+}
+
+Status AnnotationJournal::append(const AnnotationEdit& edit)
+{
+    if (file_.fileName().isEmpty()) return makeError(QStringLiteral("the annotation journal has no file"));
+    if (!file_.isOpen() && !file_.open(QIODevice::WriteOnly | QIODevice::Append))
+        return makeError(QStringLiteral("%1: %2").arg(file_.fileName(), file_.errorString()));
+    QByteArray line = QJsonDocument(edit.toJson()).toJson(QJsonDocument::Compact);
+    line += '\n';
+    if (file_.write(line) != line.size() || !file_.flush())
+        return makeError(QStringLiteral("%1: %2").arg(file_.fileName(), file_.errorString()));
+#ifdef Q_OS_UNIX
+    // flush() only reaches the OS; a power cut needs the bytes on the disk. One line is tiny.
+    if (::fsync(file_.handle()) != 0)
+        return makeError(QStringLiteral("%1: cannot sync to disk").arg(file_.fileName()));
+#endif
+    return {};
+}
+
+void AnnotationJournal::discard()
+{
+    file_.close();
+    if (!file_.fileName().isEmpty()) QFile::remove(file_.fileName());
+}
+
+}  // namespace athlos
