@@ -43,6 +43,14 @@ void ensureRuntimeDir() {
     qputenv("XDG_RUNTIME_DIR", dir);
 }
 
+// The offscreen platform warns "This plugin does not support propagateSizeHints()" for every
+// window it renders; that is not something a user can act on, so screenshot drops it.
+QtMessageHandler previousHandler = nullptr;
+void dropOffscreenNoise(QtMsgType type, const QMessageLogContext& context, const QString& message) {
+    if (message.contains(QLatin1String("propagateSizeHints"))) return;
+    if (previousHandler) previousHandler(type, context, message);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -74,6 +82,7 @@ int main(int argc, char** argv) {
         // Rendering is always offscreen: deterministic, and it works without a display (CI).
         qputenv("QT_QPA_PLATFORM", "offscreen");
         ensureRuntimeDir();
+        previousHandler = qInstallMessageHandler(dropOffscreenNoise);
         QApplication app(argc, argv);
         QCoreApplication::setApplicationName(QStringLiteral("Athlos"));
         athlos::ui::installTranslations(app);

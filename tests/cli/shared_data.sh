@@ -11,6 +11,7 @@ for s in trial02/imu trial02/reference trial24/imu walk/left-foot walk/right-foo
   grep -q "\"path\": \"$s\"" "$WORK/out" || fail "$s missing after import"
 done
 expect_ok "screenshot" "$ATHLOS" screenshot "$P" --view main --to "$WORK/main.png"
+[ ! -s "$WORK/err" ] || fail "screenshot printed on stderr: $(head -c 300 "$WORK/err")"
 [ "$(png_size "$WORK/main.png")" = "1280x800" ] || fail "screenshot is $(png_size "$WORK/main.png"), not 1280x800"
 [ "$(stat -c %s "$WORK/main.png")" -gt 20000 ] || fail "screenshot is suspiciously small (blank?)"
 expect_fail "unknown view" "view" "$ATHLOS" screenshot "$P" --view nope --to "$WORK/x.png"
