@@ -21,7 +21,8 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 BUILD_DIR=${ATHLOS_BUILD_DIR:-build}
-WERROR=OFF; [ -n "${CI:-}" ] && WERROR=ON
-cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DATHLOS_WERROR="$WERROR" \
+# CI treats warnings as errors; elsewhere the cached choice stays (so demo after test does not rebuild).
+WERROR_ARG=(); [ -n "${CI:-}" ] && WERROR_ARG=(-DATHLOS_WERROR=ON)
+cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo "${WERROR_ARG[@]}" \
       -DATHLOS_SHARED_DIR="${ATHLOS_SHARED_DIR:-$(cd .. && pwd)/shared}" ${ATHLOS_CMAKE_ARGS:-} >/dev/null
 cmake --build "$BUILD_DIR" -j"$(nproc)"
