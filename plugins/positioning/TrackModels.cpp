@@ -38,9 +38,10 @@ AugmentedTrackModel::StateVector AugmentedTrackModel::predict(const StateVector&
     y[kOmega] = x[kV] * c.curvature;  // eq. 4.18 (straights, κ = 0) / 4.20 (bends, κ = 1/r)
     if (jacobian) {
         StateMatrix& F = *jacobian;
-        const Matrix<2, 6> dp = F.topRows<2>();  // ∂p'/∂x: the track terms are evaluated at p'
-        F.row(kPhi) = c.headingGradient.transpose() * dp;
-        F.row(kOmega) = x[kV] * c.curvatureGradient.transpose() * dp;
+        // ∂p'/∂x = rows kPx, kPy of F (the track terms are evaluated at p'); those rows are not
+        // overwritten, so the products are formed in place without a 2×6 temporary.
+        F.row(kPhi).noalias() = c.headingGradient.transpose() * F.topRows<2>();
+        F.row(kOmega).noalias() = (x[kV] * c.curvatureGradient).transpose() * F.topRows<2>();
         F(kOmega, kV) += c.curvature;
     }
     return y;
