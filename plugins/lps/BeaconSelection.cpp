@@ -26,18 +26,29 @@ TagFix BeaconSelection::solveAll(FixInput& input, TdoaSolver& solver, const TagF
 
 TagFix BeaconSelection::solveIrls(FixInput& input, TdoaSolver& solver, const TagFix* start) const {
     input.setAllWeights(1.0);
+    return solveIrlsWeighted(input, solver, start, input.weights);
+}
+
+TagFix BeaconSelection::solveIrlsWeighted(FixInput& input, TdoaSolver& solver, const TagFix* start,
+                                          const std::vector<double> mask) const {
+    input.weights = mask;
+    std::vector<double> inMask;
     TagFix fix = solver.solve(input, start);
     if (!fix.valid) return fix;
     std::vector<double> e, u(std::size_t(input.size())), previous;
     for (int it = 0; it < params_.irlsIterations; ++it) {
         TdoaSolver::residuals(input, fix.position, fix.offset, e);
         // Scale from all readings, so that a rejected reading can return when the fix moves.
-        const double centre = median(e);
-        const double scale = std::max(1.4826 * medianAbsoluteDeviation(e), params_.irlsMinScale);
+        // (Only the readings in the mask: all of them for method 6.)
+        inMask.clear();
+        for (int i = 0; i < input.size(); ++i)
+            if (mask[size_t(i)] > 0.0) inMask.push_back(e[size_t(i)]);
+        const double centre = median(inMask);
+        const double scale = std::max(1.4826 * medianAbsoluteDeviation(inMask), params_.irlsMinScale);
         const double cut = params_.irlsK * scale;
         previous = input.weights;
         for (int i = 0; i < input.size(); ++i) {
-            u[size_t(i)] = std::abs(e[size_t(i)] - centre) / cut;
+            u[size_t(i)] = mask[size_t(i)] > 0.0 ? std::abs(e[size_t(i)] - centre) / cut : 1e9;
             const double a = 1.0 - u[size_t(i)] * u[size_t(i)];
             input.weights[size_t(i)] = u[size_t(i)] < 1.0 ? a * a : 0.0;  // Tukey bisquare
         }
@@ -112,8 +123,63 @@ TagFix BeaconSelection::solveFieldOfView(FixInput& input, TdoaSolver& solver, co
         std::sort(order.begin(), order.end(), [&](int a, int b) { return margin[size_t(a)] > margin[size_t(b)]; });
         for (int k = 0; k < std::min(params_.minBeacons, input.size()); ++k) input.weights[size_t(order[size_t(k)])] = 1.0;
     }
+    const std::vector<double> fovWeights = input.weights;
     TagFix fix = solver.solve(input, start);
-    return params_.fovRefine ? rejectLargest(input, solver, fix) : fix;
+    if (!params_.fovRefine) return fix;
+    fix = rejectLeaveOneOut(input, solver, fix);
+    // Consistency over time: m̂_ini is the median of the last fixes, so a fix far from it (more than a
+    // runner covers in that time) is implausible: the one-sided set in view was dragged off by a late
+    // reading. Re-solve from m̂_ini with the bisquare reweighting (method 6) over all readings, whose
+    // two-sided geometry one late reading cannot move by metres.
+    if (!fix.valid || (fix.position - view.position).head<2>().norm() > params_.fovMaxJump) {
+        input.weights = fovWeights;
+        TagFix seed = fix.valid ? fix : (start ? *start : TagFix{});
+        seed.position.head<2>() = view.position.head<2>();
+        seed.valid = true;
+        const TagFix alt = solveIrlsWeighted(input, solver, &seed, std::vector<double>(fovWeights.size(), 1.0));
+        if (alt.valid) fix = alt;
+    }
+    return fix;
+}
+
+TagFix BeaconSelection::rejectLeaveOneOut(FixInput& input, TdoaSolver& solver, TagFix fix) const {
+    // In the one-sided geometry of the field of view a gross outlier pulls the fix towards itself and
+    // its own residual can be smaller than a neighbour's; the largest |e_i| then names the wrong
+    // beacon. Instead, drop the reading whose removal leaves the most consistent fix (smallest mean
+    // |e| of the remaining readings), until the mean |e| is below the threshold or B_min is reached.
+    std::vector<double> e;
+    const auto meanAbsResidual = [&](const TagFix& f) {
+        TdoaSolver::residuals(input, f.position, f.offset, e);
+        double sum = 0.0;
+        for (int i = 0; i < input.size(); ++i)
+            if (input.weights[size_t(i)] > 0.0) sum += std::abs(e[size_t(i)]);
+        return sum / std::max(input.activeCount(), 1);
+    };
+    while (fix.valid && input.activeCount() > params_.minBeacons) {
+        if (meanAbsResidual(fix) <= params_.rejectionThreshold) break;
+        int best = -1;
+        double bestScore = 0.0;
+        TagFix bestFix;
+        for (int i = 0; i < input.size(); ++i) {
+            if (input.weights[size_t(i)] <= 0.0) continue;
+            const double w = input.weights[size_t(i)];
+            input.weights[size_t(i)] = 0.0;
+            const TagFix trial = solver.solve(input, &fix);
+            if (trial.valid) {
+                const double score = meanAbsResidual(trial);
+                if (best < 0 || score < bestScore) {
+                    best = i;
+                    bestScore = score;
+                    bestFix = trial;
+                }
+            }
+            input.weights[size_t(i)] = w;
+        }
+        if (best < 0) break;
+        input.weights[size_t(best)] = 0.0;
+        fix = bestFix;
+    }
+    return fix;
 }
 
 void FixHistory::push(const TagFix& fix) {

@@ -9,7 +9,8 @@
 //                   proposed method: φ_i is the bearing to the beacon relative to the body heading,
 //                   m̂_ini the median of the last five fixes. Without such a history (start, gaps)
 //                   the fix falls back to LargestResidual. With fovRefine, LargestResidual then
-//                   runs on the beacons in view (an addition of this project, see docs).
+//                   runs on the beacons in view, choosing by leave-one-out (an addition of this
+//                   project, see docs).
 #include "plugins/lps/GainPattern.h"
 #include "plugins/lps/TdoaSolver.h"
 
@@ -29,9 +30,14 @@ public:
         int irlsIterations = 10;
         double rejectionThreshold = 0.25; // m, mean |e| at which LargestResidual stops
         double kappa = 100.0;             // dB, κ of Eqn. 3.8 for the default pattern (grid search, docs/validation/lps.md)
-        // After the field-of-view selection, largest-residual rejection among the beacons in view:
-        // removes the gross outliers (late detections) a field of view cannot predict.
+        // After the field-of-view selection, leave-one-out rejection among the beacons in view (drop the
+        // reading whose removal leaves the smallest mean |e|, down to B_min): removes the gross
+        // outliers (late detections) a field of view cannot predict.
         bool fovRefine = true;
+        // m; with fovRefine, a fix farther than this from m̂_ini (median of the last five fixes,
+        // ≈ 0.2–0.3 s behind at 10 Hz: ~2 m at sprint speed) is re-solved from m̂_ini with IRLS over
+        // all readings (grid 1.5…8 m on seed 777, docs/validation/lps.md).
+        double fovMaxJump = 4.0;
         double frequency = 5.8e9;         // Hz, carrier of the thesis' LPS (free-space loss)
         GainPattern gain;
     };
@@ -62,6 +68,10 @@ public:
 private:
     // Method 8's loop from the current weights and fix.
     TagFix rejectLargest(FixInput& input, TdoaSolver& solver, TagFix fix) const;
+    // fovRefine: like rejectLargest, but drops the reading whose removal leaves the smallest mean |e|.
+    // Method 6 restricted to the readings with mask > 0 (the others get weight 0 unless B_min needs them).
+    TagFix solveIrlsWeighted(FixInput& input, TdoaSolver& solver, const TagFix* start, const std::vector<double> mask) const;
+    TagFix rejectLeaveOneOut(FixInput& input, TdoaSolver& solver, TagFix fix) const;
     Params params_;
 };
 

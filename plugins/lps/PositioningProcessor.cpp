@@ -56,7 +56,8 @@ ParameterSpecs PositioningProcessor::parameters() const {
                               tr("field-of-view: carrier frequency for the free-space loss.")),
         ParameterSpec::boolean(QStringLiteral("fov_refine"), true,
                                tr("field-of-view: afterwards reject gross outliers among the beacons in view "
-                                  "(largest-residual rule).")),
+                                  "(leave-one-out), and re-solve a fix more than 4 m from the median of the "
+                                  "last five fixes with IRLS over all beacons.")),
         ParameterSpec::choice(QStringLiteral("heading"), {QStringLiteral("track"), QStringLiteral("orientation"), QStringLiteral("motion")},
                               QStringLiteral("track"),
                               tr("field-of-view: body heading from the track geometry and running direction, from the "

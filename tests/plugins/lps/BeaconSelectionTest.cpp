@@ -104,6 +104,43 @@ TEST(BeaconSelection, FieldOfViewKeepsAtLeastFourBeacons) {
     EXPECT_EQ(fix.beaconsUsed, 4);
 }
 
+TEST(BeaconSelection, FieldOfViewRefinementRejectsGrossOutlierInView) {
+    // The thesis' gross outliers: 20 m late, planted in turn on every beacon inside the field of view.
+    const BeaconLayout layout = square();
+    BeaconSelection::Params p;
+    p.method = BeaconSelection::Method::FieldOfView;
+    ASSERT_TRUE(p.fovRefine);
+    const BeaconSelection selection(p);
+    const Vector3 m(10, -5, 1.2);
+    const BeaconSelection::View view{Vector3(9, -5, 1.2), 0.0};  // m̂_ini 1 m behind, facing +x
+    int planted = 0;
+    for (int k = 0; k < layout.size(); ++k) {
+        if (selection.linkMargin(layout.positions[size_t(k)], view) <= 0.0) continue;
+        ++planted;
+        FixInput input = inputWithBias(layout, m, k, 20.0);
+        TdoaSolver solver;
+        const TagFix fix = selection.solve(input, solver, nullptr, &view);
+        ASSERT_TRUE(fix.valid) << "outlier on beacon " << k;
+        EXPECT_LT((fix.position - m).head<2>().norm(), 0.5) << "outlier on beacon " << k;
+        EXPECT_GE(input.activeCount(), p.minBeacons);
+    }
+    EXPECT_GE(planted, 4);
+}
+
+TEST(BeaconSelection, FieldOfViewRefinementFallsBackOnImplausibleJump) {
+    // m̂_ini far from where the in-view fix lands: the fix is re-solved with IRLS over all readings.
+    const BeaconLayout layout = square();
+    BeaconSelection::Params p;
+    p.method = BeaconSelection::Method::FieldOfView;
+    const Vector3 m(10, -5, 1.2);
+    const BeaconSelection::View view{Vector3(16, -5, 1.2), 0.0};
+    FixInput input = inputWithBias(layout, m, 3, 20.0);
+    TdoaSolver solver;
+    const TagFix fix = BeaconSelection(p).solve(input, solver, nullptr, &view);
+    ASSERT_TRUE(fix.valid);
+    EXPECT_LT((fix.position - m).head<2>().norm(), 0.5);
+}
+
 TEST(BeaconSelection, FreeSpaceLossFollowsEquation39) {
     const BeaconSelection selection;
     // 20 log10(100) + 20 log10(5.8e9) − 147.55
