@@ -210,7 +210,7 @@ void MainWindow::createMenus()
     file->addSeparator();
     file->addAction(importAction_);
     file->addAction(exportViewAction_);
-    file->addSeparator();
+    QAction* beforeQuit = file->addSeparator();
     file->addAction(quitAction_);
 
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
@@ -223,12 +223,19 @@ void MainWindow::createMenus()
     edit->addAction(preferencesAction_);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
+    viewMenu_ = view;
     view->addAction(addPanelAction_);
     view->addAction(showAllAction_);
 
     QMenu* processing = menuBar()->addMenu(tr("&Processing"));
     processing->addAction(runProcessorAction_);
-    createToolMenus(processing, view);
+    createToolMenus(file, processing, view);
+    // Tools of the File menu (import wizard…) sit with Import, before the quit separator.
+    for (QAction* action : toolActions_) {
+        if (!file->actions().contains(action)) continue;
+        file->removeAction(action);
+        file->insertAction(beforeQuit, action);
+    }
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(aboutAction_);
@@ -706,10 +713,11 @@ void MainWindow::showDetails(const QString& path)
 
 // --- workspace: processors and tools ----------------------------------------------------------
 
-void MainWindow::createToolMenus(QMenu* processing, QMenu* view)
+void MainWindow::createToolMenus(QMenu* file, QMenu* processing, QMenu* view)
 {
     // Menus appear in the order tools first name them, between Processing and Help.
-    std::vector<std::pair<QString, QMenu*>> menus{{QStringLiteral("Processing"), processing},
+    std::vector<std::pair<QString, QMenu*>> menus{{QStringLiteral("File"), file},
+                                                  {QStringLiteral("Processing"), processing},
                                                   {QStringLiteral("View"), view}};
     QList<QMenu*> separated;
     for (const ToolEntry& entry : registeredTools()) {
@@ -735,6 +743,15 @@ void MainWindow::createToolMenus(QMenu* processing, QMenu* view)
         });
         toolActions_ << action;
     }
+}
+
+void MainWindow::addDock(QDockWidget* dock, Qt::DockWidgetArea area)
+{
+    dock->setParent(this);
+    addDockWidget(area, dock);
+    if (viewMenu_ && !viewMenu_->actions().contains(dock->toggleViewAction())) viewMenu_->addAction(dock->toggleViewAction());
+    dock->show();
+    dock->raise();
 }
 
 QAction* MainWindow::toolAction(const QString& id) const

@@ -89,7 +89,8 @@ public:
     void waitForPlots();
 
     // The one time cursor every time panel follows.
-    TimeController* timeController() const { return timeController_; }
+    TimeController* timeController() const override { return timeController_; }
+    void addDock(QDockWidget* dock, Qt::DockWidgetArea area = Qt::BottomDockWidgetArea) override;
     // Another time-series panel in a dock, linked to the cursor, plotting path ("rec/stream").
     TimeSeriesPanel* addTimeSeriesPanel(const QString& path);
     // The central panel first, then the docked ones.
@@ -128,7 +129,7 @@ private:
     void createActions();
     void createMenus();
     void createDocks();
-    void createToolMenus(QMenu* processing, QMenu* view);
+    void createToolMenus(QMenu* file, QMenu* processing, QMenu* view);
     void removeExtraPanels();
     void addExportMenu(QCustomPlot* plot);
     void createAnnotationTool();
@@ -183,6 +184,7 @@ private:
     int nextPanelNumber_ = 1;
 
     QMenu* recentMenu_ = nullptr;
+    QMenu* viewMenu_ = nullptr;
     QAction* newAction_ = nullptr;
     QAction* openAction_ = nullptr;
     QAction* saveAction_ = nullptr;

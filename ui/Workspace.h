@@ -5,7 +5,9 @@
 #include "core/util/Expected.h"
 
 #include <QString>
+#include <Qt>
 
+class QDockWidget;
 class QWidget;
 
 namespace athlos {
@@ -13,6 +15,8 @@ class Project;
 }
 
 namespace athlos::ui {
+
+class TimeController;
 
 class Workspace {
 public:
@@ -31,6 +35,11 @@ public:
     virtual void projectModified() = 0;
     // Selects and shows "rec/item" (plots a stream).
     virtual void showItem(const QString& path) = 0;
+    // The one time cursor and visible range that every panel, video and playback view follows.
+    virtual TimeController* timeController() const = 0;
+    // Adds a tool's dock (video, playback, joint angles, action timeline…) to the window; the
+    // window owns it and lists it under View. Give the dock a stable objectName.
+    virtual void addDock(QDockWidget* dock, Qt::DockWidgetArea area = Qt::BottomDockWidgetArea) = 0;
 };
 
 }  // namespace athlos::ui
