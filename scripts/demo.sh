@@ -15,6 +15,11 @@ P="$OUT/demo.athlos"
 "$ATHLOS" import "$P" "$SHARED/data/broad/07_undisturbed_fast_rotation_B.hdf5" --as broad07 --format broad
 "$ATHLOS" import "$P" "$SHARED/data/gaitmap/imu_sample_ic_stride.csv" --as walk --format gaitmap
 "$ATHLOS" pipeline "$P" resources/demo/pipeline.json
+# Each topic adds its own steps (team match, joint angles, gait events…) in pipeline-<topic>.json.
+for extra in resources/demo/pipeline-*.json; do
+  [ -e "$extra" ] || continue
+  "$ATHLOS" pipeline "$P" "$extra"
+done
 "$ATHLOS" info "$P"
 for view in $("$ATHLOS" screenshot --help | sed -n 's/.*One of: \(.*\)/\1/p' | tr -d ','); do
   "$ATHLOS" screenshot "$P" --view "$view" --to "$OUT/demo-$view.png"
