@@ -22,6 +22,8 @@ CtraIncrement ctraIncrement(double v, double a, double phi, double omega, double
         r.dV = partial(T, 0.5 * T * T, T * T * T / 3.0);
         r.dA = partial(0.5 * T * T, T * T * T / 3.0, 0.25 * T * T * T * T);
         r.dOmega = {-I1 * s0 - omega * I2 * c0, I1 * c0 - omega * I2 * s0};
+        const double wT = omega * T, hw2 = 0.5 * wT * wT;
+        r.direction = {c0 - wT * s0 - hw2 * c0, s0 + wT * c0 - hw2 * s0};
     } else {
         // Closed form (digest §2, standard CTRA).
         const double th = phi + omega * T, c1 = std::cos(th), s1 = std::sin(th);
@@ -34,16 +36,19 @@ CtraIncrement ctraIncrement(double v, double a, double phi, double omega, double
         const double dA = v1 * s1 + v1 * w * T * c1 - a * T * s1 - v * s0;
         const double dB = -v1 * c1 + v1 * w * T * s1 + a * T * c1 + v * c0;
         r.dOmega = {dA / w2 - 2.0 * A / w3, dB / w2 - 2.0 * B / w3};
+        r.direction = {c1, s1};
     }
     r.dPhi = {-r.delta.y(), r.delta.x()};  // rotating the whole arc by dφ
     return r;
 }
 
-Vector<6> ctraPredict(const Vector<6>& x, double T, bool constantVelocity, Matrix<6, 6>* jacobian) {
+Vector<6> ctraPredict(const Vector<6>& x, double T, bool constantVelocity, Matrix<6, 6>* jacobian,
+                      Eigen::Vector2d* direction) {
     const double a = constantVelocity ? 0.0 : x[kA];
     const CtraIncrement inc = ctraIncrement(x[kV], a, x[kPhi], x[kOmega], T);
     Vector<6> y;
     y << x[kPx] + inc.delta.x(), x[kPy] + inc.delta.y(), x[kV] + a * T, a, x[kPhi] + x[kOmega] * T, x[kOmega];
+    if (direction) *direction = inc.direction;
     if (!jacobian) return y;
     Matrix<6, 6>& F = *jacobian;
     F.setIdentity();

@@ -19,6 +19,7 @@ enum StateIndex { kPx = 0, kPy = 1, kV = 2, kA = 3, kPhi = 4, kOmega = 5 };
 struct CtraIncrement {
     Eigen::Vector2d delta;   // Δp
     Eigen::Vector2d dV, dA, dPhi, dOmega;  // ∂Δp/∂v, ∂Δp/∂a, ∂Δp/∂φ, ∂Δp/∂ω
+    Eigen::Vector2d direction;  // [cos, sin](φ + ωT), the predicted heading's direction (to (ωT)³/6 for small ωT)
 };
 
 // Δp = ∫₀ᵀ (v + a t) [cos(φ + ω t), sin(φ + ω t)]ᵀ dt
@@ -76,8 +77,10 @@ private:
 };
 
 // Shared CTRA pieces for the track-constrained models.
-// F(x, T) and, when jacobian != nullptr, Φ = ∂F/∂x.
-Vector<6> ctraPredict(const Vector<6>& x, double T, bool constantVelocity, Matrix<6, 6>* jacobian = nullptr);
+// F(x, T) and, when jacobian != nullptr, Φ = ∂F/∂x; when direction != nullptr, the predicted
+// heading's direction vector (lets the track models avoid an atan2).
+Vector<6> ctraPredict(const Vector<6>& x, double T, bool constantVelocity, Matrix<6, 6>* jacobian = nullptr,
+                      Eigen::Vector2d* direction = nullptr);
 Matrix<6, 6> ctraProcessNoise(const CtraNoise& noise, double T);
 Vector<6> ctraDifference(const Vector<6>& a, const Vector<6>& b);
 void ctraNormalize(Vector<6>& x);

@@ -14,13 +14,13 @@ TrackConstraintField::TrackConstraintField(const TrackConstraintParams& params) 
     highest_ = width + params.outsideMargin;
 }
 
-TrackConstraint trackConstraint(const TrackConstraintField& field, const Eigen::Vector2d& p, double heading) {
+namespace {
+
+// Running against the track's direction: heading + π and the turn changes sign.
+TrackConstraint constraintFrom(const TrackConstraintField& field, const TrackQuery& q, double heading) {
     TrackConstraint c;
-    if (!field.track()) return c;
-    const TrackQuery q = field.track()->field(p);
     if (q.d < field.lowest() || q.d > field.highest()) return c;
     c.active = true;
-    // Running against the track's direction: heading + π and the turn changes sign.
     const bool reverse = std::abs(TrackGeometry::wrapAngle(heading - q.heading)) > M_PI / 2;
     c.heading = reverse ? TrackGeometry::wrapAngle(q.heading + M_PI) : q.heading;
     c.curvature = reverse ? -q.curvature : q.curvature;
@@ -29,20 +29,41 @@ TrackConstraint trackConstraint(const TrackConstraintField& field, const Eigen::
     return c;
 }
 
+}  // namespace
+
+TrackConstraint trackConstraint(const TrackConstraintField& field, const Eigen::Vector2d& p, double heading) {
+    if (!field.track()) return {};
+    return constraintFrom(field, field.track()->field(p), heading);
+}
+
+TrackConstraint trackConstraint(const TrackConstraintField& field, const Eigen::Vector2d& p, double heading,
+                                double predictedHeading, const Eigen::Vector2d& predictedDirection) {
+    if (!field.track()) return {};
+    return constraintFrom(field, field.track()->field(p, predictedHeading, predictedDirection), heading);
+}
+
 AugmentedTrackModel::StateVector AugmentedTrackModel::predict(const StateVector& x, double T, double t,
                                                              StateMatrix* jacobian) const {
-    StateVector y = ctraPredict(x, T, t > params_.cvAfter, jacobian);
-    const TrackConstraint c = trackConstraint(field_, y.head<2>(), x[kPhi]);
+    Eigen::Vector2d direction;
+    StateVector y = ctraPredict(x, T, t > params_.cvAfter, jacobian, &direction);
+    const TrackConstraint c = trackConstraint(field_, y.head<2>(), x[kPhi], y[kPhi], direction);
     if (!c.active) return y;  // off the track: generic CTRA
     y[kPhi] = c.heading;              // eq. 4.17
     y[kOmega] = x[kV] * c.curvature;  // eq. 4.18 (straights, κ = 0) / 4.20 (bends, κ = 1/r)
     if (jacobian) {
         StateMatrix& F = *jacobian;
-        // ∂p'/∂x = rows kPx, kPy of F (the track terms are evaluated at p'); those rows are not
-        // overwritten, so the products are formed in place without a 2×6 temporary.
-        F.row(kPhi).noalias() = c.headingGradient.transpose() * F.topRows<2>();
-        F.row(kOmega).noalias() = (x[kV] * c.curvatureGradient).transpose() * F.topRows<2>();
-        F(kOmega, kV) += c.curvature;
+        if (c.headingGradient.isZero(0.0) && c.curvatureGradient.isZero(0.0)) {
+            // Straights: φ and κ do not depend on p, so φ' and ω' = v κ depend on v alone.
+            F.row(kPhi).setZero();
+            F.row(kOmega).setZero();
+            F(kOmega, kV) = c.curvature;
+        } else {
+            // ∂p'/∂x = rows kPx, kPy of F (the track terms are evaluated at p'); those rows are not
+            // overwritten, so the products are formed in place without a 2×6 temporary.
+            F.row(kPhi).noalias() = c.headingGradient.transpose() * F.topRows<2>();
+            F.row(kOmega).noalias() = (x[kV] * c.curvatureGradient).transpose() * F.topRows<2>();
+            F(kOmega, kV) += c.curvature;
+        }
     }
     return y;
 }

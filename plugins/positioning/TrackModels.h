@@ -45,6 +45,10 @@ struct TrackConstraint {
     Eigen::Vector2d curvatureGradient = Eigen::Vector2d::Zero();
 };
 TrackConstraint trackConstraint(const TrackConstraintField& field, const Eigen::Vector2d& p, double heading);
+// The same at a predicted position p whose predicted heading (and its direction vector) is known:
+// the track heading is then found relative to it without an atan2 (TrackGeometry::field).
+TrackConstraint trackConstraint(const TrackConstraintField& field, const Eigen::Vector2d& p, double heading,
+                                double predictedHeading, const Eigen::Vector2d& predictedDirection);
 
 class AugmentedTrackModel : public estimation::ModelDefaults<6, 2> {
 public:
