@@ -135,7 +135,7 @@ Status AnnotationEditor::addClass(const QString& name)
     if (trimmed.isEmpty()) return makeError(tr("A class needs a name."));
     if (project_->annotationClasses().contains(trimmed)) return {};
     const AnnotationEdit edit = AnnotationEdit::addClass(trimmed);
-    if (Status journaled = journal_.append(edit); !journaled) return journaled;
+    if (Status journaled = journal_.append(edit, project_); !journaled) return journaled;
     if (Status applied = edit.apply(*project_); !applied) return applied;
     if (currentClass_.isEmpty()) setCurrentClass(trimmed);
     emit classesChanged();
@@ -146,7 +146,7 @@ void AnnotationEditor::perform(const AnnotationEdit& edit)
 {
     if (!project_) return;
     // Journal first: what the user sees must survive a crash right after.
-    if (Status journaled = journal_.append(edit); !journaled) emit errorOccurred(journaled.message());
+    if (Status journaled = journal_.append(edit, project_); !journaled) emit errorOccurred(journaled.message());
     if (Status applied = edit.apply(*project_); !applied) {
         emit errorOccurred(applied.message());
         return;

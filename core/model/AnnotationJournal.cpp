@@ -2,7 +2,9 @@
 
 #include "core/model/Project.h"
 
+#include <QCryptographicHash>
 #include <QFileInfo>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonParseError>
 
@@ -18,6 +20,35 @@ bool AnnotationJournal::hasPendingEdits(const QString& projectPath)
     if (!journal.exists() || journal.size() == 0) return false;
     const QFileInfo project(projectPath);
     return !project.exists() || journal.lastModified() >= project.lastModified();
+}
+
+namespace {
+
+const QLatin1String kHeaderKey("journal");
+
+}  // namespace
+
+QByteArray AnnotationJournal::stateDigest(const Project& project)
+{
+    // Canonical: recordings in name order (std::map), annotations in list order, compact JSON.
+    QCryptographicHash hash(QCryptographicHash::Sha256);
+    hash.addData(project.annotationClasses().join(QLatin1Char('\n')).toUtf8());
+    for (const auto& [name, recording] : project.recordings()) {
+        QJsonArray list;
+        for (const Annotation& annotation : recording.annotations) list.append(annotationToJson(annotation));
+        hash.addData(QByteArray("\n#") + name.toUtf8() + '\n');
+        hash.addData(QJsonDocument(list).toJson(QJsonDocument::Compact));
+    }
+    return hash.result().toHex();
+}
+
+bool AnnotationJournal::belongsTo(const Project& project)
+{
+    QFile file(pathFor(project.path()));
+    if (!file.open(QIODevice::ReadOnly)) return true;
+    const QJsonDocument first = QJsonDocument::fromJson(file.readLine());
+    if (!first.isObject() || !first.object().contains(kHeaderKey)) return true;
+    return first.object().value(QStringLiteral("base")).toString().toLatin1() == stateDigest(project);
 }
 
 Expected<std::vector<AnnotationEdit>> AnnotationJournal::read(const QString& journalPath)
@@ -37,6 +68,7 @@ Expected<std::vector<AnnotationEdit>> AnnotationJournal::read(const QString& jou
             if (!complete) break;  // the write the crash interrupted
             return makeError(QStringLiteral("%1:%2: %3").arg(journalPath).arg(lineNumber).arg(error.errorString()));
         }
+        if (doc.object().contains(kHeaderKey)) continue;  // the base digest
         auto edit = AnnotationEdit::fromJson(doc.object());
         if (!edit) return makeError(QStringLiteral("%1:%2: %3").arg(journalPath).arg(lineNumber).arg(edit.message()));
         edits.push_back(std::move(edit).value());
@@ -71,12 +103,17 @@ void AnnotationJournal::setProjectPath(const QString& projectPath)
     file_.setFileName(pathFor(projectPath));
 }
 
-Status AnnotationJournal::append(const AnnotationEdit& edit)
+Status AnnotationJournal::append(const AnnotationEdit& edit, const Project* base)
 {
     if (file_.fileName().isEmpty()) return makeError(QStringLiteral("the annotation journal has no file"));
     if (!file_.isOpen() && !file_.open(QIODevice::WriteOnly | QIODevice::Append))
         return makeError(QStringLiteral("%1: %2").arg(file_.fileName(), file_.errorString()));
-    QByteArray line = QJsonDocument(edit.toJson()).toJson(QJsonDocument::Compact);
+    QByteArray line;
+    if (base && file_.size() == 0) {
+        const QJsonObject header{{kHeaderKey, 1}, {QStringLiteral("base"), QString::fromLatin1(stateDigest(*base))}};
+        line = QJsonDocument(header).toJson(QJsonDocument::Compact) + '\n';
+    }
+    line += QJsonDocument(edit.toJson()).toJson(QJsonDocument::Compact);
     line += '\n';
     if (file_.write(line) != line.size() || !file_.flush())
         return makeError(QStringLiteral("%1: %2").arg(file_.fileName(), file_.errorString()));

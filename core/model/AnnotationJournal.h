@@ -6,6 +6,7 @@
 #include "core/model/AnnotationEdit.h"
 #include "core/util/Expected.h"
 
+#include <QByteArray>
 #include <QFile>
 #include <QString>
 #include <vector>
@@ -19,6 +20,14 @@ public:
     static QString pathFor(const QString& projectPath) { return projectPath + QStringLiteral(".journal"); }
     // A non-empty journal at least as new as the project file: edits that were not saved.
     static bool hasPendingEdits(const QString& projectPath);
+    // Digest of a project's annotation state (classes and every recording's annotations). A journal
+    // starts with the digest of the state its first edit applies to, so a journal that predates the
+    // file's last save (killed between the save's rename and the journal's removal, where file times
+    // can be equal) is recognised by content, not by time stamps.
+    static QByteArray stateDigest(const Project& project);
+    // Whether project (as opened from disk) is the state the journal's edits start from. True for a
+    // journal without a digest (older versions); false when the edits are already in the file.
+    static bool belongsTo(const Project& project);
     // The edits of a journal file. A torn last line (crash while writing) is ignored.
     static Expected<std::vector<AnnotationEdit>> read(const QString& journalPath);
     // Applies the journal of project.path() to project; returns how many edits were applied.
@@ -33,8 +42,9 @@ public:
     // Follows the project to another path (Save As); the old journal is left for discard().
     void setProjectPath(const QString& projectPath);
     QString path() const { return file_.fileName(); }
-    // One line, flushed and fsync'd.
-    Status append(const AnnotationEdit& edit);
+    // One line, flushed and fsync'd. The first edit of a journal file also writes the digest of
+    // base (the state the edit applies to) when given.
+    Status append(const AnnotationEdit& edit, const Project* base = nullptr);
     // After a successful save: the file has everything.
     void discard();
 
