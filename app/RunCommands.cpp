@@ -88,6 +88,7 @@ int cmdRun(const QStringList& args) {
     if (Status s = (*project)->save(bar.progress().sub(0.9, 1.0)); !s) return fail(s.message(), exitFor(s.error()));
     bar.finish();
     for (const auto& w : outcome->written) std::printf("wrote %s\n", qUtf8Printable(w));
+    for (const auto& a : outcome->annotated) std::printf("annotated %s\n", qUtf8Printable(a));
     return Ok;
 }
 

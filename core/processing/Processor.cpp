@@ -37,6 +37,7 @@ QJsonObject Processor::describe() const {
         out.append(QJsonObject{{QStringLiteral("kind"), o.kind},
                                {QStringLiteral("table"), o.table},
                                {QStringLiteral("suffix"), o.suffix},
+                               {QStringLiteral("annotations"), o.annotations},
                                {QStringLiteral("help"), o.help}});
     return {{QStringLiteral("id"), id()},
             {QStringLiteral("name"), name()},

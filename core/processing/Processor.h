@@ -33,12 +33,20 @@ struct OutputSpec {
     bool table = false;
     QString suffix;        // empty for the main output; else stored as "<output>-<suffix>"
     QString help;
+    // Predicted annotations (intervals/instants with label and confidence) added to the
+    // recording of --output instead of an item; kind and table are then ignored.
+    bool annotations = false;
 };
 
 // One produced item. The runner names it after --output (plus suffix) and adds provenance.
+//
+// Annotations go into Recording::annotations of the output's recording. The runner sets each
+// annotation's source to the processor id and its annotator to the output path ("rec/name" plus
+// suffix), so a re-run replaces exactly the annotations of the same processor and output, and
+// records the run's provenance in the recording's metadata under "annotation_provenance"/<path>.
 struct ProcessorOutput {
     QString suffix;
-    std::variant<Stream, Table> item;
+    std::variant<Stream, Table, Annotations> item;
 };
 
 class RunContext {

@@ -9,7 +9,10 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonParseError>
+#include <algorithm>
+#include <cmath>
 #include <optional>
+#include <utility>
 
 namespace athlos {
 namespace {
@@ -34,6 +37,27 @@ QString outputPathFor(const QString& output, const QString& suffix) {
 
 // An item a run may replace; imported data is never overwritten by a processor result.
 bool isImported(const Provenance& p) { return p.processorId.startsWith(QLatin1String("import:")); }
+
+const QLatin1String kAnnotationProvenance("annotation_provenance");
+
+// Replaces the annotations a previous run of the same processor wrote for the same output path
+// (manual annotations and other processors' predictions stay) and records the provenance.
+void putAnnotations(Project& project, const QString& path, Annotations annotations, const Provenance& provenance) {
+    Recording& rec = project.ensureRecording(ItemPath::parse(path).recording);
+    auto& all = rec.annotations;
+    std::erase_if(all, [&](const Annotation& a) { return a.source == provenance.processorId && a.annotator == path; });
+    for (auto& a : annotations) {
+        a.source = provenance.processorId;
+        a.annotator = path;
+        a.confidence = std::clamp(std::isfinite(a.confidence) ? a.confidence : 0.0, 0.0, 1.0);
+        if (a.tEnd < a.tStart) std::swap(a.tStart, a.tEnd);
+        all.push_back(std::move(a));
+    }
+    QJsonObject sources = rec.metadata.value(kAnnotationProvenance).toObject();
+    sources[path] = provenance.toJson();
+    rec.metadata[kAnnotationProvenance] = sources;
+    project.setModified();
+}
 
 }  // namespace
 
@@ -88,6 +112,7 @@ Expected<RunOutcome> runProcessor(Project& project, const Processor& processor, 
     if (!out.isValid())
         return makeError(QStringLiteral("--output '%1' must be <recording>/<name>").arg(request.output));
     for (const auto& o : processor.outputs()) {
+        if (o.annotations) continue;
         const QString path = outputPathFor(request.output, o.suffix);
         const Stream* s = project.stream(path);
         const Table* t = project.table(path);
@@ -120,10 +145,13 @@ Expected<RunOutcome> runProcessor(Project& project, const Processor& processor, 
         if (auto* stream = std::get_if<Stream>(&item.item)) {
             stream->info().provenance = provenance;
             project.putStream(path, std::move(*stream));
+        } else if (auto* table = std::get_if<Table>(&item.item)) {
+            table->provenance = provenance;
+            project.putTable(path, std::move(*table));
         } else {
-            auto& table = std::get<Table>(item.item);
-            table.provenance = provenance;
-            project.putTable(path, std::move(table));
+            putAnnotations(project, path, std::move(std::get<Annotations>(item.item)), provenance);
+            outcome.annotated << path;
+            continue;
         }
         outcome.written << path;
     }
@@ -141,15 +169,32 @@ Expected<RunOutcome> runProcessor(Project& project, const RunRequest& request, c
 
 namespace {
 
-// What an item path held before a pipeline step replaced it, to undo a failed pipeline.
+// What an item path held before a pipeline step replaced it, to undo a failed pipeline. For an
+// annotation output: the recording's annotations and metadata (absent: no such recording).
 struct Snapshot {
     QString path;
     std::optional<Stream> stream;
     std::optional<Table> table;
+    bool annotations = false;
+    std::optional<std::pair<Annotations, QJsonObject>> recording;
 };
 
 void restore(Project& project, const std::vector<Snapshot>& snapshots, bool wasModified) {
     for (auto it = snapshots.rbegin(); it != snapshots.rend(); ++it) {
+        if (it->annotations) {
+            const QString name = ItemPath::parse(it->path).recording;
+            Recording* rec = project.recording(name);
+            if (it->recording && rec) {
+                rec->annotations = it->recording->first;
+                rec->metadata = it->recording->second;
+            } else if (!it->recording && rec && rec->streams.empty() && rec->tables.empty()) {
+                project.removeRecording(name);
+            } else if (rec) {
+                rec->annotations.clear();
+                rec->metadata.remove(kAnnotationProvenance);
+            }
+            continue;
+        }
         project.removeItem(it->path);
         if (it->stream) project.putStream(it->path, *it->stream);
         if (it->table) project.putTable(it->path, *it->table);
@@ -189,7 +234,15 @@ Expected<QStringList> runPipeline(Project& project, const QJsonObject& pipeline,
         auto processor = ProcessorRegistry::instance().find(request.processorId);
         if (!processor) return fail(QStringLiteral("unknown processor '%1'").arg(request.processorId));
         for (const auto& o : processor->outputs()) {
-            Snapshot s{outputPathFor(request.output, o.suffix), {}, {}};
+            Snapshot s;
+            s.path = outputPathFor(request.output, o.suffix);
+            if (o.annotations) {
+                s.annotations = true;
+                if (const Recording* rec = project.recording(ItemPath::parse(s.path).recording))
+                    s.recording = std::make_pair(rec->annotations, rec->metadata);
+                snapshots.push_back(std::move(s));
+                continue;
+            }
             if (const Stream* st = project.stream(s.path)) s.stream = *st;
             if (const Table* t = project.table(s.path)) s.table = *t;
             snapshots.push_back(std::move(s));
@@ -202,6 +255,8 @@ Expected<QStringList> runPipeline(Project& project, const QJsonObject& pipeline,
         QJsonObject done = step;
         done[QStringLiteral("params")] = outcome->parameters;
         done[QStringLiteral("written")] = QJsonArray::fromStringList(outcome->written);
+        if (!outcome->annotated.isEmpty())
+            done[QStringLiteral("annotations")] = QJsonArray::fromStringList(outcome->annotated);
         record.append(done);
     }
     QJsonObject entry{{QStringLiteral("name"), pipeline.value(QStringLiteral("name")).toString()},

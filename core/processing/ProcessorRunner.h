@@ -20,7 +20,8 @@ struct RunRequest {
 };
 
 struct RunOutcome {
-    QStringList written;     // paths of the stored outputs
+    QStringList written;     // paths of the stored outputs (streams and tables)
+    QStringList annotated;   // output paths whose annotations were replaced (see ProcessorOutput)
     QJsonObject parameters;  // validated parameters, as recorded in provenance
 };
 

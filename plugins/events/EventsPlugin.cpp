@@ -1,0 +1,11 @@
+#include "plugins/events/EventsPlugin.h"
+
+#include "plugins/events/GaitEventsProcessor.h"
+
+namespace athlos::events {
+
+std::vector<std::shared_ptr<const Processor>> EventsPlugin::processors() const {
+    return {std::make_shared<GaitEventsProcessor>()};
+}
+
+}  // namespace athlos::events

@@ -1,0 +1,159 @@
+#include "plugins/events/GaitEvaluation.h"
+
+#include "core/io/Importer.h"
+#include "plugins/events/GaitEventsProcessor.h"
+
+#include <QFile>
+#include <QTextStream>
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace athlos::events {
+
+Expected<std::vector<ReferenceStride>> readStrideBorders(const QString& path, double rate) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly | QIODevice::Text)) return makeError(QStringLiteral("%1: %2").arg(path, file.errorString()));
+    if (!(rate > 0.0)) return makeError(QStringLiteral("%1: sampling rate %2 Hz must be positive").arg(path).arg(rate));
+    QTextStream in(&file);
+    const QStringList header = in.readLine().trimmed().split(QLatin1Char(','));
+    const int foot = int(header.indexOf(QStringLiteral("foot"))), start = int(header.indexOf(QStringLiteral("start"))),
+              end = int(header.indexOf(QStringLiteral("end")));
+    if (foot < 0 || start < 0 || end < 0)
+        return makeError(QStringLiteral("%1:1: expected columns foot, start, end (found: %2)").arg(path, header.join(QStringLiteral(", "))));
+    std::vector<ReferenceStride> out;
+    for (int line = 2; !in.atEnd(); ++line) {
+        const QString text = in.readLine().trimmed();
+        if (text.isEmpty()) continue;
+        const QStringList f = text.split(QLatin1Char(','));
+        if (f.size() < header.size())
+            return makeError(QStringLiteral("%1:%2: %3 fields, the header has %4").arg(path).arg(line).arg(f.size()).arg(header.size()));
+        bool okStart = false, okEnd = false;
+        const double s = f[start].toDouble(&okStart), e = f[end].toDouble(&okEnd);
+        if (!okStart) return makeError(QStringLiteral("%1:%2:%3: start '%4' is not a number").arg(path).arg(line).arg(start + 1).arg(f[start]));
+        if (!okEnd) return makeError(QStringLiteral("%1:%2:%3: end '%4' is not a number").arg(path).arg(line).arg(end + 1).arg(f[end]));
+        if (e <= s) return makeError(QStringLiteral("%1:%2:%3: end %4 is not after start %5").arg(path).arg(line).arg(end + 1).arg(e).arg(s));
+        out.push_back({f[foot].trimmed(), s / rate, e / rate});
+    }
+    return out;
+}
+
+void IcScore::add(const IcScore& o) {
+    referenceIcs += o.referenceIcs;
+    matchedIcs += o.matchedIcs;
+    falseIcs += o.falseIcs;
+    referenceStrides += o.referenceStrides;
+    matchedStrides += o.matchedStrides;
+    errorsMs.insert(errorsMs.end(), o.errorsMs.begin(), o.errorsMs.end());
+    const double n = double(errorsMs.size());
+    meanErrorMs = n > 0 ? std::accumulate(errorsMs.begin(), errorsMs.end(), 0.0) / n : 0.0;
+    double ss = 0.0;
+    for (double e : errorsMs) ss += (e - meanErrorMs) * (e - meanErrorMs);
+    sdErrorMs = n > 1 ? std::sqrt(ss / (n - 1.0)) : 0.0;
+}
+
+IcScore scoreInitialContacts(const std::vector<ReferenceStride>& reference, const std::vector<double>& detectedIcs,
+                             const std::vector<std::pair<double, double>>& detectedStrides, double tol) {
+    IcScore score;
+    // Distinct reference ICs and the bouts (chains of strides sharing borders).
+    std::vector<double> ics;
+    std::vector<std::pair<double, double>> bouts;
+    auto strides = reference;
+    std::sort(strides.begin(), strides.end(), [](const auto& a, const auto& b) { return a.tStart < b.tStart; });
+    for (const auto& s : strides) {
+        ics.push_back(s.tStart);
+        ics.push_back(s.tEnd);
+        if (!bouts.empty() && std::abs(bouts.back().second - s.tStart) < 1e-9) bouts.back().second = s.tEnd;
+        else bouts.push_back({s.tStart, s.tEnd});
+    }
+    std::sort(ics.begin(), ics.end());
+    ics.erase(std::unique(ics.begin(), ics.end(), [](double a, double b) { return std::abs(a - b) < 1e-9; }), ics.end());
+    score.referenceIcs = int(ics.size());
+
+    // Greedy one-to-one matching, nearest first (the tolerance is far below half a stride, so at
+    // most one reference IC is in reach of a detection anyway).
+    struct Pair { double d; std::size_t r, k; };
+    std::vector<Pair> pairs;
+    for (std::size_t r = 0; r < ics.size(); ++r)
+        for (std::size_t k = 0; k < detectedIcs.size(); ++k)
+            if (std::abs(detectedIcs[k] - ics[r]) <= tol) pairs.push_back({std::abs(detectedIcs[k] - ics[r]), r, k});
+    std::sort(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) { return a.d < b.d; });
+    std::vector<bool> refUsed(ics.size()), detUsed(detectedIcs.size());
+    for (const auto& p : pairs) {
+        if (refUsed[p.r] || detUsed[p.k]) continue;
+        refUsed[p.r] = detUsed[p.k] = true;
+        score.errorsMs.push_back(1000.0 * (detectedIcs[p.k] - ics[p.r]));
+    }
+    score.matchedIcs = int(score.errorsMs.size());
+    for (std::size_t k = 0; k < detectedIcs.size(); ++k) {
+        if (detUsed[k]) continue;
+        for (const auto& b : bouts)
+            if (detectedIcs[k] >= b.first - tol && detectedIcs[k] <= b.second + tol) {
+                ++score.falseIcs;
+                break;
+            }
+    }
+    score.referenceStrides = int(strides.size());
+    for (const auto& s : strides)
+        for (const auto& d : detectedStrides)
+            if (std::abs(d.first - s.tStart) <= tol && std::abs(d.second - s.tEnd) <= tol) {
+                ++score.matchedStrides;
+                break;
+            }
+    IcScore pooled;
+    pooled.add(score);  // fills mean and SD
+    return pooled;
+}
+
+Expected<std::vector<FootDetection>> detectGaitmapFile(const QString& imuCsv, const GaitEventDetector::Params& params) {
+    ImportOptions options;
+    options.format = QStringLiteral("gaitmap");
+    options.target = QStringLiteral("walk");
+    auto imported = importFile(imuCsv, options);
+    if (!imported) return imported.error();
+    std::vector<FootDetection> out;
+    for (const auto& item : imported->items) {
+        const Stream* s = std::get_if<Stream>(&item.item);
+        if (!s) continue;
+        const int gyr = s->info().columnIndex(QStringLiteral("gyr_x"));
+        auto data = s->data();
+        if (!data) return data.error();
+        if (gyr < 0) return makeError(QStringLiteral("%1: stream '%2' has no gyr_x").arg(imuCsv, s->name()));
+        const StreamData& d = **data;
+        FootDetection f;
+        f.foot = GaitEventsProcessor::footOf(s->info());
+        f.rate = 1.0 / d.medianInterval();
+        const double* g = d.values.data() + gyr;
+        f.swingSign = GaitEventDetector::swingSign(d.t.data(), g, d.rows(), std::size_t(d.columns), 1);
+        GaitEventDetector detector(params, f.swingSign);
+        detector.updateBatch(d.t.data(), g, d.rows(), std::size_t(d.columns), 1);
+        for (const auto& e : detector.events())
+            if (e.type == GaitEventType::InitialContact) f.ics.push_back(e.t);
+        f.strides = detector.strides();
+        out.push_back(std::move(f));
+    }
+    return out;
+}
+
+Expected<GaitValidation> validateGaitmap(const QString& imuCsv, const QString& bordersCsv, double tol,
+                                         const GaitEventDetector::Params& params) {
+    auto feet = detectGaitmapFile(imuCsv, params);
+    if (!feet) return feet.error();
+    if (feet->empty()) return makeError(QStringLiteral("%1: no IMU streams").arg(imuCsv));
+    auto reference = readStrideBorders(bordersCsv, feet->front().rate);
+    if (!reference) return reference.error();
+    GaitValidation v;
+    for (const auto& f : *feet) {
+        std::vector<ReferenceStride> ref;
+        for (const auto& r : *reference)
+            if (r.foot == f.foot) ref.push_back(r);
+        std::vector<std::pair<double, double>> strides;
+        for (const auto& s : f.strides) strides.push_back({s.tStart, s.tEnd});
+        const IcScore score = scoreInitialContacts(ref, f.ics, strides, tol);
+        (f.foot == QLatin1String("left") ? v.left : v.right) = score;
+        v.total.add(score);
+    }
+    return v;
+}
+
+}  // namespace athlos::events

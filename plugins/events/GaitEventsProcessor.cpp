@@ -1,0 +1,172 @@
+#include "plugins/events/GaitEventsProcessor.h"
+
+#include "plugins/events/GaitEventDetector.h"
+
+#include <QCoreApplication>
+#include <cmath>
+#include <limits>
+
+namespace athlos::events {
+
+namespace {
+QString tr(const char* text) { return QCoreApplication::translate("athlos::events", text); }
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+struct Plan {
+    std::shared_ptr<const StreamData> data;
+    int gyr = -1;
+    int axis = 1;
+    int sign = 0;  // 0: auto
+    GaitEventDetector::Params params;
+    QString foot, label;
+};
+
+Expected<Plan> prepare(const RunContext& c) {
+    Plan plan;
+    const QString path = c.inputPath(0);
+    const Stream* stream = c.stream(0);
+    if (!stream) return makeError(QStringLiteral("input stream '%1' is missing").arg(path));
+    const StreamInfo& info = stream->info();
+    plan.gyr = info.columnIndex(QStringLiteral("gyr_x"));
+    if (plan.gyr < 0 || info.columnIndex(QStringLiteral("gyr_y")) != plan.gyr + 1 ||
+        info.columnIndex(QStringLiteral("gyr_z")) != plan.gyr + 2)
+        return makeError(QStringLiteral("stream '%1' needs adjacent columns gyr_x, gyr_y, gyr_z (it has: %2)")
+                             .arg(path, info.columnNames().join(QStringLiteral(", "))));
+    for (int k = 0; k < 3; ++k) {
+        const QString unit = info.columns[std::size_t(plan.gyr + k)].unit;
+        if (!unit.isEmpty() && unit != QLatin1String("rad/s"))
+            return makeError(QStringLiteral("stream '%1': column %2 is in '%3'; gait-events expects rad/s")
+                                 .arg(path, info.columns[std::size_t(plan.gyr + k)].name, unit));
+    }
+    const QString axis = c.text(QStringLiteral("ml_axis"));
+    plan.axis = axis == QLatin1String("x") ? 0 : axis == QLatin1String("z") ? 2 : 1;
+    const QString sign = c.text(QStringLiteral("swing_sign"));
+    plan.sign = sign == QLatin1String("positive") ? 1 : sign == QLatin1String("negative") ? -1 : 0;
+    auto& p = plan.params;
+    p.swingThreshold = c.number(QStringLiteral("swing_threshold"));
+    p.minStrideTime = c.number(QStringLiteral("min_stride"));
+    p.maxStrideTime = c.number(QStringLiteral("max_stride"));
+    p.tcWindow = c.number(QStringLiteral("tc_window"));
+    p.icWindow = c.number(QStringLiteral("ic_window"));
+    if (p.maxStrideTime <= p.minStrideTime)
+        return makeError(QStringLiteral("max_stride: %1 s must be longer than min_stride (%2 s)").arg(p.maxStrideTime).arg(p.minStrideTime));
+    auto data = stream->data();
+    if (!data) return makeError(QStringLiteral("cannot read input stream '%1': %2").arg(path, data.message()));
+    plan.data = *data;
+    if (plan.data->rows() < 2) return makeError(QStringLiteral("stream '%1' has fewer than 2 samples").arg(path));
+    const double ts = plan.data->medianInterval();
+    if (!(ts > 0.0) || 4.0 * ts > p.icWindow)
+        return makeError(QStringLiteral("ic_window: %1 s spans fewer than 4 samples of '%2' (interval %3 s)").arg(p.icWindow).arg(path).arg(ts));
+    plan.foot = GaitEventsProcessor::footOf(info);
+    plan.label = c.text(QStringLiteral("label"));
+    if (plan.label.isEmpty()) plan.label = plan.foot.isEmpty() ? QStringLiteral("stride") : QStringLiteral("stride ") + plan.foot;
+    return plan;
+}
+}  // namespace
+
+QString GaitEventsProcessor::footOf(const StreamInfo& info) {
+    for (const QString& s : {info.name, info.attributes.value(QStringLiteral("sensor")).toString()}) {
+        const QString l = s.toLower();
+        if (l.contains(QLatin1String("left"))) return QStringLiteral("left");
+        if (l.contains(QLatin1String("right"))) return QStringLiteral("right");
+    }
+    return {};
+}
+
+QString GaitEventsProcessor::name() const { return tr("Gait events (foot IMU)"); }
+
+QString GaitEventsProcessor::description() const {
+    return tr("Initial contact, toe-off and mid-stance from the medio-lateral gyroscope of a foot-mounted IMU "
+              "(negative peaks of the swing-positive signal after and before each mid-swing peak; minimum of the "
+              "gyroscope norm in stance). Writes the strides (IC to next IC) as predicted annotations with a "
+              "confidence, and a table of the events.");
+}
+
+ParameterSpecs GaitEventsProcessor::parameters() const {
+    const GaitEventDetector::Params d;
+    return {
+        ParameterSpec::choice(QStringLiteral("ml_axis"), {QStringLiteral("x"), QStringLiteral("y"), QStringLiteral("z")},
+                              QStringLiteral("y"), tr("Sensor axis along the medio-lateral direction (y when x points forward and z up).")),
+        ParameterSpec::choice(QStringLiteral("swing_sign"), {QStringLiteral("auto"), QStringLiteral("positive"), QStringLiteral("negative")},
+                              QStringLiteral("auto"), tr("Sign of the medio-lateral angular velocity during swing; auto: the sign of "
+                                                         "the longest sustained rotation.")),
+        ParameterSpec::number(QStringLiteral("swing_threshold"), d.swingThreshold, 0.0, kInf, QStringLiteral("rad/s"),
+                              tr("Minimum mid-swing angular velocity of a stride.")),
+        ParameterSpec::number(QStringLiteral("min_stride"), d.minStrideTime, 0.05, kInf, QStringLiteral("s"),
+                              tr("Shortest stride; closer swing peaks count as one.")),
+        ParameterSpec::number(QStringLiteral("max_stride"), d.maxStrideTime, 0.1, kInf, QStringLiteral("s"),
+                              tr("Longest stride; longer intervals between contacts are gaps.")),
+        ParameterSpec::number(QStringLiteral("tc_window"), d.tcWindow, 0.01, kInf, QStringLiteral("s"),
+                              tr("Search window for toe-off before the swing peak.")),
+        ParameterSpec::number(QStringLiteral("ic_window"), d.icWindow, 0.01, kInf, QStringLiteral("s"),
+                              tr("Search window for initial contact after the swing peak.")),
+        ParameterSpec::text(QStringLiteral("label"), QString(),
+                            tr("Annotation label of the strides; empty: \"stride left\" / \"stride right\" from the stream name.")),
+    };
+}
+
+QList<InputSpec> GaitEventsProcessor::inputs() const {
+    return {InputSpec{QStringLiteral("imu"), {QStringLiteral("imu")}, false, false,
+                      tr("Foot-mounted IMU: gyr_x..z (rad/s) in the sensor frame.")}};
+}
+
+QList<OutputSpec> GaitEventsProcessor::outputs() const {
+    return {OutputSpec{QStringLiteral("gait-events"), true, QString(), tr("Events: t (s), type (ic, tc, min_vel), foot.")},
+            OutputSpec{QString(), false, QString(), tr("Strides (IC to next IC) as predicted annotations with confidence."), true}};
+}
+
+Status GaitEventsProcessor::validate(const RunContext& context) const {
+    auto plan = prepare(context);
+    return plan ? Status() : Status(plan.error());
+}
+
+Expected<std::vector<ProcessorOutput>> GaitEventsProcessor::run(const RunContext& context) const {
+    auto plan = prepare(context);
+    if (!plan) return plan.error();
+    const StreamData& d = *plan->data;
+    const double* gyr = d.values.data() + plan->gyr;
+    const auto stride = std::size_t(d.columns);
+    const int sign = plan->sign ? plan->sign : GaitEventDetector::swingSign(d.t.data(), gyr, d.rows(), stride, plan->axis);
+    GaitEventDetector detector(plan->params, sign);
+    const std::size_t chunk = 20000;
+    for (std::size_t k = 0; k < d.rows(); ++k) {
+        const double* g = gyr + k * stride;
+        detector.update(d.t[k], g[plan->axis], std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]));
+        if (k % chunk == chunk - 1) {
+            if (context.isCancelled()) return cancelledError();
+            context.report(0.95 * double(k) / double(d.rows()), QStringLiteral("detecting gait events"));
+        }
+    }
+    detector.finish();
+
+    Table table;
+    table.kind = QStringLiteral("gait-events");
+    table.attributes = QJsonObject{{QStringLiteral("swing_sign"), sign}, {QStringLiteral("foot"), plan->foot},
+                                   {QStringLiteral("strides"), int(detector.strides().size())}};
+    TableColumn t{QStringLiteral("t"), QStringLiteral("s"), false, {}, {}};
+    TableColumn type{QStringLiteral("type"), QString(), true, {}, {}};
+    TableColumn foot{QStringLiteral("foot"), QString(), true, {}, {}};
+    for (const auto& e : detector.events()) {
+        t.numbers.push_back(e.t);
+        type.texts << QString::fromLatin1(gaitEventName(e.type));
+        foot.texts << plan->foot;
+    }
+    table.columns = {std::move(t), std::move(type), std::move(foot)};
+
+    Annotations annotations;
+    for (const auto& s : detector.strides()) {
+        Annotation a;
+        a.label = plan->label;
+        a.tStart = s.tStart;
+        a.tEnd = s.tEnd;
+        a.confidence = s.confidence;
+        annotations.push_back(std::move(a));  // source and annotator are set by the runner
+    }
+    context.report(1.0);
+    std::vector<ProcessorOutput> outputs;
+    outputs.push_back({QString(), std::move(table)});
+    outputs.push_back({QString(), std::move(annotations)});
+    return outputs;
+}
+
+}  // namespace athlos::events
