@@ -1,7 +1,10 @@
 #pragma once
 // The main window: project tree and details on the left, time-series and trajectory panels in
 // the centre. A thin shell: every change to the project goes through core (Project, importFile,
-// applyImport, save), long jobs run on worker threads.
+// applyImport, save), long jobs run on worker threads. The window composes its parts and
+// implements Workspace; the parts do the work: ProjectSession (new, open, save, autosave,
+// import, journal recovery), WindowActions (menus), PanelLayout (plots, docks, stored layout),
+// ProjectBrowser (tree, details) and ProcessorLauncher (processor runs).
 #include "ui/Workspace.h"
 
 #include <QList>
@@ -11,12 +14,7 @@
 #include <memory>
 
 class QAction;
-class QCustomPlot;
 class QDockWidget;
-class QMenu;
-class QModelIndex;
-class QTabWidget;
-class QTimer;
 class QTextBrowser;
 class QTreeView;
 
@@ -30,10 +28,15 @@ namespace athlos::ui {
 class AnnotationEditor;
 class AnnotationLayer;
 class AnnotationPanel;
+class PanelLayout;
+class ProcessorLauncher;
+class ProjectBrowser;
+class ProjectSession;
 class ProjectTreeModel;
 class TimeController;
 class TimeSeriesPanel;
 class TrajectoryPanel;
+class WindowActions;
 
 class MainWindow : public QMainWindow, public Workspace {
     Q_OBJECT
@@ -89,7 +92,7 @@ public:
     void waitForPlots();
 
     // The one time cursor every time panel follows.
-    TimeController* timeController() const override { return timeController_; }
+    TimeController* timeController() const override;
     void addDock(QDockWidget* dock, Qt::DockWidgetArea area = Qt::BottomDockWidgetArea) override;
     // Another time-series panel in a dock, linked to the cursor, plotting path ("rec/stream").
     TimeSeriesPanel* addTimeSeriesPanel(const QString& path);
@@ -110,11 +113,11 @@ public:
     // Saves without dialog and without taking input away; annotation edits wait meanwhile.
     bool autosave();
 
-    TimeSeriesPanel* timeSeriesPanel() const { return timeSeries_; }
-    TrajectoryPanel* trajectoryPanel() const { return trajectory_; }
-    ProjectTreeModel* treeModel() const { return treeModel_; }
-    QTreeView* treeView() const { return tree_; }
-    QTextBrowser* detailsView() const { return details_; }
+    TimeSeriesPanel* timeSeriesPanel() const;
+    TrajectoryPanel* trajectoryPanel() const;
+    ProjectTreeModel* treeModel() const;
+    QTreeView* treeView() const;
+    QTextBrowser* detailsView() const;
 
 signals:
     void errorReported(const QString& message);
@@ -126,82 +129,33 @@ protected:
     void dropEvent(QDropEvent* event) override;
 
 private:
-    void createActions();
-    void createMenus();
-    void createDocks();
-    void createToolMenus(QMenu* file, QMenu* processing, QMenu* view);
-    void removeExtraPanels();
-    void addExportMenu(QCustomPlot* plot);
+    // The window's parts; each has one job and works on the window's shared state below.
+    friend class ProjectSession;
+    friend class ProcessorLauncher;
+    friend class WindowActions;
+
     void createAnnotationTool();
-    // Offers (interactive) or applies (tests, offscreen) the crash journal of a just opened project.
-    void recoverJournal();
-    void afterSave();
-    void updateTimeBounds();
-    void showTreeContextMenu(const QPoint& pos);
     void updateTitle();
-    void updateActions();
-    void rebuildRecentMenu();
-    bool maybeSaveChanges();
     // While a background job runs, the window takes no commands (the progress dialog appears
     // only after a moment, and until then the window would still accept input).
     void setBusy(bool busy);
-    void waitForLoads();
     void showError(const QString& title, const QString& message);
-    void showDetails(const QString& path);
     void plotItem(const QString& path);
-    std::shared_ptr<const Stream> sharedStream(const QString& path) const;
-    void onCurrentChanged(const QModelIndex& current);
-    void onActivated(const QModelIndex& index);
-
-    void newProjectDialog();
-    void openProjectDialog();
-    void saveAsDialog();
-    void importDialog();
-    void about();
+    void onActivated(const QString& path);
 
     std::shared_ptr<Project> project_;
     bool interactive_ = true;
     bool busy_ = false;  // a background job runs inside a nested event loop
 
-    ProjectTreeModel* treeModel_ = nullptr;
-    QTreeView* tree_ = nullptr;
-    QTextBrowser* details_ = nullptr;
-    QTabWidget* tabs_ = nullptr;
-    TimeSeriesPanel* timeSeries_ = nullptr;
-    TrajectoryPanel* trajectory_ = nullptr;
-    TimeController* timeController_ = nullptr;
-    struct ExtraPanel {
-        QDockWidget* dock = nullptr;
-        TimeSeriesPanel* panel = nullptr;
-        QString path;
-    };
-    QList<ExtraPanel> extraPanels_;
+    PanelLayout* panels_ = nullptr;
+    ProjectBrowser* browser_ = nullptr;
     AnnotationEditor* annotationEditor_ = nullptr;
     AnnotationLayer* annotationLayer_ = nullptr;
     AnnotationPanel* annotationPanel_ = nullptr;
     QDockWidget* annotationDock_ = nullptr;
-    QTimer* autosaveTimer_ = nullptr;
-    int nextPanelNumber_ = 1;
-
-    QMenu* recentMenu_ = nullptr;
-    QMenu* viewMenu_ = nullptr;
-    QAction* newAction_ = nullptr;
-    QAction* openAction_ = nullptr;
-    QAction* saveAction_ = nullptr;
-    QAction* saveAsAction_ = nullptr;
-    QAction* importAction_ = nullptr;
-    QAction* quitAction_ = nullptr;
-    QAction* aboutAction_ = nullptr;
-    QAction* runProcessorAction_ = nullptr;
-    QAction* addPanelAction_ = nullptr;
-    QAction* showAllAction_ = nullptr;
-    QAction* exportViewAction_ = nullptr;
-    QAction* undoAction_ = nullptr;
-    QAction* redoAction_ = nullptr;
-    QAction* annotateModeAction_ = nullptr;
-    QAction* addClassAction_ = nullptr;
-    QAction* preferencesAction_ = nullptr;
-    QList<QAction*> toolActions_;
+    std::unique_ptr<ProjectSession> session_;
+    std::unique_ptr<ProcessorLauncher> launcher_;
+    std::unique_ptr<WindowActions> actions_;
 };
 
 }  // namespace athlos::ui

@@ -13,7 +13,6 @@
 #include <QTimer>
 #include <QToolButton>
 #include <QVBoxLayout>
-#include <QtConcurrent/QtConcurrentRun>
 #include <qcustomplot.h>
 
 #include <algorithm>
@@ -107,17 +106,14 @@ TimeSeriesPanel::TimeSeriesPanel(QWidget* parent) : QWidget(parent)
     layout->addWidget(plot_, 1);
     layout->addWidget(readout_);
 
-    connect(&watcher_, &QFutureWatcher<std::shared_ptr<Loaded>>::finished, this, &TimeSeriesPanel::applyLoaded);
     updateHeader();
 }
 
 TimeSeriesPanel::~TimeSeriesPanel() = default;
 
-std::shared_ptr<TimeSeriesPanel::Loaded> TimeSeriesPanel::load(std::shared_ptr<const Stream> stream,
-                                                               quint64 generation)
+std::shared_ptr<TimeSeriesPanel::Loaded> TimeSeriesPanel::load(const std::shared_ptr<const Stream>& stream)
 {
     auto result = std::make_shared<Loaded>();
-    result->generation = generation;
     auto data = stream->data();
     if (!data) {
         result->error = data.message();
@@ -138,14 +134,14 @@ void TimeSeriesPanel::setStream(std::shared_ptr<const Stream> stream, const QStr
     stream_ = std::move(stream);
     title_ = title.isEmpty() ? stream_->name() : title;
     requestedColumns_ = columns;
-    const quint64 generation = generation_;
-    watcher_.setFuture(QtConcurrent::run(&TimeSeriesPanel::load, stream_, generation));
+    loader_.start<std::shared_ptr<Loaded>>([stream = stream_] { return load(stream); },
+                                           [this](std::shared_ptr<Loaded> result) { applyLoaded(std::move(result)); });
     updateHeader();
 }
 
 void TimeSeriesPanel::clear()
 {
-    ++generation_;  // results of loads still running are dropped when they arrive
+    loader_.cancel();  // the result of a load still running is dropped when it arrives
     stream_.reset();
     loaded_.reset();
     title_.clear();
@@ -164,23 +160,16 @@ void TimeSeriesPanel::clear()
 
 bool TimeSeriesPanel::isLoading() const
 {
-    return stream_ && appliedGeneration_ != generation_;
+    return loader_.isLoading();
 }
 
 void TimeSeriesPanel::waitForLoad()
 {
-    if (!isLoading()) return;
-    watcher_.waitForFinished();
-    applyLoaded();
+    loader_.waitForLoad();
 }
 
-void TimeSeriesPanel::applyLoaded()
+void TimeSeriesPanel::applyLoaded(std::shared_ptr<Loaded> result)
 {
-    if (!watcher_.isFinished() || watcher_.future().resultCount() == 0) return;
-    std::shared_ptr<Loaded> result = watcher_.result();
-    if (!result || result->generation != generation_ || appliedGeneration_ == generation_) return;
-    appliedGeneration_ = generation_;
-
     if (!result->error.isEmpty()) {
         error_ = result->error;
         updateHeader();

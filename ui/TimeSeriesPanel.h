@@ -4,8 +4,8 @@
 // column (min and max, in time order), or the raw samples once few enough are visible. That keeps
 // dragging and zooming fluid with 10 million samples per column.
 #include "ui/MinMaxPyramid.h"
+#include "ui/PanelLoader.h"
 
-#include <QFutureWatcher>
 #include <QStringList>
 #include <QWidget>
 #include <memory>
@@ -90,14 +90,13 @@ protected:
 
 private:
     struct Loaded {
-        quint64 generation = 0;
         std::shared_ptr<const StreamData> data;
         std::vector<MinMaxPyramid> pyramids;  // one per stream column
         QString error;
     };
-    static std::shared_ptr<Loaded> load(std::shared_ptr<const Stream> stream, quint64 generation);
+    static std::shared_ptr<Loaded> load(const std::shared_ptr<const Stream>& stream);
 
-    void applyLoaded();
+    void applyLoaded(std::shared_ptr<Loaded> result);
     void rebuildGraphs();
     void rebuildColumnMenu();
     void updateHeader();
@@ -128,9 +127,7 @@ private:
     QStringList requestedColumns_;
     std::vector<int> visible_;  // stream column indices with a graph, in graph order
     std::shared_ptr<Loaded> loaded_;
-    QFutureWatcher<std::shared_ptr<Loaded>> watcher_;
-    quint64 generation_ = 0;
-    quint64 appliedGeneration_ = 0;
+    PanelLoader loader_;
     bool autoFitY_ = true;
     bool decimating_ = false;
     int decimatedWidth_ = 0;

@@ -7,7 +7,6 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QVBoxLayout>
-#include <QtConcurrent/QtConcurrentRun>
 #include <qcustomplot.h>
 
 #include <algorithm>
@@ -74,7 +73,6 @@ TrajectoryPanel::TrajectoryPanel(QWidget* parent) : QWidget(parent)
     layout->addLayout(header);
     layout->addWidget(plot_, 1);
 
-    connect(&watcher_, &QFutureWatcher<std::shared_ptr<Loaded>>::finished, this, &TrajectoryPanel::applyLoaded);
     updateHeader();
 }
 
@@ -88,11 +86,9 @@ bool TrajectoryPanel::isPositionStream(const StreamInfo& info)
            && info.columnIndex(QStringLiteral("y")) >= 0;
 }
 
-std::shared_ptr<TrajectoryPanel::Loaded> TrajectoryPanel::load(std::shared_ptr<const Stream> stream,
-                                                               quint64 generation)
+std::shared_ptr<TrajectoryPanel::Loaded> TrajectoryPanel::load(const std::shared_ptr<const Stream>& stream)
 {
     auto result = std::make_shared<Loaded>();
-    result->generation = generation;
     const int cx = stream->info().columnIndex(QStringLiteral("x"));
     const int cy = stream->info().columnIndex(QStringLiteral("y"));
     if (cx < 0 || cy < 0) {
@@ -128,13 +124,14 @@ void TrajectoryPanel::setStream(std::shared_ptr<const Stream> stream, const QStr
     const Column& yc = info.columns.at(std::size_t(std::max(0, info.columnIndex(QStringLiteral("y")))));
     plot_->xAxis->setLabel(PlotStyle::columnLabel(xc.name, xc.unit));
     plot_->yAxis->setLabel(PlotStyle::columnLabel(yc.name, yc.unit));
-    watcher_.setFuture(QtConcurrent::run(&TrajectoryPanel::load, stream_, generation_));
+    loader_.start<std::shared_ptr<Loaded>>([stream = stream_] { return load(stream); },
+                                           [this](std::shared_ptr<Loaded> result) { applyLoaded(std::move(result)); });
     updateHeader();
 }
 
 void TrajectoryPanel::clear()
 {
-    ++generation_;
+    loader_.cancel();  // the result of a load still running is dropped when it arrives
     stream_.reset();
     title_.clear();
     error_.clear();
@@ -160,22 +157,16 @@ void TrajectoryPanel::setNote(const QString& note)
 
 bool TrajectoryPanel::isLoading() const
 {
-    return stream_ && appliedGeneration_ != generation_;
+    return loader_.isLoading();
 }
 
 void TrajectoryPanel::waitForLoad()
 {
-    if (!isLoading()) return;
-    watcher_.waitForFinished();
-    applyLoaded();
+    loader_.waitForLoad();
 }
 
-void TrajectoryPanel::applyLoaded()
+void TrajectoryPanel::applyLoaded(std::shared_ptr<Loaded> result)
 {
-    if (!watcher_.isFinished() || watcher_.future().resultCount() == 0) return;
-    std::shared_ptr<Loaded> result = watcher_.result();
-    if (!result || result->generation != generation_ || appliedGeneration_ == generation_) return;
-    appliedGeneration_ = generation_;
     if (!result->error.isEmpty()) {
         error_ = result->error;
         updateHeader();

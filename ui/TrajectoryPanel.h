@@ -1,7 +1,8 @@
 #pragma once
 // The 2D path of a position stream (x against y) with equal axis scaling, so a 400 m track looks
 // like one, and markers at start and end. Samples load on a worker thread.
-#include <QFutureWatcher>
+#include "ui/PanelLoader.h"
+
 #include <QList>
 #include <QPointF>
 #include <QString>
@@ -64,13 +65,12 @@ signals:
 
 private:
     struct Loaded {
-        quint64 generation = 0;
         QList<double> t, x, y;
         QString error;
     };
-    static std::shared_ptr<Loaded> load(std::shared_ptr<const Stream> stream, quint64 generation);
+    static std::shared_ptr<Loaded> load(const std::shared_ptr<const Stream>& stream);
 
-    void applyLoaded();
+    void applyLoaded(std::shared_ptr<Loaded> result);
     void keepEqualScale();
     void updateHeader();
 
@@ -86,9 +86,7 @@ private:
     QString title_;
     QString error_;
     QString note_;
-    QFutureWatcher<std::shared_ptr<Loaded>> watcher_;
-    quint64 generation_ = 0;
-    quint64 appliedGeneration_ = 0;
+    PanelLoader loader_;
     bool hasData_ = false;
     bool userFramed_ = false;  // the user dragged/zoomed: keep the view on resize, just rescale
     double minX_ = 0, maxX_ = 0, minY_ = 0, maxY_ = 0;
