@@ -52,6 +52,17 @@ struct Innovation {
 
 constexpr double kNoGate = std::numeric_limits<double>::infinity();
 
+// The gated innovation of z from a lower Cholesky factor L of Σ (only L's lower triangle is read):
+// d² = |L⁻¹ z|², log det Σ = 2 Σ log|L_ii| (the unscented filters; the EKF inverts Σ directly).
+template <int M>
+Innovation innovationFromFactor(const Matrix<M, M>& L, const Vector<M>& z, double gate) {
+    Innovation innovation;
+    innovation.mahalanobis2 = Vector<M>(L.template triangularView<Eigen::Lower>().solve(z)).squaredNorm();
+    innovation.logDetSigma = 2.0 * L.diagonal().array().abs().log().sum();
+    innovation.accepted = innovation.mahalanobis2 <= gate;
+    return innovation;
+}
+
 // In-place rank-1 Cholesky update/downdate of a lower-triangular factor: L Lᵀ + sign·v vᵀ.
 // Returns false when a downdate would lose positive definiteness (L is then left unchanged).
 template <int N>

@@ -2,9 +2,10 @@
 // Square-root UKF (van der Merwe & Wan 2001; thesis §2.3.5): propagates a lower Cholesky factor S
 // (P = S Sᵀ) through QR decompositions and rank-1 Cholesky updates, which keeps P positive definite
 // by construction. Same weights, gating and interface as Ukf.
-#include "core/estimation/Ukf.h"
+#include "core/estimation/UnscentedTransform.h"
 
 #include <Eigen/QR>
+#include <utility>
 
 namespace athlos::estimation {
 
@@ -30,48 +31,19 @@ public:
     void reset(const StateVector& x0, const StateMatrix& P0) { state_ = {x0, robustCholesky<N>(P0)}; }
 
     StateMatrix predict(double T, double t) {
-        const auto xi = sigmaPoints(model_, state_.x, state_.S, weights_.gamma);
-        std::array<StateVector, kPoints> f;
-        for (int i = 0; i < kPoints; ++i) f[i] = model_.predict(xi[i], T, t, nullptr);
-        StateVector mean = StateVector::Zero();
-        for (int i = 1; i < kPoints; ++i) mean += weights_.mean(i) * model_.difference(f[i], f[0]);
-        StateVector x = f[0] + mean;
-        model_.normalize(x);
-        // S⁻ = qr([√w_i (ξ_{1:2d} − x̂), √Q]), then cholupdate(S⁻, ξ_0 − x̂, w0c).
-        Matrix<N, 2 * N + N> A;
-        const double sw = std::sqrt(weights_.wi);
-        for (int i = 1; i < kPoints; ++i) A.col(i - 1) = sw * model_.difference(f[i], x);
-        A.template rightCols<N>() = robustCholesky<N>(model_.processNoise(T, t));
-        StateMatrix S = triangularFactor<N, 3 * N>(A);
-        cholUpdate<N>(S, model_.difference(f[0], x), weights_.w0c);
-        StateMatrix C = StateMatrix::Zero();
-        for (int i = 0; i < kPoints; ++i)
-            C += weights_.cov(i) * model_.difference(xi[i], state_.x) * model_.difference(f[i], x).transpose();
-        state_ = {x, S};
+        const auto s = propagateSigmaPoints(model_, weights_, state_.x, state_.S, T, t);
+        const StateMatrix S = spreadFactor<N>(s.d, model_.processNoise(T, t));
+        const StateMatrix C = weightedOuterSum(weights_, s.dx, s.d);
+        state_ = {s.mean, S};
         return C;
     }
 
     Innovation update(const Measurement& y, double t, double gate = kNoGate) {
-        const auto xi = sigmaPoints(model_, state_.x, state_.S, weights_.gamma);
-        std::array<Measurement, kPoints> h;
-        for (int i = 0; i < kPoints; ++i) h[i] = model_.measure(xi[i], t);
-        Measurement yHat = h[0];
-        for (int i = 1; i < kPoints; ++i) yHat += weights_.mean(i) * model_.residual(h[i], h[0]);
-        Matrix<M, 2 * N + M> A;
-        const double sw = std::sqrt(weights_.wi);
-        for (int i = 1; i < kPoints; ++i) A.col(i - 1) = sw * model_.residual(h[i], yHat);
-        A.template rightCols<M>() = robustCholesky<M>(model_.measurementNoise(t));
-        Matrix<M, M> Sy = triangularFactor<M, 2 * N + M>(A);
-        cholUpdate<M>(Sy, model_.residual(h[0], yHat), weights_.w0c);
-        Matrix<N, M> Pxy = Matrix<N, M>::Zero();
-        for (int i = 0; i < kPoints; ++i)
-            Pxy += weights_.cov(i) * model_.difference(xi[i], state_.x) * model_.residual(h[i], yHat).transpose();
-
-        const Measurement z = model_.residual(y, yHat);
-        Innovation innovation;
-        innovation.mahalanobis2 = Measurement(Sy.template triangularView<Eigen::Lower>().solve(z)).squaredNorm();
-        innovation.logDetSigma = 2.0 * Sy.diagonal().array().abs().log().sum();
-        innovation.accepted = innovation.mahalanobis2 <= gate;
+        const auto s = measureSigmaPoints(model_, weights_, state_.x, state_.S, t);
+        const Matrix<M, M> Sy = spreadFactor<M>(s.d, model_.measurementNoise(t));
+        const Matrix<N, M> Pxy = weightedOuterSum(weights_, s.dx, s.d);
+        const Measurement z = model_.residual(y, s.mean);
+        const Innovation innovation = innovationFromFactor<M>(Sy, z, gate);
         residual_ = z;
         if (!innovation.accepted) return innovation;
         // K = (Pxy / Syᵀ) / Sy; U = K Sy; S = cholupdate(S, U, −1) column by column.
@@ -95,6 +67,19 @@ public:
     Model& model() { return model_; }
 
 private:
+    // Lower factor of Σ_i w_c,i d_i d_iᵀ + noise: qr([√w_i d_{1:2N}, √noise]), then
+    // cholupdate(·, d_0, w0c) (a downdate when w0c < 0).
+    template <int D>
+    Matrix<D, D> spreadFactor(const std::array<Vector<D>, kPoints>& d, const Matrix<D, D>& noise) const {
+        Matrix<D, 2 * N + D> A;
+        const double sw = std::sqrt(weights_.wi);
+        for (int i = 1; i < kPoints; ++i) A.col(i - 1) = sw * d[i];
+        A.template rightCols<D>() = robustCholesky<D>(noise);
+        Matrix<D, D> S = triangularFactor<D, 2 * N + D>(A);
+        cholUpdate<D>(S, d[0], weights_.w0c);
+        return S;
+    }
+
     // Lower factor L with L Lᵀ = A Aᵀ, from the QR decomposition of Aᵀ (positive diagonal).
     template <int R, int C>
     static Matrix<R, R> triangularFactor(const Matrix<R, C>& A) {

@@ -10,10 +10,7 @@ Quat initialOrientation(const Vec3& acc, const Vec3* mag) {
 }
 
 void Strapdown::update(const Vec3& gyr, const Vec3& acc, const Vec3* mag) {
-    if (!initialised_) {
-        q_ = initialOrientation(acc, mag);
-        initialised_ = true;
-    }
+    initialiseFrom(acc, mag);
     q_ = math::integrateBodyRate(q_, gyr, ts_);
 }
 
@@ -24,23 +21,27 @@ Vec3 magReference(const Quat& q, const Vec3& m) {
     const Vec3 h = q * m;
     return {0.0, std::hypot(h.x(), h.y()), h.z()};
 }
+
+// Σ v_i × s_i over the normalised measurements s_i (accelerometer; magnetometer when present) and
+// their earth references as the estimate q expects them in the sensor frame, v_i = Rᵀd_i. This is
+// Madgwick's tangent-space gradient; Mahony's error e = Σ s_i × v_i is its negative.
+Vec3 referenceGradient(const Quat& q, const Vec3& accUnit, const Vec3* mag) {
+    const Quat qc = q.conjugate();
+    Vec3 g = (qc * Vec3::UnitZ()).cross(accUnit);
+    if (mag && mag->norm() > 0.0) {
+        const Vec3 m = mag->normalized();
+        g += (qc * magReference(q, m)).cross(m);
+    }
+    return g;
+}
 }  // namespace
 
 void Madgwick::update(const Vec3& gyr, const Vec3& acc, const Vec3* mag) {
-    if (!initialised_) {
-        q_ = initialOrientation(acc, mag);
-        initialised_ = true;
-    }
+    initialiseFrom(acc, mag);
     Vec3 w = gyr;
     const double an = acc.norm();
     if (an > 0.0) {
-        const Quat qc = q_.conjugate();
-        const Vec3 s = acc / an;
-        Vec3 g = (qc * Vec3::UnitZ()).cross(s);
-        if (mag && mag->norm() > 0.0) {
-            const Vec3 m = mag->normalized();
-            g += (qc * magReference(q_, m)).cross(m);
-        }
+        const Vec3 g = referenceGradient(q_, acc / an, mag);
         const double gn = g.norm();
         if (gn > 1e-12) w -= 2.0 * p_.beta * g / gn;  // q̇ = ½ q⊗ω − β ∇f/|∇f|  (eq. 43)
     }
@@ -48,20 +49,11 @@ void Madgwick::update(const Vec3& gyr, const Vec3& acc, const Vec3* mag) {
 }
 
 void Mahony::update(const Vec3& gyr, const Vec3& acc, const Vec3* mag) {
-    if (!initialised_) {
-        q_ = initialOrientation(acc, mag);
-        initialised_ = true;
-    }
+    initialiseFrom(acc, mag);
     const double an = acc.norm();
     Vec3 w = gyr;
     if (an > 0.0) {
-        const Quat qc = q_.conjugate();
-        const Vec3 s = acc / an;
-        Vec3 e = s.cross(qc * Vec3::UnitZ());
-        if (mag && mag->norm() > 0.0) {
-            const Vec3 m = mag->normalized();
-            e += m.cross(qc * magReference(q_, m));
-        }
+        const Vec3 e = -referenceGradient(q_, acc / an, mag);
         if (p_.ki > 0.0) integral_ += p_.ki * e * ts_;
         w += p_.kp * e + integral_;
     }

@@ -6,22 +6,45 @@
 
 namespace athlos::inertial {
 
-// Plain strapdown integration of the gyroscope (Fasel, spec §2): q ← q ⊗ exp(ω dt / 2).
-class Strapdown {
+// Initial orientation from one sample: acc (+ mag).
+Quat initialOrientation(const Vec3& acc, const Vec3* mag);
+
+// What Strapdown, Madgwick and Mahony share: a quaternion that starts at the orientation of the
+// first sample (unless the caller sets one), and no rest or magnetic-disturbance detection.
+template <class Filter>
+class QuaternionBaseline {
 public:
-    explicit Strapdown(double ts) : ts_(ts) {}
-    void update(const Vec3& gyr, const Vec3& acc, const Vec3* mag);
-    void updateBatch(const ImuBatch& in, OrientationTrack& out) { runBatch(*this, in, out); }
+    void updateBatch(const ImuBatch& in, OrientationTrack& out) { runBatch(static_cast<Filter&>(*this), in, out); }
     Quat quaternion() const { return q_; }
-    Vec3 bias() const { return Vec3::Zero(); }
     bool restDetected() const { return false; }
     bool magDisturbed() const { return false; }
-    void setQuaternion(const Quat& q) { q_ = q; initialised_ = true; }
+    void setQuaternion(const Quat& q) {
+        q_ = q;
+        initialised_ = true;
+    }
 
-private:
+protected:
+    explicit QuaternionBaseline(double ts) : ts_(ts) {}
+    // Called first in every update(): takes the orientation of the first sample.
+    void initialiseFrom(const Vec3& acc, const Vec3* mag) {
+        if (initialised_) return;
+        q_ = initialOrientation(acc, mag);
+        initialised_ = true;
+    }
+
     double ts_;
     Quat q_ = Quat::Identity();
+
+private:
     bool initialised_ = false;
+};
+
+// Plain strapdown integration of the gyroscope (Fasel, spec §2): q ← q ⊗ exp(ω dt / 2).
+class Strapdown : public QuaternionBaseline<Strapdown> {
+public:
+    explicit Strapdown(double ts) : QuaternionBaseline(ts) {}
+    void update(const Vec3& gyr, const Vec3& acc, const Vec3* mag);
+    Vec3 bias() const { return Vec3::Zero(); }
 };
 
 // Madgwick, Harrison, Vaidyanathan, "Estimation of IMU and MARG orientation using a gradient descent
@@ -29,51 +52,35 @@ private:
 // on the right), where it is Σ v_i × s_i with v_i = Rᵀd_i; this is the normalised quaternion
 // gradient of the paper (eqs. 20–34) without its radial part, which normalisation removes anyway.
 // Magnetic reference (eq. 45–46, ENU): b = (0, |h_xy|, h_z) with h = R m.
-class Madgwick {
+class Madgwick : public QuaternionBaseline<Madgwick> {
 public:
     struct Params {
         double beta = 0.1;  // rad/s, gradient step (the paper's β = √(3/4) ω̃_β)
     };
-    Madgwick(double ts, const Params& params) : ts_(ts), p_(params) {}
+    Madgwick(double ts, const Params& params) : QuaternionBaseline(ts), p_(params) {}
     void update(const Vec3& gyr, const Vec3& acc, const Vec3* mag);
-    void updateBatch(const ImuBatch& in, OrientationTrack& out) { runBatch(*this, in, out); }
-    Quat quaternion() const { return q_; }
     Vec3 bias() const { return Vec3::Zero(); }
-    bool restDetected() const { return false; }
-    bool magDisturbed() const { return false; }
-    void setQuaternion(const Quat& q) { q_ = q; initialised_ = true; }
 
 private:
-    double ts_;
     Params p_;
-    Quat q_ = Quat::Identity();
-    bool initialised_ = false;
 };
 
 // Mahony, Hamel, Pflimlin, "Nonlinear complementary filters on the special orthogonal group",
 // IEEE TAC 53(5), 2008 (explicit complementary filter, eqs. 32–34): ω' = ω + Kp e + Ki ∫e with
 // e = Σ s_i × v_i; the magnetometer contributes its horizontal direction only.
-class Mahony {
+class Mahony : public QuaternionBaseline<Mahony> {
 public:
     struct Params {
         double kp = 0.74;    // rad/s (BROAD paper's best single gain)
         double ki = 0.0012;  // rad/s²
     };
-    Mahony(double ts, const Params& params) : ts_(ts), p_(params) {}
+    Mahony(double ts, const Params& params) : QuaternionBaseline(ts), p_(params) {}
     void update(const Vec3& gyr, const Vec3& acc, const Vec3* mag);
-    void updateBatch(const ImuBatch& in, OrientationTrack& out) { runBatch(*this, in, out); }
-    Quat quaternion() const { return q_; }
     Vec3 bias() const { return -integral_; }
-    bool restDetected() const { return false; }
-    bool magDisturbed() const { return false; }
-    void setQuaternion(const Quat& q) { q_ = q; initialised_ = true; }
 
 private:
-    double ts_;
     Params p_;
-    Quat q_ = Quat::Identity();
     Vec3 integral_ = Vec3::Zero();
-    bool initialised_ = false;
 };
 
 // The attitude Kalman filter of Kim, Park, Yoon, Sensors 2023 (seed 004, eqs. 50–55): state q,
@@ -104,8 +111,5 @@ private:
     Eigen::Matrix4d P_ = Eigen::Matrix4d::Identity();
     bool initialised_ = false;
 };
-
-// Initial orientation from one sample: acc (+ mag).
-Quat initialOrientation(const Vec3& acc, const Vec3* mag);
 
 }  // namespace athlos::inertial

@@ -29,12 +29,10 @@ QString CalibrationProcessor::description() const {
 }
 
 ParameterSpecs CalibrationProcessor::parameters() const {
-    ParameterSpec walkHeight = ParameterSpec::number(QStringLiteral("walk_height"), 0.0, -100, 1000, QStringLiteral("m"),
-        tr("Height of the tag during the walk in the LPS frame; absent = estimated (one unknown for the whole walk)."));
-    walkHeight.defaultValue = QVariant();
-    walkHeight.optional = true;
     return {
-        walkHeight,
+        optionalNumber(QStringLiteral("walk_height"), QStringLiteral("m"),
+                       tr("Height of the tag during the walk in the LPS frame; absent = estimated (one unknown for the "
+                          "whole walk)."), -100, 1000),
         ParameterSpec::number(QStringLiteral("walk_height_prior"), 1.0, -100, 1000, QStringLiteral("m"),
                               tr("Prior mean of the estimated walk height (hand-held tag).")),
         ParameterSpec::number(QStringLiteral("walk_height_sigma"), 0.5, 1e-3, 100, QStringLiteral("m"),
@@ -130,8 +128,8 @@ Expected<std::vector<ProcessorOutput>> CalibrationProcessor::run(const RunContex
               : gauge == QLatin1String("track") ? LpsCalibration::Gauge::Track
                                                 : LpsCalibration::Gauge::Auto;
     if (p.gauge != LpsCalibration::Gauge::Guess) {
-        auto track = TrackGeometry::resolve(context.project().geometry(), context.text(QStringLiteral("track")));
-        if (!track) return makeError(QStringLiteral("track: %1").arg(track.message()));
+        auto track = loadTrack(context);
+        if (!track) return track.error();
         TrackPose pose = track->pose();
         if (context.has(QStringLiteral("track_x"))) pose.x = context.number(QStringLiteral("track_x"));
         if (context.has(QStringLiteral("track_y"))) pose.y = context.number(QStringLiteral("track_y"));

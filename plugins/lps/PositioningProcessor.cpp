@@ -139,8 +139,8 @@ Expected<PositioningProcessor::Plan> PositioningProcessor::prepare(const RunCont
     plan.params.clockwise = context.text(QStringLiteral("direction")) == QLatin1String("cw");
     if (sel.method == BeaconSelection::Method::FieldOfView) {
         if (plan.params.heading == TdoaPositioning::HeadingSource::Track) {
-            auto track = TrackGeometry::resolve(context.project().geometry(), context.text(QStringLiteral("track")));
-            if (!track) return makeError(QStringLiteral("track: %1").arg(track.message()));
+            auto track = loadTrack(context);
+            if (!track) return track.error();
             plan.track = std::move(*track);
         }
         if (plan.params.heading == TdoaPositioning::HeadingSource::Orientation) {

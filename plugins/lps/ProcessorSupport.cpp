@@ -23,6 +23,12 @@ Expected<EpochSet> loadEpochs(const RunContext& context, int input, const Beacon
     return epochsFromStream(*stream, **data, layout, path);
 }
 
+Expected<TrackGeometry> loadTrack(const RunContext& context) {
+    auto track = TrackGeometry::resolve(context.project().geometry(), context.text(QStringLiteral("track")));
+    if (!track) return makeError(QStringLiteral("track: %1").arg(track.message()));
+    return track;
+}
+
 Stream trajectoryStream(const std::vector<double>& t, const std::vector<Vector3>& positions, const QString& kind,
                         const QString& name) {
     StreamInfo info;

@@ -11,6 +11,12 @@ namespace athlos::lps {
 
 namespace {
 
+Error unknownBeaconsError(const QString& path, const QStringList& unknown, const BeaconLayout& layout) {
+    return makeError(QStringLiteral("TDoA stream '%1' uses beacon id(s) %2 that the beacon table does not have "
+                                    "(table ids: %3)")
+                         .arg(path, unknown.join(QStringLiteral(", ")), layout.ids.join(QStringLiteral(", "))));
+}
+
 Expected<EpochSet> epochsFromWide(const Stream& stream, const StreamData& data, const BeaconLayout& layout,
                                   const QString& path) {
     const StreamInfo& info = stream.info();
@@ -28,9 +34,7 @@ Expected<EpochSet> epochsFromWide(const Stream& stream, const StreamData& data, 
         return makeError(QStringLiteral("TDoA stream '%1' has no dt_<beacon> columns (nor beacon and dt); it has: %2")
                              .arg(path, info.columnNames().join(QStringLiteral(", "))));
     if (!unknown.isEmpty())
-        return makeError(QStringLiteral("TDoA stream '%1' uses beacon id(s) %2 that the beacon table does not have "
-                                        "(table ids: %3)")
-                             .arg(path, unknown.join(QStringLiteral(", ")), layout.ids.join(QStringLiteral(", "))));
+        return unknownBeaconsError(path, unknown, layout);
     EpochSet set;
     set.epochs.reserve(data.rows());
     for (std::size_t r = 0; r < data.rows(); ++r) {
@@ -105,9 +109,7 @@ Expected<EpochSet> epochsFromStream(const Stream& stream, const StreamData& data
         readings.push_back({index, dt});
     }
     if (!unknown.isEmpty())
-        return makeError(QStringLiteral("TDoA stream '%1' uses beacon id(s) %2 that the beacon table does not have "
-                                        "(table ids: %3)")
-                             .arg(path, unknown.join(QStringLiteral(", ")), layout.ids.join(QStringLiteral(", "))));
+        return unknownBeaconsError(path, unknown, layout);
     return set;
 }
 

@@ -1,6 +1,7 @@
 // The "Calibrate LPS" wizard offscreen: beacon import, the requests it sends, and that accepting
 // keeps the result items while retrying (or cancelling) removes them from the project again.
 #include "GuiTestSupport.h"
+#include "WizardTestSupport.h"
 
 #include "core/processing/ProcessorRegistry.h"
 #include "ui/ToolRegistry.h"
@@ -19,18 +20,15 @@
 
 using namespace athlos;
 using namespace athlos::ui;
+using athlos::testing::child;
 
 namespace {
 
 // Records requests and stores made-up outputs shaped like the LPS processors' (table + "-report";
 // a walk position stream; an aligned table).
-class RecordingWorkspace : public Workspace {
+class RecordingWorkspace : public testing::WorkspaceDouble {
 public:
-    explicit RecordingWorkspace(Project* project) : project_(project) {}
-    Project* project() override { return project_; }
-    QWidget* window() override { return nullptr; }
-    void projectModified() override { ++modifications; }
-    void showItem(const QString&) override {}
+    using WorkspaceDouble::WorkspaceDouble;
 
     Expected<RunOutcome> runProcessor(const RunRequest& r) override {
         requests.append(r);
@@ -50,7 +48,7 @@ public:
                               TableColumn{"rms_residual", "m", false, std::vector<double>(n, 0.1), {}},
                               TableColumn{"shift", "m", false, std::vector<double>(n, 0.5), {}}};
             project_->putTable(r.output + "-report", report);
-            return RunOutcome{{r.output, r.output + "-report"}, {}};
+            return testing::wrote({r.output, r.output + "-report"});
         }
         if (r.processorId == "lps-positioning") {
             StreamInfo info;
@@ -63,27 +61,17 @@ public:
                 d.at(k, 1) = -k;
             }
             project_->putStream(r.output, Stream(info, d));
-            return RunOutcome{{r.output}, {}};
+            return testing::wrote({r.output});
         }
         if (r.processorId == "lps-align") {
             project_->putTable(r.output, *project_->table(r.inputs[0]));
-            return RunOutcome{{r.output}, {}};
+            return testing::wrote({r.output});
         }
         return makeError("unexpected processor " + r.processorId);
     }
 
-    Project* project_;
-    QList<RunRequest> requests;
     QString failProcessor;
-    int modifications = 0;
 };
-
-template <class T>
-T* child(QObject* parent, const char* name) {
-    T* widget = parent->findChild<T*>(QLatin1String(name));
-    if (!widget) qFatal("no child %s", name);
-    return widget;
-}
 
 Stream makeTdoa() {
     StreamInfo info;

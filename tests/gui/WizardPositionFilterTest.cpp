@@ -1,6 +1,7 @@
 // The "Filter positions" wizard and the track view, driven offscreen against an in-memory project
 // and a Workspace double that records the RunRequest and stores a made-up result.
 #include "GuiTestSupport.h"
+#include "WizardTestSupport.h"
 
 #include "core/processing/ProcessorRegistry.h"
 #include "ui/MainWindow.h"
@@ -23,24 +24,21 @@
 
 using namespace athlos;
 using namespace athlos::ui;
+using athlos::testing::child;
 
 namespace {
 
 // Records requests; "runs" position-filter by copying the input as trajectory and flagging every
 // 50th fix as an outlier, with the provenance the real runner would attach.
-class RecordingWorkspace : public Workspace {
+class RecordingWorkspace : public testing::WorkspaceDouble {
 public:
-    explicit RecordingWorkspace(Project* project) : project_(project) {}
-    Project* project() override { return project_; }
-    QWidget* window() override { return nullptr; }
+    using WorkspaceDouble::WorkspaceDouble;
     Expected<RunOutcome> runProcessor(const RunRequest& request) override {
         requests.append(request);
         if (!failWith.isEmpty()) return makeError(failWith);
         storeFakeResult(*project_, request);
-        return RunOutcome{{request.output, request.output + QStringLiteral("-outliers")}, {}};
+        return testing::wrote({request.output, request.output + QStringLiteral("-outliers")});
     }
-    void projectModified() override { ++modifications; }
-    void showItem(const QString& path) override { shown = path; }
 
     static void storeFakeResult(Project& project, const RunRequest& request) {
         const Stream* input = project.stream(request.inputs.front());
@@ -70,19 +68,8 @@ public:
         project.putStream(request.output + QStringLiteral("-outliers"), Stream(flagInfo, std::move(flags)));
     }
 
-    Project* project_;
-    QList<RunRequest> requests;
     QString failWith;
-    int modifications = 0;
-    QString shown;
 };
-
-template <class T>
-T* child(QObject* parent, const char* name) {
-    T* widget = parent->findChild<T*>(QLatin1String(name));
-    if (!widget) qFatal("no child %s", name);
-    return widget;
-}
 
 // Distance of every point of a curve with track-frame x beyond the bend start from the bend centre.
 QList<double> bendRadii(const QCPCurve* curve, const TrackGeometry& track) {

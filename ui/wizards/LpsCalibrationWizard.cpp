@@ -3,11 +3,11 @@
 #include "core/geometry/TrackGeometry.h"
 #include "core/io/Importer.h"
 #include "core/model/Project.h"
-#include "core/processing/ProcessorRegistry.h"
 #include "ui/PlotStyle.h"
 #include "ui/ToolRegistry.h"
 #include "ui/Workspace.h"
 #include "ui/wizards/VenuePlot.h"
+#include "ui/wizards/WizardPages.h"
 #include "ui/wizards/WizardParameterForm.h"
 
 #include <QCheckBox>
@@ -22,7 +22,6 @@
 #include <QScrollArea>
 #include <QVBoxLayout>
 #include <qcustomplot.h>
-#include <cmath>
 
 namespace athlos::ui {
 
@@ -34,20 +33,6 @@ const QString kAlign = QStringLiteral("lps-align");
 const QColor kInitialColor(150, 150, 150);
 const QColor kCalibratedColor(0, 114, 178);
 
-ParameterSpecs specsOf(const QString& id)
-{
-    auto processor = ProcessorRegistry::instance().find(id);
-    return processor ? processor->parameters() : ParameterSpecs{};
-}
-
-QLabel* errorLabel(QWidget* parent)
-{
-    auto* label = new QLabel(parent);
-    label->setWordWrap(true);
-    label->setStyleSheet(QStringLiteral("color: #b00020"));
-    return label;
-}
-
 QString recordingOf(const QString& path) { return ItemPath::parse(path).recording; }
 
 }  // namespace
@@ -56,8 +41,8 @@ LpsCalibrationWizard::LpsCalibrationWizard(Workspace& workspace, QWidget* parent
                                            ParameterSpecs alignSpecs)
     : QWizard(parent),
       workspace_(workspace),
-      calibrationSpecs_(calibrationSpecs.isEmpty() ? specsOf(kCalibration) : std::move(calibrationSpecs)),
-      alignSpecs_(alignSpecs.isEmpty() ? specsOf(kAlign) : std::move(alignSpecs))
+      calibrationSpecs_(calibrationSpecs.isEmpty() ? registeredParameters(kCalibration) : std::move(calibrationSpecs)),
+      alignSpecs_(alignSpecs.isEmpty() ? registeredParameters(kAlign) : std::move(alignSpecs))
 {
     setWindowTitle(tr("Calibrate LPS"));
     setPage(BeaconsPage, createBeaconsPage());
@@ -70,19 +55,13 @@ LpsCalibrationWizard::~LpsCalibrationWizard() = default;
 
 QWizardPage* LpsCalibrationWizard::createBeaconsPage()
 {
-    auto* page = new QWizardPage;
-    page->setTitle(tr("Initial beacon positions"));
-    page->setSubTitle(tr("Rough positions (a few metres are fine) from the project or a CSV file (id, x, y, z)."));
+    auto* page = wizardPage(tr("Initial beacon positions"),
+                            tr("Rough positions (a few metres are fine) from the project or a CSV file (id, x, y, z)."));
     beaconCombo_ = new QComboBox(page);
     beaconCombo_->setObjectName(QStringLiteral("beaconCombo"));
     auto* import = new QPushButton(tr("Import CSV…"), page);
     import->setObjectName(QStringLiteral("importButton"));
-    trackCombo_ = new QComboBox(page);
-    trackCombo_->setObjectName(QStringLiteral("trackCombo"));
-    trackCombo_->addItems(TrackGeometry::builtinNames());
-    if (const Project* project = workspace_.project())
-        for (const auto& [name, json] : project->geometry())
-            if (json.value(QStringLiteral("type")).toString().startsWith(QLatin1String("track-"))) trackCombo_->addItem(name);
+    trackCombo_ = trackCombo(workspace_.project(), page);
     beaconView_ = new VenuePlot(page);
     beaconView_->setMinimumSize(420, 300);
     fillBeaconCombo();
@@ -158,14 +137,9 @@ void LpsCalibrationWizard::showInitialBeacons()
 
 QWizardPage* LpsCalibrationWizard::createWalkPage()
 {
-    auto* page = new QWizardPage;
-    page->setTitle(tr("Calibration walk"));
-    page->setSubTitle(tr("The TDoA recording of the walk and the calibration settings. Next runs the calibration."));
-    tdoaCombo_ = new QComboBox(page);
-    tdoaCombo_->setObjectName(QStringLiteral("tdoaCombo"));
-    if (const Project* project = workspace_.project())
-        for (const QString& path : project->streamPaths())
-            if (project->stream(path)->kind() == QLatin1String("lps-tdoa")) tdoaCombo_->addItem(path);
+    auto* page = wizardPage(tr("Calibration walk"),
+                            tr("The TDoA recording of the walk and the calibration settings. Next runs the calibration."));
+    tdoaCombo_ = streamCombo(workspace_.project(), QStringLiteral("lps-tdoa"), QStringLiteral("tdoaCombo"), page);
     calibrationForm_ = new WizardParameterForm(calibrationSpecs_, page);
     calibrationForm_->setObjectName(QStringLiteral("calibrationForm"));
     walkCheck_ = new QCheckBox(tr("Show the walk positions (runs lps-positioning with the calibrated beacons)"), page);
@@ -177,8 +151,7 @@ QWizardPage* LpsCalibrationWizard::createWalkPage()
         outputEdit_->setText(recordingOf(tdoaCombo_->currentText()) + QStringLiteral("/beacons-calibrated"));
     };
     setDefaultOutput();
-    walkError_ = errorLabel(page);
-    walkError_->setObjectName(QStringLiteral("walkError"));
+    walkError_ = errorLabel(QStringLiteral("walkError"), page);
 
     auto* scroll = new QScrollArea(page);
     scroll->setWidget(calibrationForm_);
@@ -199,9 +172,8 @@ QWizardPage* LpsCalibrationWizard::createWalkPage()
 
 QWizardPage* LpsCalibrationWizard::createResultPage()
 {
-    auto* page = new QWizardPage;
-    page->setTitle(tr("Calibration result"));
-    page->setSubTitle(tr("Next keeps the result; Retry discards it so you can change the settings."));
+    auto* page = wizardPage(tr("Calibration result"),
+                            tr("Next keeps the result; Retry discards it so you can change the settings."));
     summary_ = new QLabel(page);
     summary_->setObjectName(QStringLiteral("summaryLabel"));
     summary_->setWordWrap(true);
@@ -228,9 +200,8 @@ QWizardPage* LpsCalibrationWizard::createResultPage()
 
 QWizardPage* LpsCalibrationWizard::createSavePage()
 {
-    auto* page = new QWizardPage;
-    page->setTitle(tr("Align and save"));
-    page->setSubTitle(tr("Optionally move the beacons so that surveyed venue marks land on their known coordinates."));
+    auto* page = wizardPage(tr("Align and save"),
+                            tr("Optionally move the beacons so that surveyed venue marks land on their known coordinates."));
     page->setFinalPage(true);
     alignCheck_ = new QCheckBox(tr("Align to venue marks (lps-align)"), page);
     alignCheck_->setObjectName(QStringLiteral("alignCheck"));
@@ -250,8 +221,7 @@ QWizardPage* LpsCalibrationWizard::createSavePage()
     if (modeCombo_->count() == 0) modeCombo_->addItems({QStringLiteral("yaw"), QStringLiteral("full")});
     saveEdit_ = new QLineEdit(page);
     saveEdit_->setObjectName(QStringLiteral("saveEdit"));
-    saveError_ = errorLabel(page);
-    saveError_->setObjectName(QStringLiteral("saveError"));
+    saveError_ = errorLabel(QStringLiteral("saveError"), page);
     auto* layout = new QFormLayout(page);
     layout->addRow(alignCheck_);
     layout->addRow(tr("Marks:"), marksEdit_);
@@ -371,18 +341,9 @@ void LpsCalibrationWizard::showResult()
     if (initial) resultView_->setBeacons(tr("initial"), *initial, kInitialColor);
     if (calibrated) resultView_->setBeacons(tr("calibrated"), *calibrated, kCalibratedColor);
     QVector<double> wx, wy;
-    for (const QString& path : std::as_const(written_)) {
-        const Stream* stream = project->stream(path);
-        if (!stream || stream->kind() != QLatin1String("lps-position")) continue;
-        const int cx = stream->info().columnIndex(QStringLiteral("x")), cy = stream->info().columnIndex(QStringLiteral("y"));
-        auto data = stream->data();
-        if (cx < 0 || cy < 0 || !data) continue;
-        for (std::size_t k = 0; k < (*data)->rows(); ++k) {
-            if (!std::isfinite((*data)->at(k, cx)) || !std::isfinite((*data)->at(k, cy))) continue;
-            wx.append((*data)->at(k, cx));
-            wy.append((*data)->at(k, cy));
-        }
-    }
+    for (const QString& path : std::as_const(written_))
+        if (const Stream* stream = project->stream(path); stream && stream->kind() == QLatin1String("lps-position"))
+            appendPlanarPositions(*stream, wx, wy);
     resultView_->setWalk(wx, wy);
 
     // Residual bars: every residual column of the report (before/after when the report has both).

@@ -1,7 +1,6 @@
 #include "ui/wizards/PositionFilterWizard.h"
 
 #include "core/model/Project.h"
-#include "core/processing/ProcessorRegistry.h"
 #include "ui/PlotStyle.h"
 #include "ui/ToolRegistry.h"
 #include "ui/Workspace.h"
@@ -9,6 +8,7 @@
 #include "ui/wizards/EqualAspectFrame.h"
 #include "ui/wizards/TrackOverlay.h"
 #include "ui/wizards/TrackTrajectoryView.h"
+#include "ui/wizards/WizardPages.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -70,10 +70,8 @@ QDoubleSpinBox* spinBox(const QString& objectName, double min, double max, doubl
 }  // namespace
 
 PositionFilterWizard::PositionFilterWizard(Workspace& workspace, QWidget* parent, ParameterSpecs specs)
-    : QWizard(parent), workspace_(workspace), specs_(std::move(specs))
+    : QWizard(parent), workspace_(workspace), specs_(specs.isEmpty() ? registeredParameters(kProcessor) : std::move(specs))
 {
-    if (specs_.isEmpty())
-        if (auto processor = ProcessorRegistry::instance().find(kProcessor)) specs_ = processor->parameters();
     setWindowTitle(tr("Filter positions"));
     setPage(InputPage, createInputPage());
     setPage(TrackPage, createTrackPage());
@@ -87,14 +85,8 @@ PositionFilterWizard::~PositionFilterWizard() = default;
 
 QWizardPage* PositionFilterWizard::createInputPage()
 {
-    auto* page = new QWizardPage;
-    page->setTitle(tr("Position stream"));
-    page->setSubTitle(tr("The LPS fixes (kind lps-position, columns x and y) to filter."));
-    streamCombo_ = new QComboBox(page);
-    streamCombo_->setObjectName(QStringLiteral("streamCombo"));
-    if (const Project* project = workspace_.project())
-        for (const QString& path : project->streamPaths())
-            if (project->stream(path)->kind() == QLatin1String("lps-position")) streamCombo_->addItem(path);
+    auto* page = wizardPage(tr("Position stream"), tr("The LPS fixes (kind lps-position, columns x and y) to filter."));
+    streamCombo_ = streamCombo(workspace_.project(), QStringLiteral("lps-position"), QStringLiteral("streamCombo"), page);
     auto* layout = new QFormLayout(page);
     layout->addRow(tr("Stream:"), streamCombo_);
     if (streamCombo_->count() == 0)
@@ -108,15 +100,8 @@ QWizardPage* PositionFilterWizard::createInputPage()
 
 QWizardPage* PositionFilterWizard::createTrackPage()
 {
-    auto* page = new QWizardPage;
-    page->setTitle(tr("Track and pose"));
-    page->setSubTitle(tr("Place the track over the raw positions: the track models follow its lanes."));
-    trackCombo_ = new QComboBox(page);
-    trackCombo_->setObjectName(QStringLiteral("trackCombo"));
-    trackCombo_->addItems(TrackGeometry::builtinNames());
-    if (const Project* project = workspace_.project())
-        for (const auto& [name, json] : project->geometry())
-            if (json.value(QStringLiteral("type")).toString().startsWith(QLatin1String("track-"))) trackCombo_->addItem(name);
+    auto* page = wizardPage(tr("Track and pose"), tr("Place the track over the raw positions: the track models follow its lanes."));
+    trackCombo_ = trackCombo(workspace_.project(), page);
     trackX_ = spinBox(QStringLiteral("trackX"), -1e5, 1e5, 0.0, 2, QStringLiteral(" m"), page);
     trackY_ = spinBox(QStringLiteral("trackY"), -1e5, 1e5, 0.0, 2, QStringLiteral(" m"), page);
     trackRotation_ = spinBox(QStringLiteral("trackRotation"), -180.0, 180.0, 0.0, 2, QStringLiteral(" °"), page);
@@ -158,9 +143,7 @@ QWizardPage* PositionFilterWizard::createTrackPage()
 
 QWizardPage* PositionFilterWizard::createFilterPage()
 {
-    auto* page = new QWizardPage;
-    page->setTitle(tr("Filter and noise"));
-    page->setSubTitle(tr("Kalman filter variant, motion model and noise settings."));
+    auto* page = wizardPage(tr("Filter and noise"), tr("Kalman filter variant, motion model and noise settings."));
     filterCombo_ = choiceCombo(specs_, QStringLiteral("filter"), {"ekf", "ukf", "srukf"}, page);
     modelCombo_ = choiceCombo(specs_, QStringLiteral("model"), {"unconstrained", "pseudo", "augmented"}, page);
     noiseCombo_ = choiceCombo(specs_, QStringLiteral("noise"), {"auto", "manual"}, page);
@@ -182,9 +165,7 @@ QWizardPage* PositionFilterWizard::createFilterPage()
 
 QWizardPage* PositionFilterWizard::createOutputPage()
 {
-    auto* page = new QWizardPage;
-    page->setTitle(tr("Smoothing and output"));
-    page->setSubTitle(tr("Next runs the filter."));
+    auto* page = wizardPage(tr("Smoothing and output"), tr("Next runs the filter."));
     smootherCombo_ = choiceCombo(specs_, QStringLiteral("smoother"), {"none", "rts", "fixed-lag"}, page);
     const ParameterSpec* lagSpec = findSpec(specs_, QStringLiteral("lag"));
     lag_ = spinBox(QStringLiteral("lagSpin"), 0.01, 60.0, lagSpec ? lagSpec->defaultValue.toDouble() : 0.5, 2,
@@ -195,10 +176,7 @@ QWizardPage* PositionFilterWizard::createOutputPage()
     outputEdit_ = new QLineEdit(page);
     outputEdit_->setObjectName(QStringLiteral("outputEdit"));
     outputEdit_->setText(streamCombo_->currentText() + QStringLiteral("-filtered"));
-    errorLabel_ = new QLabel(page);
-    errorLabel_->setObjectName(QStringLiteral("errorLabel"));
-    errorLabel_->setWordWrap(true);
-    errorLabel_->setStyleSheet(QStringLiteral("color: #b00020"));
+    errorLabel_ = errorLabel(QStringLiteral("errorLabel"), page);
     auto* layout = new QFormLayout(page);
     layout->addRow(tr("Smoother:"), smootherCombo_);
     layout->addRow(tr("Lag:"), lag_);
@@ -212,8 +190,7 @@ QWizardPage* PositionFilterWizard::createOutputPage()
 
 QWizardPage* PositionFilterWizard::createResultPage()
 {
-    auto* page = new QWizardPage;
-    page->setTitle(tr("Result"));
+    auto* page = wizardPage(tr("Result"));
     page->setFinalPage(true);
     resultView_ = new TrackTrajectoryView(page);
     resultView_->setMinimumSize(420, 320);
@@ -236,30 +213,16 @@ void PositionFilterWizard::loadRawPositions()
     rawX_.clear();
     rawY_.clear();
     const Project* project = workspace_.project();
-    const Stream* stream = project ? project->stream(streamCombo_->currentText()) : nullptr;
-    if (stream) {
-        const int cx = stream->info().columnIndex(QStringLiteral("x")), cy = stream->info().columnIndex(QStringLiteral("y"));
-        auto data = stream->data();
-        if (cx >= 0 && cy >= 0 && data) {
-            const StreamData& d = **data;
-            // A preview: 20 k dots show the shape of any recording.
-            const std::size_t stride = d.rows() / 20000 + 1;
-            for (std::size_t k = 0; k < d.rows(); k += stride) {
-                if (!std::isfinite(d.at(k, cx)) || !std::isfinite(d.at(k, cy))) continue;
-                rawX_.append(d.at(k, cx));
-                rawY_.append(d.at(k, cy));
-            }
-        }
-    }
+    // A preview: 20 k dots show the shape of any recording.
+    if (const Stream* stream = project ? project->stream(streamCombo_->currentText()) : nullptr)
+        appendPlanarPositions(*stream, rawX_, rawY_, 20000);
     rawCurve_->setData(rawX_, rawY_);
     updateOverlay();
 }
 
 void PositionFilterWizard::onTrackChosen()
 {
-    const Project* project = workspace_.project();
-    auto track = project ? TrackGeometry::resolve(project->geometry(), trackCombo_->currentText())
-                         : TrackGeometry::builtin(trackCombo_->currentText());
+    auto track = resolveTrack(workspace_.project(), trackCombo_->currentText());
     if (track) {
         // The geometry's own pose is the starting point; the user adjusts from there.
         const QSignalBlocker bx(trackX_), by(trackY_), br(trackRotation_);
@@ -272,9 +235,7 @@ void PositionFilterWizard::onTrackChosen()
 
 TrackGeometry PositionFilterWizard::currentTrack() const
 {
-    const Project* project = workspace_.project();
-    auto track = project ? TrackGeometry::resolve(project->geometry(), trackCombo_->currentText())
-                         : TrackGeometry::builtin(trackCombo_->currentText());
+    auto track = resolveTrack(workspace_.project(), trackCombo_->currentText());
     TrackGeometry geometry = track ? *track : TrackGeometry::iaaf400m();
     geometry.setPose({trackX_->value(), trackY_->value(), trackRotation_->value() * std::numbers::pi / 180.0});
     return geometry;

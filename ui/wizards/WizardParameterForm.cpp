@@ -82,27 +82,26 @@ QVariant WizardParameterForm::rawValue(const ParameterSpec& spec) const
     return {};
 }
 
+std::optional<Expected<QVariant>> WizardParameterForm::converted(const ParameterSpec& spec) const
+{
+    const QVariant raw = rawValue(spec);
+    if (raw.typeId() == QMetaType::QString && raw.toString().isEmpty() && spec.optional) return std::nullopt;
+    return spec.convert(raw);
+}
+
 QVariantMap WizardParameterForm::values() const
 {
     QVariantMap map;
-    for (const ParameterSpec& spec : specs_) {
-        const QVariant raw = rawValue(spec);
-        if (raw.typeId() == QMetaType::QString && raw.toString().isEmpty() && spec.optional) continue;
-        auto converted = spec.convert(raw);
-        if (converted) map.insert(spec.name, *converted);
-    }
+    for (const ParameterSpec& spec : specs_)
+        if (auto value = converted(spec); value && *value) map.insert(spec.name, **value);
     return map;
 }
 
 QStringList WizardParameterForm::errors() const
 {
     QStringList list;
-    for (const ParameterSpec& spec : specs_) {
-        const QVariant raw = rawValue(spec);
-        if (raw.typeId() == QMetaType::QString && raw.toString().isEmpty() && spec.optional) continue;
-        auto converted = spec.convert(raw);
-        if (!converted) list << converted.message();
-    }
+    for (const ParameterSpec& spec : specs_)
+        if (auto value = converted(spec); value && !*value) list << value->message();
     return list;
 }
 

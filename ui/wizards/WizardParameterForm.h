@@ -7,6 +7,7 @@
 #include <QVariantMap>
 #include <QWidget>
 #include <map>
+#include <optional>
 
 namespace athlos::ui {
 
@@ -27,6 +28,8 @@ public:
 
 private:
     QVariant rawValue(const ParameterSpec& spec) const;
+    // The converted value of the editor; nullopt when an optional parameter is left empty.
+    std::optional<Expected<QVariant>> converted(const ParameterSpec& spec) const;
 
     ParameterSpecs specs_;
     std::map<QString, QWidget*> editors_;

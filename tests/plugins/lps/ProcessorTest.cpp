@@ -1,5 +1,7 @@
 // The LPS processors through the runner, as the CLI runs them: simulate a venue, calibrate from the
 // guess, position a run with calibrated and surveyed beacons; parameter errors and cancellation.
+#include "LpsTestSupport.h"
+
 #include "core/processing/ProcessorRunner.h"
 #include "plugins/lps/AlignProcessor.h"
 #include "plugins/lps/BeaconTable.h"
@@ -12,30 +14,7 @@
 
 using namespace athlos;
 using namespace athlos::lps;
-
-namespace {
-
-Status run(Project& project, const Processor& p, QStringList inputs, QString output, QVariantMap params = {},
-           const Progress& progress = {}) {
-    auto outcome = runProcessor(project, p, RunRequest{p.id(), inputs, output, params}, progress);
-    return outcome ? Status() : Status(outcome.error());
-}
-
-double rmse(const Stream& fixes, const Stream& truth) {
-    const auto f = *fixes.data();
-    const auto g = *truth.data();
-    double sum = 0.0;
-    std::size_t n = 0, j = 0;
-    for (std::size_t k = 0; k < f->rows(); ++k) {
-        while (j < g->rows() && g->t[j] < f->t[k] - 1e-9) ++j;
-        if (j == g->rows() || std::abs(g->t[j] - f->t[k]) > 1e-9) continue;
-        sum += std::pow(f->at(k, 0) - g->at(j, 0), 2) + std::pow(f->at(k, 1) - g->at(j, 1), 2);
-        ++n;
-    }
-    return n ? std::sqrt(sum / double(n)) : NAN;
-}
-
-}  // namespace
+using namespace athlos::lps::testsupport;
 
 TEST(LpsProcessors, CalibrateThenPositionAsTheJudgeDoes) {
     QTemporaryDir dir;

@@ -1,6 +1,8 @@
 // Track gauge of the calibration (TrackGauge.h, LpsCalibration gauge=auto|guess|track): the rotation
 // about the reference node's vertical axis from a walk along the track, the fallback to the guess
 // when the walk does not follow the track, and the judged flow over several venues.
+#include "LpsTestSupport.h"
+
 #include "core/processing/ProcessorRunner.h"
 #include "plugins/lps/CalibrationProcessor.h"
 #include "plugins/lps/FrameAlignment.h"
@@ -17,6 +19,7 @@
 
 using namespace athlos;
 using namespace athlos::lps;
+using namespace athlos::lps::testsupport;
 
 namespace {
 
@@ -47,25 +50,6 @@ std::vector<TrajectorySample> randomWalk(int steps, std::uint64_t seed) {
         if (std::abs(p.y()) > 30.0) { p.y() = std::copysign(30.0, p.y()); heading = -heading; }
     }
     return walk;
-}
-
-Status run(Project& project, const Processor& p, QStringList inputs, QString output, QVariantMap params = {}) {
-    auto outcome = runProcessor(project, p, RunRequest{p.id(), inputs, output, params}, {});
-    return outcome ? Status() : Status(outcome.error());
-}
-
-double rmse(const Stream& fixes, const Stream& truth) {
-    const auto f = *fixes.data();
-    const auto g = *truth.data();
-    double sum = 0.0;
-    std::size_t n = 0, j = 0;
-    for (std::size_t k = 0; k < f->rows(); ++k) {
-        while (j < g->rows() && g->t[j] < f->t[k] - 1e-9) ++j;
-        if (j == g->rows() || std::abs(g->t[j] - f->t[k]) > 1e-9) continue;
-        sum += std::pow(f->at(k, 0) - g->at(j, 0), 2) + std::pow(f->at(k, 1) - g->at(j, 1), 2);
-        ++n;
-    }
-    return n ? std::sqrt(sum / double(n)) : NAN;
 }
 
 }  // namespace
