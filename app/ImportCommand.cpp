@@ -15,7 +15,8 @@ namespace athlos::cli {
 int cmdImport(const QStringList& args) {
     QStringList formats;
     for (const auto& importer : importers()) formats << importer->format();
-    CommandParser p(QStringLiteral("import <project> <file> --as <rec>[/<stream>] [--format F] [--kind K]"),
+    CommandParser p(QStringLiteral("import <project> <file> --as <rec>[/<stream>] [--format F] [--kind K] "
+                                   "[--column SRC=CHANNEL[:UNIT]]... [--skip COL]... [--time-column COL[:UNIT]]"),
                     QStringLiteral("Import a recording into a project. Nothing is written unless the whole import "
                                    "succeeds; errors name the file, line and column."));
     p.addPositional(QStringLiteral("project"), QStringLiteral("The .athlos file (create it with athlos new)."));
@@ -32,6 +33,15 @@ int cmdImport(const QStringList& args) {
     p.addOption({QStringLiteral("beacons"), QStringLiteral("A beacon table (id,x,y,z) to import alongside, as <rec>/beacons."),
                  QStringLiteral("file")});
     p.addOption({QStringLiteral("overwrite"), QStringLiteral("Replace existing streams of the same name.")});
+    p.addOption({QStringLiteral("column"),
+                 QStringLiteral("CSV: store column SRC as CHANNEL, its values in UNIT (converted to SI); repeatable. "
+                                "SRC=:UNIT keeps the name."),
+                 QStringLiteral("SRC=CHANNEL[:UNIT]")});
+    p.addOption({QStringLiteral("skip"), QStringLiteral("CSV: leave column COL out; repeatable."), QStringLiteral("COL")});
+    p.addOption({QStringLiteral("time-column"), QStringLiteral("CSV: the column with the time stamps (default t, in s)."),
+                 QStringLiteral("COL[:UNIT]")});
+    p.addOption({QStringLiteral("athlete"), QStringLiteral("Athlete name, stored in the recording's metadata."),
+                 QStringLiteral("name")});
     if (auto code = p.parse(args, 2, 2)) return *code;
 
     const QString projectPath = p.positional()[0];
@@ -47,6 +57,31 @@ int cmdImport(const QStringList& args) {
     if (!QStringList{QStringLiteral("reject"), QStringLiteral("sort"), QStringLiteral("drop")}.contains(options.timeRepair))
         return fail(QStringLiteral("--time-repair '%1': use reject, sort or drop").arg(options.timeRepair), Usage);
 
+    for (const QString& spec : p.parser().values(QStringLiteral("column"))) {
+        const qsizetype eq = spec.indexOf(QLatin1Char('='));
+        if (eq <= 0) return fail(QStringLiteral("--column '%1': expected SRC=CHANNEL[:UNIT]").arg(spec), Usage);
+        const QString target = spec.mid(eq + 1);
+        const qsizetype colon = target.indexOf(QLatin1Char(':'));
+        ColumnMapping m;
+        m.source = spec.left(eq).trimmed();
+        m.channel = (colon < 0 ? target : target.left(colon)).trimmed();
+        m.unit = colon < 0 ? QString() : target.mid(colon + 1).trimmed();
+        if (m.channel.isEmpty() && m.unit.isEmpty())
+            return fail(QStringLiteral("--column '%1': give a channel name, a unit or both").arg(spec), Usage);
+        options.columns.push_back(m);
+    }
+    for (const QString& column : p.parser().values(QStringLiteral("skip")))
+        options.columns.push_back({column.trimmed(), {}, {}, true});
+    if (p.parser().isSet(QStringLiteral("time-column"))) {
+        const QString spec = p.parser().value(QStringLiteral("time-column"));
+        const qsizetype colon = spec.lastIndexOf(QLatin1Char(':'));
+        options.timeColumn = (colon < 0 ? spec : spec.left(colon)).trimmed();
+        options.timeUnit = colon < 0 ? QString() : spec.mid(colon + 1).trimmed();
+        if (options.timeColumn.isEmpty()) return fail(QStringLiteral("--time-column '%1': expected COL[:UNIT]").arg(spec), Usage);
+    }
+    if (const QString athlete = p.parser().value(QStringLiteral("athlete")).trimmed(); !athlete.isEmpty())
+        options.metadata.insert(QStringLiteral("athlete"), athlete);
+
     if (!QFileInfo::exists(projectPath))
         return fail(QStringLiteral("'%1' does not exist (create it with: athlos new %1)").arg(projectPath));
     auto project = Project::open(projectPath);
@@ -57,6 +92,10 @@ int cmdImport(const QStringList& args) {
     if (!result) return fail(result.message(), result.message() == u"cancelled" ? Cancelled : Failed);
     if (p.parser().isSet(QStringLiteral("beacons"))) {
         ImportOptions beaconOptions = options;
+        beaconOptions.columns.clear();  // the mapping describes the recording's file, not the beacon table
+        beaconOptions.timeColumn.clear();
+        beaconOptions.timeUnit.clear();
+        beaconOptions.metadata = {};
         beaconOptions.format = QStringLiteral("csv");
         beaconOptions.kind = QStringLiteral("beacons");
         beaconOptions.target = ItemPath::parse(options.target).recording + QStringLiteral("/beacons");

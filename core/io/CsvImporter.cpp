@@ -37,10 +37,11 @@ QString quoted(std::string_view text) {
     return QLatin1Char('\'') + s + (text.size() > kMax ? QStringLiteral("...'") : QStringLiteral("'"));
 }
 
-enum class Role { Time, Number, Id, Text };
+enum class Role { Time, Number, Id, Text, Skip };
 
 struct ColumnPlan {
     QString name;
+    QString source;        // name in the header (before mapping), for messages
     QString unit;          // unit stored with the column
     QString sourceUnit;    // unit in the header, if one was given
     Role role = Role::Number;
@@ -49,7 +50,72 @@ struct ColumnPlan {
     double offset = 0.0;
 };
 
-QString inferKind(const QStringList& names) {
+const ColumnMapping* findMapping(const ImportOptions& options, const QString& source) {
+    for (const ColumnMapping& m : options.columns)
+        if (m.source == source)
+            return &m;
+    return nullptr;
+}
+
+// Checks the mapping against the header names (before any column is planned), so a mistake names
+// the option rather than a column.
+Status checkMapping(const ImportOptions& options, const QStringList& sources, const QString& file, long long line) {
+    const QString known = sources.join(QStringLiteral(", "));
+    QStringList seen;
+    for (const ColumnMapping& m : options.columns) {
+        if (!sources.contains(m.source))
+            return makeError(QStringLiteral("%1:%2: column mapping: the file has no column '%3'; columns: %4")
+                                 .arg(file).arg(line).arg(m.source, known));
+        if (seen.contains(m.source))
+            return makeError(QStringLiteral("column mapping: column '%1' is mapped twice").arg(m.source));
+        seen << m.source;
+        if (!m.skip && !m.unit.trimmed().isEmpty() && siUnitOf(canonicalUnit(m.unit)).isEmpty())
+            return makeError(QStringLiteral("column mapping for '%1': unknown unit '%2'").arg(m.source, m.unit));
+    }
+    if (!options.timeColumn.isEmpty()) {
+        if (!sources.contains(options.timeColumn))
+            return makeError(QStringLiteral("%1:%2: time column '%3' is not in the file; columns: %4")
+                                 .arg(file).arg(line).arg(options.timeColumn, known));
+        if (const ColumnMapping* m = findMapping(options, options.timeColumn); m && m->skip)
+            return makeError(QStringLiteral("time column '%1' is also marked to skip").arg(options.timeColumn));
+    }
+    if (!options.timeUnit.isEmpty()) {
+        const auto c = conversionTo(options.timeUnit, QStringLiteral("s"));
+        if (!c)
+            return makeError(QStringLiteral("time unit: %1").arg(c.message()));
+    }
+    return {};
+}
+
+}  // namespace
+
+QString siUnitOf(const QString& unit) {
+    static const char* const kSi[] = {"s", "m", "m/s", "m/s^2", "rad/s", "rad", "uT", "1", "degC", "Hz", "dB", "dBm"};
+    if (unit.trimmed().isEmpty())
+        return {};
+    for (const char* si : kSi)
+        if (conversionTo(unit, QLatin1String(si)))
+            return QLatin1String(si);
+    return {};
+}
+
+QStringList mappedColumnNames(const QStringList& headerCells, const ImportOptions& options) {
+    QStringList names;
+    for (const QString& cell : headerCells) {
+        QString name, unit;
+        splitNameAndUnit(cell, name, unit);
+        const ColumnMapping* m = findMapping(options, name);
+        if (m && m->skip)
+            continue;
+        if (!options.timeColumn.isEmpty() && name == options.timeColumn)
+            names << QStringLiteral("t");
+        else
+            names << (m && !m->channel.trimmed().isEmpty() ? m->channel.trimmed() : name);
+    }
+    return names;
+}
+
+QString inferCsvKind(const QStringList& names) {
     auto has = [&](const char* n) { return names.contains(QLatin1String(n)); };
     auto hasPrefix = [&](const char* p) {
         return std::any_of(names.begin(), names.end(), [p](const QString& n) { return n.startsWith(QLatin1String(p)); });
@@ -69,6 +135,8 @@ QString inferKind(const QStringList& names) {
     return {};
 }
 
+namespace {
+
 const StreamKind* lookupKind(const QString& kind) {
     if (const StreamKind* k = findStreamKind(kind))
         return k;
@@ -84,27 +152,61 @@ struct Header {
     int timeColumn = -1;
 };
 
-Expected<Header> planHeader(CsvReader& reader, const QString& file, const QString& kindName, const StreamKind* kind,
-                            bool table) {
+Expected<Header> planHeader(CsvReader& reader, const QString& file, const ImportOptions& options,
+                            const QString& kindName, const StreamKind* kind, bool table) {
     Header header;
     QStringList cells;
     if (!reader.readHeader(cells))
         return makeError(QStringLiteral("%1: empty file (no header row)").arg(file));
     header.line = reader.line();
+    QStringList sources;
+    for (const QString& cell : cells) {
+        QString name, unit;
+        splitNameAndUnit(cell, name, unit);
+        sources << name;
+    }
+    if (Status s = checkMapping(options, sources, file, header.line); !s)
+        return s.error();
     QStringList names;
+    std::vector<int> nameColumn;  // file column (1-based) of each name, for messages
     for (int i = 0; i < cells.size(); ++i) {
         ColumnPlan col;
         QString unit;
         splitNameAndUnit(cells[i], col.name, unit);
+        col.source = col.name;
         const QString at = where(file, header.line, i + 1, col.name);
         if (col.name.isEmpty())
             return makeError(QStringLiteral("%1:%2:%3: column %3 has no name").arg(file).arg(header.line).arg(i + 1));
+        const ColumnMapping* mapping = findMapping(options, col.name);
+        if (mapping && mapping->skip) {
+            col.role = Role::Skip;
+            header.columns.push_back(col);
+            continue;
+        }
+        bool mappedUnit = false;
+        if (mapping && !mapping->unit.trimmed().isEmpty()) {
+            unit = canonicalUnit(mapping->unit);
+            mappedUnit = true;
+        }
+        const bool isTime = !table && (options.timeColumn.isEmpty() ? col.name == QLatin1String("t")
+                                                                    : col.name == options.timeColumn);
+        if (mapping && !mapping->channel.trimmed().isEmpty())
+            col.name = mapping->channel.trimmed();
+        if (isTime) {
+            col.name = QStringLiteral("t");
+            if (!options.timeUnit.isEmpty())
+                unit = canonicalUnit(options.timeUnit);
+        } else if (!table && !options.timeColumn.isEmpty() && col.name == QLatin1String("t")) {
+            return makeError(QStringLiteral("%1: the name 't' is taken by the time column '%2'").arg(at, options.timeColumn));
+        }
         if (const qsizetype other = names.indexOf(col.name); other >= 0)
-            return makeError(QStringLiteral("%1: duplicate column name (also column %2)").arg(at).arg(other + 1));
+            return makeError(mapping ? QStringLiteral("%1: duplicate channel '%2' (also column %3)").arg(at, col.name).arg(nameColumn[size_t(other)])
+                                     : QStringLiteral("%1: duplicate column name (also column %2)").arg(at).arg(nameColumn[size_t(other)]));
         names << col.name;
+        nameColumn.push_back(i + 1);
 
         QString target;
-        if (!table && col.name == QLatin1String("t")) {
+        if (isTime) {
             col.role = Role::Time;
             header.timeColumn = i;
             target = QStringLiteral("s");
@@ -116,6 +218,8 @@ Expected<Header> planHeader(CsvReader& reader, const QString& file, const QStrin
         } else if (kind) {
             target = kind->unitFor(col.name);
         }
+        if (target.isEmpty() && mappedUnit && col.role == Role::Number)
+            target = siUnitOf(unit);  // a mapped unit says what the column is: store it in SI
         if (col.role == Role::Id || col.role == Role::Text) {
             if (!unit.isEmpty())
                 return makeError(QStringLiteral("%1: an id column has no unit (got '%2')").arg(at, unit));
@@ -150,7 +254,7 @@ Expected<Header> planHeader(CsvReader& reader, const QString& file, const QStrin
     if (kindName == QLatin1String("lps-tdoa") && names.size() != 3)
         return makeError(QStringLiteral("%1:%2: kind 'lps-tdoa' has the columns t, beacon, dt (long format); columns: %3")
                              .arg(file).arg(header.line).arg(known));
-    if (header.columns.size() < (table ? 1u : 2u))
+    if (names.size() < (table ? 1 : 2))
         return makeError(QStringLiteral("%1:%2: no data columns; columns: %3").arg(file).arg(header.line).arg(known));
     return header;
 }
@@ -166,7 +270,7 @@ public:
 
 private:
     Error cellError(const ColumnPlan& col, const QString& what) const {
-        return makeError(QStringLiteral("%1: %2").arg(where(file_, reader_.line(), reader_.fieldIndex(), col.name), what));
+        return makeError(QStringLiteral("%1: %2").arg(where(file_, reader_.line(), reader_.fieldIndex(), col.source), what));
     }
     Error fieldCountError() const {
         const int found = reader_.fieldsOnLine();
@@ -185,7 +289,9 @@ private:
 
 Status StreamParser::run(StreamData& data, std::vector<long long>& lines, std::vector<std::string>& ids) {
     const int columns = int(header_.columns.size());
-    data.columns = columns - 1;
+    data.columns = int(std::count_if(header_.columns.begin(), header_.columns.end(), [](const ColumnPlan& col) {
+        return col.role != Role::Time && col.role != Role::Skip;
+    }));
     std::unordered_map<std::string, int> idIndex;
     std::string text;
     const qint64 dataStart = reader_.offset();
@@ -195,6 +301,11 @@ Status StreamParser::run(StreamData& data, std::vector<long long>& lines, std::v
     while (reader_.nextRecord()) {
         for (int c = 0; c < columns; ++c) {
             const ColumnPlan& col = header_.columns[c];
+            if (col.role == Role::Skip) {
+                if (!reader_.text(text))
+                    return fieldCountError();
+                continue;
+            }
             if (col.role == Role::Id) {
                 if (!reader_.text(text))
                     return fieldCountError();
@@ -258,7 +369,7 @@ Expected<Stream> tdoaStream(const StreamData& rows, const TimeOrigin& origin, co
     int beacon = -1, dt = -1, dtFileColumn = 0, c = 0;
     for (size_t i = 0; i < header.columns.size(); ++i) {
         const auto& col = header.columns[i];
-        if (col.role == Role::Time)
+        if (col.role == Role::Time || col.role == Role::Skip)
             continue;
         if (col.name == QLatin1String("beacon"))
             beacon = c;
@@ -279,11 +390,12 @@ Expected<Stream> tdoaStream(const StreamData& rows, const TimeOrigin& origin, co
 Expected<ImportResult> readStream(CsvReader& reader, const MappedFile& mapped, const QString& file,
                                   const ImportOptions& options, const QString& kindName, const StreamKind* kind,
                                   const Progress& progress) {
-    auto header = planHeader(reader, file, kindName, kind, false);
+    auto header = planHeader(reader, file, options, kindName, kind, false);
     if (!header)
         return header.error();
     StreamData data;
-    TimeOrigin origin{file, header->timeColumn + 1, QStringLiteral("t"), {}};
+    TimeOrigin origin{file, header->timeColumn + 1,
+                      options.timeColumn.isEmpty() ? QStringLiteral("t") : options.timeColumn, {}};
     std::vector<std::string> ids;
     if (Status s = StreamParser(reader, mapped, file, *header, progress).run(data, origin.lines, ids); !s)
         return s.error();
@@ -298,7 +410,7 @@ Expected<ImportResult> readStream(CsvReader& reader, const MappedFile& mapped, c
     for (const auto& col : header->columns) {
         if (col.convert)
             sourceUnits.insert(col.name, col.sourceUnit);
-        if (col.role != Role::Time)
+        if (col.role != Role::Time && col.role != Role::Skip)
             columns.push_back({col.name, col.unit});
     }
     if (tdoa) {
@@ -341,9 +453,9 @@ Expected<ImportResult> readStream(CsvReader& reader, const MappedFile& mapped, c
     return result;
 }
 
-Expected<ImportResult> readTable(CsvReader& reader, const QString& file, const QString& kindName,
-                                 const StreamKind* kind) {
-    auto header = planHeader(reader, file, kindName, kind, true);
+Expected<ImportResult> readTable(CsvReader& reader, const QString& file, const ImportOptions& options,
+                                 const QString& kindName, const StreamKind* kind) {
+    auto header = planHeader(reader, file, options, kindName, kind, true);
     if (!header)
         return header.error();
     Table table;
@@ -351,21 +463,33 @@ Expected<ImportResult> readTable(CsvReader& reader, const QString& file, const Q
     table.name = kind ? kind->defaultName : kindName;
     if (kind && !kind->defaultFrame.isEmpty())
         table.attributes.insert(QStringLiteral("frame"), kind->defaultFrame);
-    for (const auto& col : header->columns)
+    std::vector<int> out(header->columns.size(), -1);  // table column of each file column
+    for (size_t c = 0; c < header->columns.size(); ++c) {
+        const auto& col = header->columns[c];
+        if (col.role == Role::Skip)
+            continue;
+        out[c] = int(table.columns.size());
         table.columns.push_back({col.name, col.unit, col.role == Role::Text, {}, {}});
+    }
     const int columns = int(header->columns.size());
     std::string text;
     long long rows = 0;
     while (reader.nextRecord()) {
         for (int c = 0; c < columns; ++c) {
             const ColumnPlan& col = header->columns[c];
-            TableColumn& out = table.columns[c];
-            const auto at = [&] { return where(file, reader.line(), c + 1, col.name); };  // for messages only
+            const auto at = [&] { return where(file, reader.line(), c + 1, col.source); };  // for messages only
+            if (col.role == Role::Skip) {
+                if (!reader.text(text))
+                    return makeError(QStringLiteral("%1:%2:%3: line has %4 fields, the header has %5")
+                                         .arg(file).arg(reader.line()).arg(c + 1).arg(reader.fieldsOnLine()).arg(columns));
+                continue;
+            }
+            TableColumn& column = table.columns[size_t(out[c])];
             if (col.role == Role::Text) {
                 if (!reader.text(text))
                     return makeError(QStringLiteral("%1:%2:%3: line has %4 fields, the header has %5")
                                          .arg(file).arg(reader.line()).arg(c + 1).arg(reader.fieldsOnLine()).arg(columns));
-                out.texts << QString::fromUtf8(text.data(), qsizetype(text.size()));
+                column.texts << QString::fromUtf8(text.data(), qsizetype(text.size()));
                 continue;
             }
             double v;
@@ -377,7 +501,7 @@ Expected<ImportResult> readTable(CsvReader& reader, const QString& file, const Q
                 return makeError(QStringLiteral("%1: %2 is not a number").arg(at(), quoted(reader.lastField())));
             if (std::isinf(v))
                 return makeError(QStringLiteral("%1: %2 is not a finite number").arg(at(), quoted(reader.lastField())));
-            out.numbers.push_back(col.convert ? v * col.scale + col.offset : v);
+            column.numbers.push_back(col.convert ? v * col.scale + col.offset : v);
         }
         if (!reader.finishRecord())
             return makeError(QStringLiteral("%1:%2:%3: line has %4 fields, the header has %5")
@@ -413,15 +537,11 @@ Expected<ImportResult> CsvImporter::read(const QString& file, const ImportOption
     QString kindName = options.kind;
     if (kindName.isEmpty()) {
         CsvReader peek(mapped.begin(), mapped.end());
-        QStringList cells, names;
+        QStringList cells;
         if (!peek.readHeader(cells))
             return makeError(QStringLiteral("%1: empty file (no header row)").arg(file));
-        for (const QString& cell : cells) {
-            QString name, unit;
-            splitNameAndUnit(cell, name, unit);
-            names << name;
-        }
-        kindName = inferKind(names);
+        const QStringList names = mappedColumnNames(cells, options);
+        kindName = inferCsvKind(names);
         if (kindName.isEmpty())
             return makeError(QStringLiteral("%1: cannot tell the kind of data from the columns (%2); give a kind (%3)")
                                  .arg(file, names.join(QStringLiteral(", ")), streamKindNames().join(QStringLiteral(", "))));
@@ -432,7 +552,7 @@ Expected<ImportResult> CsvImporter::read(const QString& file, const ImportOption
 
     CsvReader reader(mapped.begin(), mapped.end());
     progress.report(0.0, QStringLiteral("Reading %1").arg(QFileInfo(file).fileName()));
-    auto result = kind && kind->table ? readTable(reader, file, kindName, kind)
+    auto result = kind && kind->table ? readTable(reader, file, options, kindName, kind)
                                       : readStream(reader, mapped, file, options, kindName, kind, progress);
     if (result)
         progress.report(1.0);

@@ -15,6 +15,10 @@
 //   attributes["beacon_ids"]); time repair acts on the rows, where equal times are in order.
 // - beacons (id,x,y,z) becomes a Table; columns id, name and label are text.
 //
+// - ImportOptions::columns renames, re-units or skips source columns before all of the above; a
+//   mapped unit of a column the kind has no rule for is converted to SI (deg → rad, g → m/s^2).
+//   timeColumn/timeUnit name the time column when it is not 't' in seconds.
+//
 // read() names each item by its default name only ("imu"); importFile() puts it under the target.
 #include "core/io/Importer.h"
 
@@ -29,6 +33,14 @@ public:
     Expected<ImportResult> read(const QString& file, const ImportOptions& options,
                                 const Progress& progress) const override;
 };
+
+// The SI unit a mapped column of no kind rule is stored in ("deg" → "rad"; magnetic fields in uT as
+// everywhere), or empty for an unknown unit.
+QString siUnitOf(const QString& unit);
+// The kind the column names suggest (see above), or empty.
+QString inferCsvKind(const QStringList& names);
+// Names of the header cells after options' mapping (skipped columns left out, the time column as 't').
+QStringList mappedColumnNames(const QStringList& headerCells, const ImportOptions& options);
 
 // Where the time stamps of parsed samples came from, for messages.
 struct TimeOrigin {

@@ -32,6 +32,7 @@ struct SensorColumn {
     QString unit;
     double scale = 1.0;
     double offset = 0.0;
+    QString sourceUnit{};  // unit in the file, when converted
 };
 
 // Sample index (consecutive integers) or time in seconds: see the header.
@@ -111,6 +112,8 @@ Expected<ImportResult> GaitmapImporter::read(const QString& file, const ImportOp
                 return makeError(QStringLiteral("%1: %2").arg(at, conversion.message()));
             col.scale = conversion->scale;
             col.offset = conversion->offset;
+            if (col.scale != 1.0 || col.offset != 0.0)
+                col.sourceUnit = unit;
         }
         auto& columns = bySensor[sensor];
         if (std::any_of(columns.begin(), columns.end(), [&](const SensorColumn& c) { return c.axis == col.axis; }))
@@ -197,8 +200,14 @@ Expected<ImportResult> GaitmapImporter::read(const QString& file, const ImportOp
                 const SensorColumn& col = columns[c];
                 data.at(r, int(c)) = all.at(r, col.fileColumn) * col.scale + col.offset;
             }
-        for (const SensorColumn& col : columns)
+        QJsonObject sourceUnits;
+        for (const SensorColumn& col : columns) {
             info.columns.push_back({col.axis, col.unit});
+            if (!col.sourceUnit.isEmpty())
+                sourceUnits.insert(col.axis, col.sourceUnit);
+        }
+        if (!sourceUnits.isEmpty())  // as the CSV importer does: what the file said, for provenance
+            info.attributes.insert(QStringLiteral("source_units"), sourceUnits);
         result.items.push_back({info.name, Stream(std::move(info), std::move(data))});
     }
     progress.report(1.0);

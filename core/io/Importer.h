@@ -6,13 +6,24 @@
 #include "core/util/Progress.h"
 
 #include <QByteArray>
+#include <QJsonObject>
 #include <QString>
 #include <QStringList>
+#include <map>
 #include <memory>
 #include <variant>
 #include <vector>
 
 namespace athlos {
+
+// How one source column of a CSV file is imported (ImportOptions::columns).
+struct ColumnMapping {
+    QString source;   // the column's name in the header, without its unit ("Gyro X" of "Gyro X [deg/s]")
+    QString channel;  // name to store it under; empty keeps the source name
+    QString unit;     // unit of the values in the file; empty takes the header's (or the kind's) unit.
+                      // Values are converted to the kind's SI unit, or to SI if the kind has no rule.
+    bool skip = false;  // leave the column out (its cells are not parsed)
+};
 
 struct ImportOptions {
     QString format = QStringLiteral("auto");  // auto | csv | broad | gaitmap | ...
@@ -21,6 +32,11 @@ struct ImportOptions {
     QString timeRepair = QStringLiteral("reject");  // reject | sort | drop: non-increasing time stamps
     QString frame;                           // overrides the kind's default frame
     bool overwrite = false;                  // replace existing items of the same name
+    // csv: mapping of source columns; columns not listed keep their header name and unit.
+    std::vector<ColumnMapping> columns;
+    QString timeColumn;                      // csv: source column holding time ("" = the column 't')
+    QString timeUnit;                        // csv: unit of that column ("" = from its header, else s)
+    QJsonObject metadata;                    // merged into the target recording's metadata (athlete, ...)
 };
 
 struct ImportedItem {
@@ -31,6 +47,7 @@ struct ImportedItem {
 struct ImportResult {
     std::vector<ImportedItem> items;
     QStringList warnings;                    // e.g. "repaired 3 non-increasing time stamps"
+    std::map<QString, QJsonObject> recordingMetadata;  // recording → keys merged into its metadata
 };
 
 class Importer {
@@ -49,11 +66,15 @@ public:
 const std::vector<std::unique_ptr<Importer>>& importers();
 const Importer* findImporter(const QString& format);
 
+// The importer for format ("auto" or empty: detected from the file name and first bytes).
+Expected<const Importer*> chooseImporter(const QString& file, const QString& format);
+
 // Reads file with the importer chosen by options.format (or detected). Names items from
 // options.target and the kind. Errors name the file, line and column.
 Expected<ImportResult> importFile(const QString& file, const ImportOptions& options, const Progress& progress = {});
 // Puts the imported items into the project; refuses existing names unless options.overwrite.
-// All-or-nothing: checks every name before inserting any.
+// All-or-nothing: checks every name before inserting any. recordingMetadata is merged into the
+// recordings' metadata (created if needed).
 Status applyImport(Project& project, ImportResult result, bool overwrite);
 
 }  // namespace athlos

@@ -15,6 +15,7 @@
 #include <QDateTime>
 #include <QFile>
 #include <QFileInfo>
+#include <QJsonArray>
 #include <QSet>
 
 namespace athlos {
@@ -45,6 +46,16 @@ Provenance importProvenance(const Importer& importer, const QString& file, const
                                {"time_repair", options.timeRepair},
                                {"frame", options.frame},
                                {"target", options.target}};
+    if (!options.columns.empty()) {
+        QJsonArray columns;
+        for (const ColumnMapping& m : options.columns)
+            columns.append(QJsonObject{{"source", m.source}, {"channel", m.channel}, {"unit", m.unit}, {"skip", m.skip}});
+        p.parameters.insert(QStringLiteral("columns"), columns);
+    }
+    if (!options.timeColumn.isEmpty())
+        p.parameters.insert(QStringLiteral("time_column"), options.timeColumn);
+    if (!options.timeUnit.isEmpty())
+        p.parameters.insert(QStringLiteral("time_unit"), options.timeUnit);
     p.sourceFile = QFileInfo(file).absoluteFilePath();
     p.appVersion = appVersion();
     p.time = QDateTime::currentDateTimeUtc();
@@ -66,6 +77,28 @@ const std::vector<std::unique_ptr<Importer>>& importers() {
     return list;
 }
 
+Expected<const Importer*> chooseImporter(const QString& file, const QString& format) {
+    auto known = [] {
+        QStringList formats;
+        for (const auto& candidate : importers())
+            formats << candidate->format();
+        return formats.join(QStringLiteral(", "));
+    };
+    if (!format.isEmpty() && format != QLatin1String("auto")) {
+        if (const Importer* importer = findImporter(format))
+            return importer;
+        return makeError(QStringLiteral("unknown import format '%1' (known: auto, %2)").arg(format, known()));
+    }
+    QFile f(file);
+    if (!f.open(QIODevice::ReadOnly))
+        return makeError(QStringLiteral("%1: cannot open: %2").arg(file, f.errorString()));
+    const QByteArray head = f.read(kHeadBytes);
+    for (const auto& candidate : importers())
+        if (candidate->canRead(file, head))
+            return candidate.get();
+    return makeError(QStringLiteral("%1: cannot tell the file format; give one of: %2").arg(file, known()));
+}
+
 const Importer* findImporter(const QString& format) {
     for (const auto& importer : importers())
         if (importer->format() == format)
@@ -83,36 +116,21 @@ Expected<ImportResult> importFile(const QString& file, const ImportOptions& opti
     if (!target)
         return target.error();
 
-    const Importer* importer = nullptr;
-    if (options.format.isEmpty() || options.format == QLatin1String("auto")) {
-        QFile f(file);
-        if (!f.open(QIODevice::ReadOnly))
-            return makeError(QStringLiteral("%1: cannot open: %2").arg(file, f.errorString()));
-        const QByteArray head = f.read(kHeadBytes);
-        for (const auto& candidate : importers())
-            if (candidate->canRead(file, head)) {
-                importer = candidate.get();
-                break;
-            }
-        if (!importer) {
-            QStringList formats;
-            for (const auto& candidate : importers())
-                formats << candidate->format();
-            return makeError(QStringLiteral("%1: cannot tell the file format; give one of: %2")
-                                 .arg(file, formats.join(QStringLiteral(", "))));
-        }
-    } else if (!(importer = findImporter(options.format))) {
-        QStringList formats;
-        for (const auto& candidate : importers())
-            formats << candidate->format();
-        return makeError(QStringLiteral("unknown import format '%1' (known: auto, %2)")
-                             .arg(options.format, formats.join(QStringLiteral(", "))));
-    }
+    const auto chosen = chooseImporter(file, options.format);
+    if (!chosen)
+        return chosen.error();
+    const Importer* importer = *chosen;
+    if (!options.columns.empty() || !options.timeColumn.isEmpty() || !options.timeUnit.isEmpty())
+        if (importer->format() != QLatin1String("csv"))
+            return makeError(QStringLiteral("%1: a column mapping applies to CSV files only (format '%2')")
+                                 .arg(file, importer->format()));
 
     auto result = importer->read(file, options, progress);
     if (!result)
         return result;
     const Provenance provenance = importProvenance(*importer, file, options);
+    if (!options.metadata.isEmpty())
+        result->recordingMetadata[target->recording] = options.metadata;
     const bool several = result->items.size() > 1;
     for (ImportedItem& item : result->items) {
         const QString defaultName = item.path;
@@ -155,6 +173,11 @@ Status applyImport(Project& project, ImportResult result, bool overwrite) {
             project.putStream(item.path, std::move(*stream));
         else
             project.putTable(item.path, std::move(std::get<Table>(item.item)));
+    }
+    for (const auto& [name, metadata] : result.recordingMetadata) {
+        QJsonObject& merged = project.ensureRecording(name).metadata;
+        for (auto it = metadata.begin(); it != metadata.end(); ++it)
+            merged.insert(it.key(), it.value());
     }
     return {};
 }

@@ -1,0 +1,56 @@
+#pragma once
+// Page 2 of the import wizard, per file: format and kind (detected), the first rows, the mapping of
+// each source column to a channel and the unit its values are in (auto-filled from the header and
+// common export names), the time column, and recording, stream and athlete names.
+#include <QWizardPage>
+
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QTableWidget;
+
+namespace athlos::ui {
+
+class ImportWizard;
+
+class ImportWizardMappingPage : public QWizardPage {
+    Q_OBJECT
+
+public:
+    enum MappingColumn { SourceColumn, ChannelColumn, UnitColumn, StoredColumn, ImportColumn };
+
+    explicit ImportWizardMappingPage(ImportWizard& wizard);
+    void initializePage() override;
+    bool validatePage() override;
+
+    // Shows file index (storing the edits of the file shown so far).
+    void showFile(int index);
+    // Writes the widgets into the wizard's settings of the file shown.
+    void store();
+
+    QTableWidget* previewTable() const { return previewTable_; }
+    QTableWidget* mappingTable() const { return mappingTable_; }
+    QComboBox* unitCombo(int row) const;
+
+private:
+    void load();
+    void updateStored(int row);  // the "Stored as" cell of row, from its channel and unit
+    void onFormatOrKindChanged();
+
+    ImportWizard& wizard_;
+    int current_ = -1;
+    bool loading_ = false;
+    QComboBox* fileCombo_ = nullptr;
+    QComboBox* formatCombo_ = nullptr;
+    QComboBox* kindCombo_ = nullptr;
+    QLabel* errorLabel_ = nullptr;
+    QTableWidget* previewTable_ = nullptr;
+    QTableWidget* mappingTable_ = nullptr;
+    QComboBox* timeColumnCombo_ = nullptr;
+    QComboBox* timeUnitCombo_ = nullptr;
+    QLineEdit* recordingEdit_ = nullptr;
+    QLineEdit* streamEdit_ = nullptr;
+    QLineEdit* athleteEdit_ = nullptr;
+};
+
+}  // namespace athlos::ui
