@@ -4,6 +4,8 @@
 
 #include "ui/UiEntry.h"
 
+#include <cstdio>
+
 namespace athlos::cli {
 
 int cmdScreenshot(const QStringList& args) {
@@ -16,7 +18,13 @@ int cmdScreenshot(const QStringList& args) {
     p.addOption({QStringLiteral("to"), QStringLiteral("PNG file to write."), QStringLiteral("file")});
     p.addOption({QStringLiteral("size"), QStringLiteral("Window size WxH (default 1280x800)."), QStringLiteral("WxH"),
                  QStringLiteral("1280x800")});
-    if (auto code = p.parse(args, 1, 1)) return *code;
+    p.addOption({QStringLiteral("list"), QStringLiteral("Print the view names, one per line (for scripts), and exit.")});
+    if (auto code = p.parse(args, 0, 1)) return *code;
+    if (p.parser().isSet(QStringLiteral("list"))) {
+        for (const QString& view : views) std::printf("%s\n", qUtf8Printable(view));
+        return Ok;
+    }
+    if (p.positional().isEmpty()) return fail(QStringLiteral("screenshot needs a project (or --list)"), Usage);
     const QString to = p.parser().value(QStringLiteral("to"));
     if (to.isEmpty()) return fail(QStringLiteral("screenshot needs --to <file.png>"), Usage);
     const QStringList wh = p.parser().value(QStringLiteral("size")).split(QLatin1Char('x'));

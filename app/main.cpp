@@ -1,5 +1,6 @@
 // The `athlos` executable: a headless command line over core, and the GUI (ui library).
 #include "Commands.h"
+#include "VideoCommand.h"
 
 #include "core/util/Version.h"
 #include "ui/UiEntry.h"
@@ -30,6 +31,8 @@ const char* kUsage =
     "  export <project> <rec/stream> --to <file.csv|file.h5>\n"
     "  pipeline <project> <pipeline.json>        run a list of processor steps\n"
     "  screenshot <project> --view <name> --to <file.png>   render a view offscreen\n"
+    "  video <project> <recording> <file> [--offset S] | --detach | --info\n"
+    "                                            attach a video to a recording\n"
     "\n"
     "Every command has --help. Exit code 0 on success, non-zero with a one-line reason otherwise.\n";
 
@@ -59,7 +62,7 @@ int main(int argc, char** argv) {
         {QStringLiteral("new"), cmdNew},         {QStringLiteral("import"), cmdImport},
         {QStringLiteral("info"), cmdInfo},       {QStringLiteral("processors"), cmdProcessors},
         {QStringLiteral("run"), cmdRun},         {QStringLiteral("export"), cmdExport},
-        {QStringLiteral("pipeline"), cmdPipeline},
+        {QStringLiteral("pipeline"), cmdPipeline}, {QStringLiteral("video"), cmdVideo},
     };
     const QString command = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QString();
 

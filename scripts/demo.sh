@@ -20,8 +20,11 @@ for extra in resources/demo/pipeline-*.json; do
   [ -e "$extra" ] || continue
   "$ATHLOS" pipeline "$P" "$extra"
 done
+# A synthetic clip (each frame shows its index) attached to the walk, so the video dock has footage.
+"$ATHLOS" video --write-pattern "$OUT/demo-pattern.avi" --frames 300 --fps 30
+"$ATHLOS" video "$P" walk "$OUT/demo-pattern.avi" --offset 2
 "$ATHLOS" info "$P"
-for view in $("$ATHLOS" screenshot --help | sed -n 's/.*One of: \(.*\)/\1/p' | tr -d ','); do
+for view in $("$ATHLOS" screenshot --list); do
   "$ATHLOS" screenshot "$P" --view "$view" --to "$OUT/demo-$view.png"
   echo "screenshot: $OUT/demo-$view.png"
 done

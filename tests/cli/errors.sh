@@ -40,8 +40,14 @@ echo '{"steps": [{"processor": "resample", "input": "rec/imu", "output": "rec/r"
 expect_fail "failing pipeline step" "step 2" "$ATHLOS" pipeline "$P" "$WORK/half.json"
 cmp -s "$P" "$WORK/before.athlos" || fail "failed pipeline changed the project file"
 expect_fail "unknown command" "unknown command" "$ATHLOS" frobnicate
-for c in new import info processors run export pipeline screenshot; do
+for c in new import info processors run export pipeline screenshot video; do
   expect_ok "$c --help" "$ATHLOS" "$c" --help
   grep -q "Usage: athlos $c" "$WORK/out" || fail "$c --help has no usage line"
 done
+# Scripts (the demo) take the view names from --list, one per line.
+expect_ok "screenshot --list" "$ATHLOS" screenshot --list
+for v in main trajectory annotate actions joint-angles; do
+  grep -qx "$v" "$WORK/out" || fail "screenshot --list lacks $v"
+done
+expect_fail "screenshot without project" "needs a project" "$ATHLOS" screenshot --view main --to "$WORK/x.png"
 finish
