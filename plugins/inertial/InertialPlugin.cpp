@@ -2,13 +2,18 @@
 
 #include "plugins/inertial/GnssImuProcessor.h"
 #include "plugins/inertial/ImuCalibrationProcessor.h"
+#include "plugins/inertial/JointAnglesProcessor.h"
 #include "plugins/inertial/OrientationProcessor.h"
+#include "plugins/inertial/SegmentCalibrationProcessor.h"
+#include "plugins/inertial/SimulateLimbProcessor.h"
 
 namespace athlos::inertial {
 
 std::vector<std::shared_ptr<const Processor>> InertialPlugin::processors() const {
     return {std::make_shared<OrientationProcessor>(), std::make_shared<ImuCalibrationProcessor>(),
-            std::make_shared<GnssImuProcessor>(), std::make_shared<SimulateImuGnssProcessor>()};
+            std::make_shared<GnssImuProcessor>(), std::make_shared<SimulateImuGnssProcessor>(),
+            std::make_shared<JointAnglesProcessor>(), std::make_shared<SimulateLimbProcessor>(),
+            std::make_shared<SegmentCalibrationProcessor>()};
 }
 
 }  // namespace athlos::inertial

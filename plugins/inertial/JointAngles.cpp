@@ -1,0 +1,182 @@
+#include "plugins/inertial/JointAngles.h"
+
+#include "core/math/EulerAngles.h"
+
+#include <QRegularExpression>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace athlos::inertial {
+
+using math::Quat;
+using math::Vec3;
+
+namespace {
+
+const math::EulerSequence& zxy() {
+    static const math::EulerSequence sequence = *math::EulerSequence::parse(QStringLiteral("ZXY"));
+    return sequence;
+}
+
+// Sign factors taking (α, β, γ) to (flexion, abduction, internal rotation); each is ±1, so the map
+// is its own inverse.
+Vec3 signs(Joint joint, Side side) {
+    const double flexion = (joint == Joint::Knee || joint == Joint::Trunk) ? -1.0 : 1.0;
+    if (joint == Joint::Trunk) return {flexion, 1.0, 1.0};
+    // Right: a positive β tilts the distal long axis to the right, i.e. its lower end medially
+    // (adduction); a positive γ turns the distal anterior axis to the left, i.e. medially (internal).
+    // The left side is the mirror image through the sagittal plane, which flips both.
+    return side == Side::Right ? Vec3(flexion, -1.0, 1.0) : Vec3(flexion, 1.0, -1.0);
+}
+
+double clampedAcos(double c) { return std::acos(std::clamp(c, -1.0, 1.0)); }
+
+}  // namespace
+
+QStringList jointNames() {
+    return {QStringLiteral("knee"), QStringLiteral("hip"), QStringLiteral("ankle"), QStringLiteral("trunk")};
+}
+
+Expected<Joint> parseJoint(const QString& name) {
+    const int i = jointNames().indexOf(name);
+    if (i < 0)
+        return makeError(QStringLiteral("joint: '%1' is not one of %2").arg(name, jointNames().join(QStringLiteral(", "))));
+    return static_cast<Joint>(i);
+}
+
+QString jointName(Joint joint) { return jointNames().at(static_cast<int>(joint)); }
+
+Expected<Side> parseSide(const QString& name) {
+    if (name == QLatin1String("right")) return Side::Right;
+    if (name == QLatin1String("left")) return Side::Left;
+    return makeError(QStringLiteral("side: '%1' is not one of right, left").arg(name));
+}
+
+QString sideName(Side side) { return side == Side::Right ? QStringLiteral("right") : QStringLiteral("left"); }
+
+QStringList jointSegments(Joint joint) {
+    switch (joint) {
+    case Joint::Knee: return {QStringLiteral("thigh"), QStringLiteral("shank")};
+    case Joint::Hip: return {QStringLiteral("pelvis"), QStringLiteral("thigh")};
+    case Joint::Ankle: return {QStringLiteral("shank"), QStringLiteral("foot")};
+    case Joint::Trunk: return {QStringLiteral("pelvis"), QStringLiteral("thorax")};
+    }
+    return {};
+}
+
+AnatomicalAngles anatomicalFromCardan(const Vec3& zxy, Joint joint, Side side) {
+    const Vec3 a = zxy.cwiseProduct(signs(joint, side));
+    return {a[0], a[1], a[2]};
+}
+
+Vec3 cardanFromAnatomical(const AnatomicalAngles& angles, Joint joint, Side side) {
+    return angles.vector().cwiseProduct(signs(joint, side));
+}
+
+Quat relativeFromAnatomical(const AnatomicalAngles& angles, Joint joint, Side side) {
+    return math::quaternionFromEuler(cardanFromAnatomical(angles, joint, side), zxy());
+}
+
+double segmentInclination(const Quat& segment) { return clampedAcos((segment * Vec3::UnitY()).z()); }
+
+double longAxisAngle(const Quat& proximalSegment, const Quat& distalSegment) {
+    return clampedAcos((proximalSegment * Vec3::UnitY()).dot(distalSegment * Vec3::UnitY()));
+}
+
+JointAngles::Sample JointAngles::update(const Quat& proximalSensor, const Quat& distalSensor) const {
+    const Quat proximal = (proximalSensor * params_.proximalMount).normalized();
+    const Quat distal = (math::headingRotation(params_.headingOffset) * distalSensor * params_.distalMount).normalized();
+    Sample s;
+    s.relative = math::canonical((proximal.conjugate() * distal).normalized());
+    s.cardan = math::eulerFromQuaternion(s.relative, zxy());
+    s.angles = anatomicalFromCardan(s.cardan, params_.joint, params_.side);
+    s.longAxisAngle = longAxisAngle(proximal, distal);
+    s.proximalInclination = segmentInclination(proximal);
+    s.distalInclination = segmentInclination(distal);
+    return s;
+}
+
+std::vector<JointAngles::Sample> JointAngles::updateBatch(std::span<const Quat> proximalSensor,
+                                                          std::span<const Quat> distalSensor) const {
+    const std::size_t n = std::min(proximalSensor.size(), distalSensor.size());
+    std::vector<Sample> out;
+    out.reserve(n);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (std::size_t k = 0; k < n; ++k) {
+        if (proximalSensor[k].coeffs().allFinite() && distalSensor[k].coeffs().allFinite()) {
+            out.push_back(update(proximalSensor[k], distalSensor[k]));
+        } else {
+            // A gap in either input (e.g. outside the other stream's span) is a gap in the angles.
+            Sample s;
+            s.angles = {nan, nan, nan};
+            s.cardan = Vec3::Constant(nan);
+            s.relative = Quat(nan, nan, nan, nan);
+            s.longAxisAngle = s.proximalInclination = s.distalInclination = nan;
+            out.push_back(s);
+        }
+    }
+    return out;
+}
+
+double JointAngles::estimateHeadingOffset(std::span<const Quat> proximalSensor, std::span<const Quat> distalSensor,
+                                          const Quat& proximalMount, const Quat& distalMount) {
+    double sumSin = 0.0, sumCos = 0.0;
+    const std::size_t n = std::min(proximalSensor.size(), distalSensor.size());
+    for (std::size_t k = 0; k < n; ++k) {
+        if (!proximalSensor[k].coeffs().allFinite() || !distalSensor[k].coeffs().allFinite()) continue;
+        const Vec3 ap = (proximalSensor[k] * proximalMount) * Vec3::UnitX();
+        const Vec3 ad = (distalSensor[k] * distalMount) * Vec3::UnitX();
+        // A nearly vertical anterior axis has no meaningful heading (weight by horizontal length).
+        const double wp = ap.head<2>().norm(), wd = ad.head<2>().norm();
+        if (wp < 0.2 || wd < 0.2) continue;
+        const double delta = math::wrapPi(std::atan2(ap.y(), ap.x()) - std::atan2(ad.y(), ad.x()));
+        sumSin += wp * wd * std::sin(delta);
+        sumCos += wp * wd * std::cos(delta);
+    }
+    return (sumSin == 0.0 && sumCos == 0.0) ? 0.0 : std::atan2(sumSin, sumCos);
+}
+
+std::vector<Quat> slerpAt(std::span<const double> sourceTime, std::span<const Quat> source, std::span<const double> t) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    std::vector<Quat> out(t.size(), Quat(nan, nan, nan, nan));
+    for (std::size_t k = 0; k < t.size(); ++k) {
+        const auto it = std::lower_bound(sourceTime.begin(), sourceTime.end(), t[k]);
+        if (it == sourceTime.end()) continue;
+        const auto j = static_cast<std::size_t>(it - sourceTime.begin());
+        if (*it == t[k]) {
+            out[k] = source[j];
+        } else if (j > 0) {
+            const Quat& a = source[j - 1];
+            const Quat& b = source[j];
+            if (!a.coeffs().allFinite() || !b.coeffs().allFinite()) continue;
+            const double f = (t[k] - sourceTime[j - 1]) / (sourceTime[j] - sourceTime[j - 1]);
+            out[k] = math::slerp(a.normalized(), b.normalized(), f);
+        }
+    }
+    return out;
+}
+
+Expected<Quat> parseQuaternion(const QString& text, const QString& parameter) {
+    static const QRegularExpression separators(QStringLiteral("[,;\\s]+"));
+    const QStringList parts = text.trimmed().split(separators, Qt::SkipEmptyParts);
+    if (parts.size() != 4)
+        return makeError(QStringLiteral("%1: '%2' is not a quaternion; give four numbers w,x,y,z (scalar first)")
+                             .arg(parameter, text));
+    Eigen::Vector4d v;
+    for (int i = 0; i < 4; ++i) {
+        bool ok = false;
+        v[i] = parts[i].toDouble(&ok);
+        if (!ok || !std::isfinite(v[i]))
+            return makeError(QStringLiteral("%1: component %2 '%3' is not a number").arg(parameter).arg(i + 1).arg(parts[i]));
+    }
+    if (v.norm() < 1e-9) return makeError(QStringLiteral("%1: the quaternion '%2' has zero length").arg(parameter, text));
+    return math::quatFromWxyz(v.normalized());
+}
+
+QString formatQuaternion(const Quat& q) {
+    const Quat c = math::canonical(q.normalized());
+    return QStringLiteral("%1,%2,%3,%4").arg(c.w(), 0, 'g', 12).arg(c.x(), 0, 'g', 12).arg(c.y(), 0, 'g', 12).arg(c.z(), 0, 'g', 12);
+}
+
+}  // namespace athlos::inertial
