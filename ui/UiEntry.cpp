@@ -8,6 +8,8 @@
 #include "ui/ToolRegistry.h"
 #include "ui/TimeSeriesPanel.h"
 #include "ui/TrajectoryPanel.h"
+#include "ui/wizards/PlaybackTracks.h"
+#include "ui/wizards/PlaybackView.h"
 
 #include <QApplication>
 #include <QCoreApplication>
@@ -134,8 +136,13 @@ Status renderScreenshot(const QString& projectPath, const QString& view, const Q
         return makeError(QCoreApplication::translate("athlos::ui::UiEntry", "the project has no streams to show in view '%1'")
                              .arg(view));
     } else if (view == QLatin1String("trajectory")) {
-        const QString path = window.firstPositionStream();
-        if (path.isEmpty()) {
+        // A team (a recording with the position streams of two or more athletes) plays back on its
+        // venue, cursor mid-recording.
+        const QString team = PlaybackTracks::teamRecording(*window.project(), 2);
+        const QString path = team.isEmpty() ? window.firstPositionStream() : QString();
+        if (!team.isEmpty()) {
+            if (Status prepared = PlaybackView::showInWindow(window, team); !prepared) return prepared;
+        } else if (path.isEmpty()) {
             const QString note = QCoreApplication::translate("athlos::ui::UiEntry", "No position stream (lps-position, trajectory or gnss with x/y) in this "
                                       "project; showing the main view.");
             qInfo("note: %s", qUtf8Printable(note));
