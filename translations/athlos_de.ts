@@ -2,6 +2,212 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE" sourcelanguage="en">
 <context>
+    <name>Tools</name>
+    <message>
+        <source>Calibrate LPS…</source>
+        <translation>LPS kalibrieren…</translation>
+    </message>
+    <message>
+        <source>Positioning</source>
+        <translation>Positionierung</translation>
+    </message>
+    <message>
+        <source>Orientation angles…</source>
+        <translation>Orientierungswinkel…</translation>
+    </message>
+    <message>
+        <source>Inertial</source>
+        <translation>Inertial</translation>
+    </message>
+    <message>
+        <source>Filter positions…</source>
+        <translation>Positionen filtern…</translation>
+    </message>
+    <message>
+        <source>Action timeline…</source>
+        <translation>Aktionszeitleiste…</translation>
+    </message>
+    <message>
+        <source>View</source>
+        <translation>Ansicht</translation>
+    </message>
+    <message>
+        <source>Import Wizard…</source>
+        <translation>Import-Assistent…</translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>Datei</translation>
+    </message>
+    <message>
+        <source>Joint angles…</source>
+        <translation>Gelenkwinkel…</translation>
+    </message>
+    <message>
+        <source>Team playback…</source>
+        <translation>Mannschaftswiedergabe …</translation>
+    </message>
+    <message>
+        <source>Video…</source>
+        <translation>Video…</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::ActionTimeline</name>
+    <message>
+        <source>No annotations in this recording. Annotate on the time series or run an event detector (e.g. gait-events).</source>
+        <translation>Keine Annotationen in dieser Aufnahme. Annotieren Sie in der Zeitreihe oder starten Sie einen Ereignisdetektor (z. B. gait-events).</translation>
+    </message>
+    <message>
+        <source>%1  %2</source>
+        <translation>%1  %2</translation>
+    </message>
+    <message>
+        <source> · %1 s</source>
+        <translation> · %1 s</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::ActionsView</name>
+    <message>
+        <source>Recording:</source>
+        <translation>Aufnahme:</translation>
+    </message>
+    <message>
+        <source>Refresh</source>
+        <translation>Aktualisieren</translation>
+    </message>
+    <message>
+        <source>Read the annotations again (after a processor run).</source>
+        <translation>Annotationen neu einlesen (nach einem Prozessorlauf).</translation>
+    </message>
+    <message>
+        <source>Solid: manual annotations. Hatched: predicted by a processor, more opaque with higher confidence. Click to move the time cursor.</source>
+        <translation>Gefüllt: manuelle Annotationen. Schraffiert: von einem Prozessor vorhergesagt, umso deckender, je höher die Konfidenz. Klicken setzt den Zeitcursor.</translation>
+    </message>
+    <message>
+        <source>Class</source>
+        <translation>Klasse</translation>
+    </message>
+    <message>
+        <source>Count</source>
+        <translation>Anzahl</translation>
+    </message>
+    <message>
+        <source>Predicted</source>
+        <translation>Vorhergesagt</translation>
+    </message>
+    <message>
+        <source>Mean (s)</source>
+        <translation>Mittel (s)</translation>
+    </message>
+    <message>
+        <source>Confidence</source>
+        <translation>Konfidenz</translation>
+    </message>
+    <message>
+        <source>Mean duration of the intervals</source>
+        <translation>Mittlere Dauer der Intervalle</translation>
+    </message>
+    <message>
+        <source>Mean confidence of the predicted ones</source>
+        <translation>Mittlere Konfidenz der vorhergesagten</translation>
+    </message>
+    <message>
+        <source>◀ Previous</source>
+        <translation>◀ Zurück</translation>
+    </message>
+    <message>
+        <source>Next ▶</source>
+        <translation>Weiter ▶</translation>
+    </message>
+    <message>
+        <source>Accept</source>
+        <translation>Übernehmen</translation>
+    </message>
+    <message>
+        <source>Reject</source>
+        <translation>Verwerfen</translation>
+    </message>
+    <message>
+        <source>Previous predicted action</source>
+        <translation>Vorherige vorhergesagte Aktion</translation>
+    </message>
+    <message>
+        <source>Next predicted action</source>
+        <translation>Nächste vorhergesagte Aktion</translation>
+    </message>
+    <message>
+        <source>Keep the predicted action as a reviewed manual annotation (undoable).</source>
+        <translation>Die vorhergesagte Aktion als geprüfte manuelle Annotation behalten (rückgängig machbar).</translation>
+    </message>
+    <message>
+        <source>Delete the predicted action (undoable).</source>
+        <translation>Die vorhergesagte Aktion löschen (rückgängig machbar).</translation>
+    </message>
+    <message>
+        <source>Review:</source>
+        <translation>Prüfen:</translation>
+    </message>
+    <message>
+        <source>no recording &apos;%1&apos; in this project</source>
+        <translation>keine Aufnahme „%1“ in diesem Projekt</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n annotation(s)</source>
+        <translation>
+            <numerusform>%n Annotation</numerusform>
+            <numerusform>%n Annotationen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n predicted</source>
+        <translation>
+            <numerusform>%n vorhergesagt</numerusform>
+            <numerusform>%n vorhergesagt</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Reviewing needs the annotation editor of the main window.</source>
+        <translation>Zum Prüfen wird der Annotationseditor des Hauptfensters benötigt.</translation>
+    </message>
+    <message>
+        <source>No predicted action selected; use Next.</source>
+        <translation>Keine vorhergesagte Aktion ausgewählt; verwenden Sie „Weiter“.</translation>
+    </message>
+    <message>
+        <source>No predicted actions to review.</source>
+        <translation>Keine vorhergesagten Aktionen zu prüfen.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n predicted action(s) to review; press Next.</source>
+        <translation>
+            <numerusform>%n vorhergesagte Aktion zu prüfen; drücken Sie Weiter.</numerusform>
+            <numerusform>%n vorhergesagte Aktionen zu prüfen; drücken Sie Weiter.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 of %2: %3, %4–%5 s, confidence %6</source>
+        <translation>%1 von %2: %3, %4–%5 s, Konfidenz %6</translation>
+    </message>
+    <message>
+        <source>Action timeline</source>
+        <translation>Aktionszeitleiste</translation>
+    </message>
+    <message>
+        <source>no annotations in this project; run an event detector (e.g. gait-events) or annotate first</source>
+        <translation>keine Annotationen in diesem Projekt; starten Sie zuerst einen Ereignisdetektor (z. B. gait-events) oder annotieren Sie</translation>
+    </message>
+    <message>
+        <source>recording &apos;%1&apos; has no stream to plot</source>
+        <translation>Aufnahme „%1“ hat keinen Datenstrom zum Anzeigen</translation>
+    </message>
+</context>
+<context>
     <name>athlos::ui::AnnotationEditor</name>
     <message>
         <source>Open a project first.</source>
@@ -128,6 +334,222 @@
     <message>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::ImportWizard</name>
+    <message>
+        <source>Import Wizard</source>
+        <translation>Import-Assistent</translation>
+    </message>
+    <message>
+        <source>Checking %1 file(s)…</source>
+        <translation>%1 Datei(en) werden geprüft …</translation>
+    </message>
+    <message>
+        <source>The check was cancelled; check again before importing.</source>
+        <translation>Die Prüfung wurde abgebrochen; vor dem Import erneut prüfen.</translation>
+    </message>
+    <message>
+        <source>%1: the recording name is empty</source>
+        <translation>%1: Der Name der Aufnahme ist leer</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is imported from another file as well; give it another name</source>
+        <translation>%1: &apos;%2&apos; wird auch aus einer anderen Datei importiert; bitte einen anderen Namen wählen</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; already exists in the project (tick overwrite to replace it)</source>
+        <translation>%1: &apos;%2&apos; existiert bereits im Projekt (zum Ersetzen „Überschreiben“ ankreuzen)</translation>
+    </message>
+    <message>
+        <source>Create or open a project first, then import recordings into it.</source>
+        <translation>Zuerst ein Projekt anlegen oder öffnen, dann Aufnahmen hinein importieren.</translation>
+    </message>
+    <message>
+        <source>Importing %1 file(s)…</source>
+        <translation>%1 Datei(en) werden importiert …</translation>
+    </message>
+    <message>
+        <source>Import cancelled; the project is unchanged.</source>
+        <translation>Import abgebrochen; das Projekt ist unverändert.</translation>
+    </message>
+    <message>
+        <source>Nothing was imported.
+
+%1</source>
+        <translation>Es wurde nichts importiert.
+
+%1</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::ImportWizardCheckPage</name>
+    <message>
+        <source>Check</source>
+        <translation>Prüfung</translation>
+    </message>
+    <message>
+        <source>Every file has been read without importing it. Fix the problems listed (go back to change the mapping or the names), then Finish imports all files at once.</source>
+        <translation>Jede Datei wurde gelesen, ohne sie zu importieren. Die aufgeführten Probleme beheben (zurückgehen, um Zuordnung oder Namen zu ändern); dann importiert „Fertigstellen“ alle Dateien auf einmal.</translation>
+    </message>
+    <message>
+        <source>Overwrite streams that exist in the project</source>
+        <translation>Im Projekt vorhandene Datenströme überschreiben</translation>
+    </message>
+    <message>
+        <source>Check Again</source>
+        <translation>Erneut prüfen</translation>
+    </message>
+    <message>
+        <source>Warning: %1</source>
+        <translation>Warnung: %1</translation>
+    </message>
+    <message>
+        <source>Not checked yet.</source>
+        <translation>Noch nicht geprüft.</translation>
+    </message>
+    <message>
+        <source>All %1 file(s) can be imported.</source>
+        <translation>Alle %1 Datei(en) können importiert werden.</translation>
+    </message>
+    <message>
+        <source>%1 problem(s) must be fixed before importing.</source>
+        <translation>%1 Problem(e) müssen vor dem Import behoben werden.</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::ImportWizardFilesPage</name>
+    <message>
+        <source>Files</source>
+        <translation>Dateien</translation>
+    </message>
+    <message>
+        <source>Choose the files to import: several at once, or a folder with one file per athlete. Recording and athlete names can be edited here or on the next page.</source>
+        <translation>Dateien für den Import wählen: mehrere auf einmal oder einen Ordner mit einer Datei pro Athlet. Namen von Aufnahme und Athlet lassen sich hier oder auf der nächsten Seite bearbeiten.</translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>Datei</translation>
+    </message>
+    <message>
+        <source>Recording</source>
+        <translation>Aufnahme</translation>
+    </message>
+    <message>
+        <source>Athlete</source>
+        <translation>Athlet</translation>
+    </message>
+    <message>
+        <source>Format</source>
+        <translation>Format</translation>
+    </message>
+    <message>
+        <source>Add Files…</source>
+        <translation>Dateien hinzufügen …</translation>
+    </message>
+    <message>
+        <source>Add Folder (One File per Athlete)…</source>
+        <translation>Ordner hinzufügen (eine Datei pro Athlet) …</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Import Files</source>
+        <translation>Dateien importieren</translation>
+    </message>
+    <message>
+        <source>Folder with One File per Athlete</source>
+        <translation>Ordner mit einer Datei pro Athlet</translation>
+    </message>
+    <message>
+        <source>unreadable</source>
+        <translation>nicht lesbar</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::ImportWizardMappingPage</name>
+    <message>
+        <source>Columns and Names</source>
+        <translation>Spalten und Namen</translation>
+    </message>
+    <message>
+        <source>Check each file: format, kind, the first rows, and which channel and unit each column becomes. Values are converted to SI units when imported.</source>
+        <translation>Jede Datei prüfen: Format, Art, die ersten Zeilen und welcher Kanal mit welcher Einheit aus jeder Spalte wird. Beim Import werden die Werte in SI-Einheiten umgerechnet.</translation>
+    </message>
+    <message>
+        <source>File:</source>
+        <translation>Datei:</translation>
+    </message>
+    <message>
+        <source>detect</source>
+        <translation>erkennen</translation>
+    </message>
+    <message>
+        <source>Format:</source>
+        <translation>Format:</translation>
+    </message>
+    <message>
+        <source>Kind:</source>
+        <translation>Art:</translation>
+    </message>
+    <message>
+        <source>Column</source>
+        <translation>Spalte</translation>
+    </message>
+    <message>
+        <source>Channel</source>
+        <translation>Kanal</translation>
+    </message>
+    <message>
+        <source>Unit in File</source>
+        <translation>Einheit in der Datei</translation>
+    </message>
+    <message>
+        <source>Stored as</source>
+        <translation>Gespeichert als</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Importieren</translation>
+    </message>
+    <message>
+        <source>Unit:</source>
+        <translation>Einheit:</translation>
+    </message>
+    <message>
+        <source>Time column:</source>
+        <translation>Zeitspalte:</translation>
+    </message>
+    <message>
+        <source>Recording:</source>
+        <translation>Aufnahme:</translation>
+    </message>
+    <message>
+        <source>Stream:</source>
+        <translation>Datenstrom:</translation>
+    </message>
+    <message>
+        <source>Athlete:</source>
+        <translation>Athlet:</translation>
+    </message>
+    <message>
+        <source>line %1</source>
+        <translation>Zeile %1</translation>
+    </message>
+    <message>
+        <source>none (a table)</source>
+        <translation>keine (eine Tabelle)</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>Fehler</translation>
     </message>
 </context>
 <context>
@@ -263,6 +685,204 @@
     <message>
         <source>Result of %1 %2</source>
         <translation>Ergebnis von %1 %2</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::JointAnglesView</name>
+    <message>
+        <source>flexion [°]</source>
+        <translation>Flexion [°]</translation>
+    </message>
+    <message>
+        <source>abduction [°]</source>
+        <translation>Abduktion [°]</translation>
+    </message>
+    <message>
+        <source>internal rotation [°]</source>
+        <translation>Innenrotation [°]</translation>
+    </message>
+    <message>
+        <source>Stream:</source>
+        <translation>Datenstrom:</translation>
+    </message>
+    <message>
+        <source>t [s]</source>
+        <translation>t [s]</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a joint-angles stream (flexion, abduction, rotation)</source>
+        <translation>&apos;%1&apos; ist kein Gelenkwinkel-Datenstrom (flexion, abduction, rotation)</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>estimate</source>
+        <translation>Schätzung</translation>
+    </message>
+    <message>
+        <source>reference (RMSE %1°)</source>
+        <translation>Referenz (RMSE %1°)</translation>
+    </message>
+    <message>
+        <source>No reference angles for this joint in the recording.</source>
+        <translation>Keine Referenzwinkel für dieses Gelenk in der Aufnahme.</translation>
+    </message>
+    <message>
+        <source>Reference: %1</source>
+        <translation>Referenz: %1</translation>
+    </message>
+    <message>
+        <source>No joint-angles stream in this project; run joint-angles first.</source>
+        <translation>Kein Gelenkwinkel-Datenstrom in diesem Projekt; zuerst joint-angles ausführen.</translation>
+    </message>
+    <message>
+        <source>t = %1 s: flexion %2°, abduction %3°, rotation %4°</source>
+        <translation>t = %1 s: Flexion %2°, Abduktion %3°, Rotation %4°</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::LpsCalibrationWizard</name>
+    <message>
+        <source>Calibrate LPS</source>
+        <translation>LPS kalibrieren</translation>
+    </message>
+    <message>
+        <source>Initial beacon positions</source>
+        <translation>Anfängliche Bakenpositionen</translation>
+    </message>
+    <message>
+        <source>Rough positions (a few metres are fine) from the project or a CSV file (id, x, y, z).</source>
+        <translation>Grobe Positionen (einige Meter Abweichung genügen) aus dem Projekt oder einer CSV-Datei (id, x, y, z).</translation>
+    </message>
+    <message>
+        <source>Import CSV…</source>
+        <translation>CSV importieren…</translation>
+    </message>
+    <message>
+        <source>Beacon table:</source>
+        <translation>Bakentabelle:</translation>
+    </message>
+    <message>
+        <source>Venue drawing:</source>
+        <translation>Anlagenzeichnung:</translation>
+    </message>
+    <message>
+        <source>Import beacon table</source>
+        <translation>Bakentabelle importieren</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv *.txt)</source>
+        <translation>CSV-Dateien (*.csv *.txt)</translation>
+    </message>
+    <message>
+        <source>initial</source>
+        <translation>anfänglich</translation>
+    </message>
+    <message>
+        <source>Calibration walk</source>
+        <translation>Kalibrierlauf</translation>
+    </message>
+    <message>
+        <source>The TDoA recording of the walk and the calibration settings. Next runs the calibration.</source>
+        <translation>Die TDoA-Aufzeichnung des Kalibrierlaufs und die Kalibriereinstellungen. „Weiter“ startet die Kalibrierung.</translation>
+    </message>
+    <message>
+        <source>Show the walk positions (runs lps-positioning with the calibrated beacons)</source>
+        <translation>Positionen des Laufs anzeigen (führt lps-positioning mit den kalibrierten Baken aus)</translation>
+    </message>
+    <message>
+        <source>TDoA stream:</source>
+        <translation>TDoA-Datenstrom:</translation>
+    </message>
+    <message>
+        <source>Output (rec/table):</source>
+        <translation>Ausgabe (Aufnahme/Tabelle):</translation>
+    </message>
+    <message>
+        <source>The lps-calibration processor was not found; check the plugin folder.</source>
+        <translation>Der Prozessor lps-calibration wurde nicht gefunden; bitte den Plugin-Ordner prüfen.</translation>
+    </message>
+    <message>
+        <source>Calibration result</source>
+        <translation>Kalibrierergebnis</translation>
+    </message>
+    <message>
+        <source>Next keeps the result; Retry discards it so you can change the settings.</source>
+        <translation>„Weiter“ behält das Ergebnis; „Erneut versuchen“ verwirft es, damit Sie die Einstellungen ändern können.</translation>
+    </message>
+    <message>
+        <source>RMS residual [m]</source>
+        <translation>RMS-Residuum [m]</translation>
+    </message>
+    <message>
+        <source>Retry with other settings</source>
+        <translation>Erneut versuchen mit anderen Einstellungen</translation>
+    </message>
+    <message>
+        <source>Align and save</source>
+        <translation>Ausrichten und speichern</translation>
+    </message>
+    <message>
+        <source>Optionally move the beacons so that surveyed venue marks land on their known coordinates.</source>
+        <translation>Optional die Baken so verschieben, dass vermessene Markierungen der Anlage auf ihren bekannten Koordinaten liegen.</translation>
+    </message>
+    <message>
+        <source>Align to venue marks (lps-align)</source>
+        <translation>An Markierungen der Anlage ausrichten (lps-align)</translation>
+    </message>
+    <message>
+        <source>Marks:</source>
+        <translation>Markierungen:</translation>
+    </message>
+    <message>
+        <source>Mode:</source>
+        <translation>Modus:</translation>
+    </message>
+    <message>
+        <source>Save as (rec/table):</source>
+        <translation>Speichern als (Aufnahme/Tabelle):</translation>
+    </message>
+    <message>
+        <source>Choose the TDoA stream of the calibration walk.</source>
+        <translation>Wählen Sie den TDoA-Datenstrom des Kalibrierlaufs.</translation>
+    </message>
+    <message>
+        <source>The output must be named rec/table.</source>
+        <translation>Die Ausgabe muss Aufnahme/Tabelle heißen.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; already exists; choose another name.</source>
+        <translation>„%1“ existiert bereits; wählen Sie einen anderen Namen.</translation>
+    </message>
+    <message>
+        <source>calibrated</source>
+        <translation>kalibriert</translation>
+    </message>
+    <message>
+        <source>nRMSR before: %1 m, after: %2 m; %3 fixes used, %4 removed; converged: %5</source>
+        <translation>nRMSR vorher: %1 m, nachher: %2 m; %3 Positionen verwendet, %4 entfernt; konvergiert: %5</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>nein</translation>
+    </message>
+    <message>
+        <source>There is no calibration result to save.</source>
+        <translation>Es gibt kein Kalibrierergebnis zum Speichern.</translation>
+    </message>
+    <message>
+        <source>The name must be rec/table.</source>
+        <translation>Der Name muss Aufnahme/Tabelle lauten.</translation>
+    </message>
+    <message>
+        <source>The aligned table needs a name of its own.</source>
+        <translation>Die ausgerichtete Tabelle braucht einen eigenen Namen.</translation>
     </message>
 </context>
 <context>
@@ -653,6 +1273,89 @@
     </message>
 </context>
 <context>
+    <name>athlos::ui::OrientationAnglesView</name>
+    <message>
+        <source>t [s]</source>
+        <translation>t [s]</translation>
+    </message>
+    <message>
+        <source>angle [°]</source>
+        <translation>Winkel [°]</translation>
+    </message>
+    <message>
+        <source>error [°]</source>
+        <translation>Fehler [°]</translation>
+    </message>
+    <message>
+        <source>Stream:</source>
+        <translation>Datenstrom:</translation>
+    </message>
+    <message>
+        <source>Sequence:</source>
+        <translation>Reihenfolge:</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not an orientation stream (qw, qx, qy, qz)</source>
+        <translation>„%1“ ist kein Orientierungsdatenstrom (qw, qx, qy, qz)</translation>
+    </message>
+    <message>
+        <source>yaw (Z)</source>
+        <translation>Gieren (Z)</translation>
+    </message>
+    <message>
+        <source>pitch (Y)</source>
+        <translation>Nicken (Y)</translation>
+    </message>
+    <message>
+        <source>roll (X)</source>
+        <translation>Rollen (X)</translation>
+    </message>
+    <message>
+        <source>angle 1 (%1)</source>
+        <translation>Winkel 1 (%1)</translation>
+    </message>
+    <message>
+        <source>angle 2 (%1)</source>
+        <translation>Winkel 2 (%1)</translation>
+    </message>
+    <message>
+        <source>angle 3 (%1)</source>
+        <translation>Winkel 3 (%1)</translation>
+    </message>
+    <message>
+        <source>total (RMS %1°)</source>
+        <translation>gesamt (RMS %1°)</translation>
+    </message>
+    <message>
+        <source>heading (RMS %1°)</source>
+        <translation>Kurs (RMS %1°)</translation>
+    </message>
+    <message>
+        <source>inclination (RMS %1°)</source>
+        <translation>Neigung (RMS %1°)</translation>
+    </message>
+    <message>
+        <source>Error against %1 (%2 samples).</source>
+        <translation>Fehler gegenüber %1 (%2 Abtastwerte).</translation>
+    </message>
+    <message>
+        <source>No reference orientation (kind reference with qw..qz) in this recording.</source>
+        <translation>Keine Referenzorientierung (Art reference mit qw..qz) in dieser Aufnahme.</translation>
+    </message>
+    <message>
+        <source>Orientation angles</source>
+        <translation>Orientierungswinkel</translation>
+    </message>
+    <message>
+        <source>no orientation stream (kind orientation with qw, qx, qy, qz) in this project; run orientation first</source>
+        <translation>kein Orientierungsdatenstrom (Art orientation mit qw, qx, qy, qz) in diesem Projekt; zuerst orientation ausführen</translation>
+    </message>
+    <message>
+        <source>Orientation</source>
+        <translation>Orientierung</translation>
+    </message>
+</context>
+<context>
     <name>athlos::ui::ParameterForm</name>
     <message>
         <source>This processor has no parameters.</source>
@@ -661,6 +1364,55 @@
     <message>
         <source>Set %1 (otherwise the processor decides)</source>
         <translation>%1 setzen (sonst entscheidet der Prozessor)</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::PlaybackCanvas</name>
+    <message>
+        <source>speed [m/s]</source>
+        <translation>Geschwindigkeit [m/s]</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::PlaybackView</name>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Einpassen</translation>
+    </message>
+    <message>
+        <source>Frame the venue again (or double-click the view).</source>
+        <translation>Die Sportstätte wieder einpassen (oder Doppelklick in die Ansicht).</translation>
+    </message>
+    <message>
+        <source>Recording:</source>
+        <translation>Aufnahme:</translation>
+    </message>
+    <message>
+        <source>Venue:</source>
+        <translation>Sportstätte:</translation>
+    </message>
+    <message>
+        <source>Trail:</source>
+        <translation>Spur:</translation>
+    </message>
+    <message>
+        <source>no recording &apos;%1&apos; in this project</source>
+        <translation>keine Aufnahme &apos;%1&apos; in diesem Projekt</translation>
+    </message>
+    <message>
+        <source>recording &apos;%1&apos; has no position stream (lps-position, trajectory or gnss with x, y)</source>
+        <translation>Aufnahme &apos;%1&apos; hat keinen Positionsstrom (lps-position, trajectory oder gnss mit x, y)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n athlete(s)</source>
+        <translation>
+            <numerusform>%n Athlet</numerusform>
+            <numerusform>%n Athleten</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -692,6 +1444,129 @@
     <message>
         <source>Export View</source>
         <translation>Ansicht exportieren</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::PositionFilterWizard</name>
+    <message>
+        <source>Filter positions</source>
+        <translation>Positionen filtern</translation>
+    </message>
+    <message>
+        <source>Position stream</source>
+        <translation>Positionsdatenstrom</translation>
+    </message>
+    <message>
+        <source>The LPS fixes (kind lps-position, columns x and y) to filter.</source>
+        <translation>Die zu filternden LPS-Positionen (Art lps-position, Spalten x und y).</translation>
+    </message>
+    <message>
+        <source>Stream:</source>
+        <translation>Datenstrom:</translation>
+    </message>
+    <message>
+        <source>This project has no lps-position stream; import one first.</source>
+        <translation>Dieses Projekt hat keinen lps-position-Datenstrom; importieren Sie zuerst einen.</translation>
+    </message>
+    <message>
+        <source>Track and pose</source>
+        <translation>Bahn und Lage</translation>
+    </message>
+    <message>
+        <source>Place the track over the raw positions: the track models follow its lanes.</source>
+        <translation>Legen Sie die Bahn über die Rohpositionen: Die Bahnmodelle folgen ihren Bahnen.</translation>
+    </message>
+    <message>
+        <source>Fit pose</source>
+        <translation>Lage anpassen</translation>
+    </message>
+    <message>
+        <source>Centre the track on the positions and turn it along their longest extent.</source>
+        <translation>Die Bahn auf die Positionen zentrieren und entlang ihrer größten Ausdehnung drehen.</translation>
+    </message>
+    <message>
+        <source>x [m]</source>
+        <translation>x [m]</translation>
+    </message>
+    <message>
+        <source>y [m]</source>
+        <translation>y [m]</translation>
+    </message>
+    <message>
+        <source>Track:</source>
+        <translation>Bahn:</translation>
+    </message>
+    <message>
+        <source>Origin x:</source>
+        <translation>Ursprung x:</translation>
+    </message>
+    <message>
+        <source>Origin y:</source>
+        <translation>Ursprung y:</translation>
+    </message>
+    <message>
+        <source>Rotation:</source>
+        <translation>Drehung:</translation>
+    </message>
+    <message>
+        <source>Filter and noise</source>
+        <translation>Filter und Rauschen</translation>
+    </message>
+    <message>
+        <source>Kalman filter variant, motion model and noise settings.</source>
+        <translation>Kalman-Filter-Variante, Bewegungsmodell und Rauscheinstellungen.</translation>
+    </message>
+    <message>
+        <source>Filter:</source>
+        <translation>Filter:</translation>
+    </message>
+    <message>
+        <source>Motion model:</source>
+        <translation>Bewegungsmodell:</translation>
+    </message>
+    <message>
+        <source>Noise:</source>
+        <translation>Rauschen:</translation>
+    </message>
+    <message>
+        <source>The position-filter processor was not found; check the plugin folder.</source>
+        <translation>Der Prozessor position-filter wurde nicht gefunden; bitte den Plugin-Ordner prüfen.</translation>
+    </message>
+    <message>
+        <source>Smoothing and output</source>
+        <translation>Glättung und Ausgabe</translation>
+    </message>
+    <message>
+        <source>Next runs the filter.</source>
+        <translation>„Weiter“ startet den Filter.</translation>
+    </message>
+    <message>
+        <source>Resample to a uniform rate</source>
+        <translation>Auf eine gleichmäßige Rate umtasten</translation>
+    </message>
+    <message>
+        <source>Smoother:</source>
+        <translation>Glätter:</translation>
+    </message>
+    <message>
+        <source>Lag:</source>
+        <translation>Verzögerung:</translation>
+    </message>
+    <message>
+        <source>Output (rec/stream):</source>
+        <translation>Ausgabe (Aufnahme/Datenstrom):</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>Ergebnis</translation>
+    </message>
+    <message>
+        <source>The output must be named rec/stream.</source>
+        <translation>Die Ausgabe muss Aufnahme/Datenstrom heißen.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; already exists; choose another name.</source>
+        <translation>„%1“ existiert bereits; wählen Sie einen anderen Namen.</translation>
     </message>
 </context>
 <context>
@@ -856,6 +1731,57 @@
     </message>
 </context>
 <context>
+    <name>athlos::ui::TrackTrajectoryView</name>
+    <message>
+        <source>x [m]</source>
+        <translation>x [m]</translation>
+    </message>
+    <message>
+        <source>y [m]</source>
+        <translation>y [m]</translation>
+    </message>
+    <message>
+        <source>Raw positions</source>
+        <translation>Rohpositionen</translation>
+    </message>
+    <message>
+        <source>Filtered trajectory</source>
+        <translation>Gefilterte Trajektorie</translation>
+    </message>
+    <message>
+        <source>Outliers</source>
+        <translation>Ausreißer</translation>
+    </message>
+    <message>
+        <source>speed [m/s]</source>
+        <translation>Geschwindigkeit [m/s]</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a stream of this project</source>
+        <translation>„%1“ ist kein Datenstrom dieses Projekts</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; has no x/y samples</source>
+        <translation>„%1“ hat keine x/y-Abtastwerte</translation>
+    </message>
+    <message>
+        <source>%1: %2 filtered samples, %3 raw fixes, %4 rejected as outliers</source>
+        <translation>%1: %2 gefilterte Abtastwerte, %3 Rohpositionen, %4 als Ausreißer verworfen</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <source>no position-filter result (kind trajectory) in this project; run position-filter first</source>
+        <translation>kein Ergebnis von position-filter (Art trajectory) in diesem Projekt; zuerst position-filter ausführen</translation>
+    </message>
+    <message>
+        <source>Track</source>
+        <translation>Bahn</translation>
+    </message>
+</context>
+<context>
     <name>athlos::ui::TrajectoryPanel</name>
     <message>
         <source>x [m]</source>
@@ -930,426 +1856,22 @@
     </message>
 </context>
 <context>
-    <name>athlos::ui::LpsCalibrationWizard</name>
+    <name>athlos::ui::VenueDrawing</name>
     <message>
-        <source>Calibrate LPS</source>
-        <translation>LPS kalibrieren</translation>
+        <source>Football pitch 105 × 68 m</source>
+        <translation>Fußballfeld 105 × 68 m</translation>
     </message>
     <message>
-        <source>Initial beacon positions</source>
-        <translation>Anfängliche Bakenpositionen</translation>
+        <source>Rugby pitch 100 × 70 m</source>
+        <translation>Rugbyfeld 100 × 70 m</translation>
     </message>
     <message>
-        <source>Rough positions (a few metres are fine) from the project or a CSV file (id, x, y, z).</source>
-        <translation>Grobe Positionen (einige Meter Abweichung genügen) aus dem Projekt oder einer CSV-Datei (id, x, y, z).</translation>
+        <source>400 m track</source>
+        <translation>400-m-Bahn</translation>
     </message>
     <message>
-        <source>Import CSV…</source>
-        <translation>CSV importieren…</translation>
-    </message>
-    <message>
-        <source>Beacon table:</source>
-        <translation>Bakentabelle:</translation>
-    </message>
-    <message>
-        <source>Venue drawing:</source>
-        <translation>Anlagenzeichnung:</translation>
-    </message>
-    <message>
-        <source>Import beacon table</source>
-        <translation>Bakentabelle importieren</translation>
-    </message>
-    <message>
-        <source>CSV files (*.csv *.txt)</source>
-        <translation>CSV-Dateien (*.csv *.txt)</translation>
-    </message>
-    <message>
-        <source>initial</source>
-        <translation>anfänglich</translation>
-    </message>
-    <message>
-        <source>Calibration walk</source>
-        <translation>Kalibrierlauf</translation>
-    </message>
-    <message>
-        <source>The TDoA recording of the walk and the calibration settings. Next runs the calibration.</source>
-        <translation>Die TDoA-Aufzeichnung des Kalibrierlaufs und die Kalibriereinstellungen. „Weiter“ startet die Kalibrierung.</translation>
-    </message>
-    <message>
-        <source>Show the walk positions (runs lps-positioning with the calibrated beacons)</source>
-        <translation>Positionen des Laufs anzeigen (führt lps-positioning mit den kalibrierten Baken aus)</translation>
-    </message>
-    <message>
-        <source>TDoA stream:</source>
-        <translation>TDoA-Datenstrom:</translation>
-    </message>
-    <message>
-        <source>Output (rec/table):</source>
-        <translation>Ausgabe (Aufnahme/Tabelle):</translation>
-    </message>
-    <message>
-        <source>The lps-calibration processor was not found; check the plugin folder.</source>
-        <translation>Der Prozessor lps-calibration wurde nicht gefunden; bitte den Plugin-Ordner prüfen.</translation>
-    </message>
-    <message>
-        <source>Calibration result</source>
-        <translation>Kalibrierergebnis</translation>
-    </message>
-    <message>
-        <source>Next keeps the result; Retry discards it so you can change the settings.</source>
-        <translation>„Weiter“ behält das Ergebnis; „Erneut versuchen“ verwirft es, damit Sie die Einstellungen ändern können.</translation>
-    </message>
-    <message>
-        <source>RMS residual [m]</source>
-        <translation>RMS-Residuum [m]</translation>
-    </message>
-    <message>
-        <source>Retry with other settings</source>
-        <translation>Erneut versuchen mit anderen Einstellungen</translation>
-    </message>
-    <message>
-        <source>Align and save</source>
-        <translation>Ausrichten und speichern</translation>
-    </message>
-    <message>
-        <source>Optionally move the beacons so that surveyed venue marks land on their known coordinates.</source>
-        <translation>Optional die Baken so verschieben, dass vermessene Markierungen der Anlage auf ihren bekannten Koordinaten liegen.</translation>
-    </message>
-    <message>
-        <source>Align to venue marks (lps-align)</source>
-        <translation>An Markierungen der Anlage ausrichten (lps-align)</translation>
-    </message>
-    <message>
-        <source>Marks:</source>
-        <translation>Markierungen:</translation>
-    </message>
-    <message>
-        <source>Mode:</source>
-        <translation>Modus:</translation>
-    </message>
-    <message>
-        <source>Save as (rec/table):</source>
-        <translation>Speichern als (Aufnahme/Tabelle):</translation>
-    </message>
-    <message>
-        <source>Choose the TDoA stream of the calibration walk.</source>
-        <translation>Wählen Sie den TDoA-Datenstrom des Kalibrierlaufs.</translation>
-    </message>
-    <message>
-        <source>The output must be named rec/table.</source>
-        <translation>Die Ausgabe muss Aufnahme/Tabelle heißen.</translation>
-    </message>
-    <message>
-        <source>'%1' already exists; choose another name.</source>
-        <translation>„%1“ existiert bereits; wählen Sie einen anderen Namen.</translation>
-    </message>
-    <message>
-        <source>calibrated</source>
-        <translation>kalibriert</translation>
-    </message>
-    <message>
-        <source>nRMSR before: %1 m, after: %2 m; %3 fixes used, %4 removed; converged: %5</source>
-        <translation>nRMSR vorher: %1 m, nachher: %2 m; %3 Positionen verwendet, %4 entfernt; konvergiert: %5</translation>
-    </message>
-    <message>
-        <source>yes</source>
-        <translation>ja</translation>
-    </message>
-    <message>
-        <source>no</source>
-        <translation>nein</translation>
-    </message>
-    <message>
-        <source>There is no calibration result to save.</source>
-        <translation>Es gibt kein Kalibrierergebnis zum Speichern.</translation>
-    </message>
-    <message>
-        <source>The name must be rec/table.</source>
-        <translation>Der Name muss Aufnahme/Tabelle lauten.</translation>
-    </message>
-    <message>
-        <source>The aligned table needs a name of its own.</source>
-        <translation>Die ausgerichtete Tabelle braucht einen eigenen Namen.</translation>
-    </message>
-</context>
-<context>
-    <name>Tools</name>
-    <message>
-        <source>Calibrate LPS…</source>
-        <translation>LPS kalibrieren…</translation>
-    </message>
-    <message>
-        <source>Positioning</source>
-        <translation>Positionierung</translation>
-    </message>
-    <message>
-        <source>Orientation angles…</source>
-        <translation>Orientierungswinkel…</translation>
-    </message>
-    <message>
-        <source>Inertial</source>
-        <translation>Inertial</translation>
-    </message>
-    <message>
-        <source>Filter positions…</source>
-        <translation>Positionen filtern…</translation>
-    </message>
-</context>
-<context>
-    <name>athlos::ui::OrientationAnglesView</name>
-    <message>
-        <source>t [s]</source>
-        <translation>t [s]</translation>
-    </message>
-    <message>
-        <source>angle [°]</source>
-        <translation>Winkel [°]</translation>
-    </message>
-    <message>
-        <source>error [°]</source>
-        <translation>Fehler [°]</translation>
-    </message>
-    <message>
-        <source>Stream:</source>
-        <translation>Datenstrom:</translation>
-    </message>
-    <message>
-        <source>Sequence:</source>
-        <translation>Reihenfolge:</translation>
-    </message>
-    <message>
-        <source>'%1' is not an orientation stream (qw, qx, qy, qz)</source>
-        <translation>„%1“ ist kein Orientierungsdatenstrom (qw, qx, qy, qz)</translation>
-    </message>
-    <message>
-        <source>yaw (Z)</source>
-        <translation>Gieren (Z)</translation>
-    </message>
-    <message>
-        <source>pitch (Y)</source>
-        <translation>Nicken (Y)</translation>
-    </message>
-    <message>
-        <source>roll (X)</source>
-        <translation>Rollen (X)</translation>
-    </message>
-    <message>
-        <source>angle 1 (%1)</source>
-        <translation>Winkel 1 (%1)</translation>
-    </message>
-    <message>
-        <source>angle 2 (%1)</source>
-        <translation>Winkel 2 (%1)</translation>
-    </message>
-    <message>
-        <source>angle 3 (%1)</source>
-        <translation>Winkel 3 (%1)</translation>
-    </message>
-    <message>
-        <source>total (RMS %1°)</source>
-        <translation>gesamt (RMS %1°)</translation>
-    </message>
-    <message>
-        <source>heading (RMS %1°)</source>
-        <translation>Kurs (RMS %1°)</translation>
-    </message>
-    <message>
-        <source>inclination (RMS %1°)</source>
-        <translation>Neigung (RMS %1°)</translation>
-    </message>
-    <message>
-        <source>Error against %1 (%2 samples).</source>
-        <translation>Fehler gegenüber %1 (%2 Abtastwerte).</translation>
-    </message>
-    <message>
-        <source>No reference orientation (kind reference with qw..qz) in this recording.</source>
-        <translation>Keine Referenzorientierung (Art reference mit qw..qz) in dieser Aufnahme.</translation>
-    </message>
-    <message>
-        <source>Orientation angles</source>
-        <translation>Orientierungswinkel</translation>
-    </message>
-    <message>
-        <source>no orientation stream (kind orientation with qw, qx, qy, qz) in this project; run orientation first</source>
-        <translation>kein Orientierungsdatenstrom (Art orientation mit qw, qx, qy, qz) in diesem Projekt; zuerst orientation ausführen</translation>
-    </message>
-    <message>
-        <source>Orientation</source>
-        <translation>Orientierung</translation>
-    </message>
-</context>
-<context>
-    <name>athlos::ui::PositionFilterWizard</name>
-    <message>
-        <source>Filter positions</source>
-        <translation>Positionen filtern</translation>
-    </message>
-    <message>
-        <source>Position stream</source>
-        <translation>Positionsdatenstrom</translation>
-    </message>
-    <message>
-        <source>The LPS fixes (kind lps-position, columns x and y) to filter.</source>
-        <translation>Die zu filternden LPS-Positionen (Art lps-position, Spalten x und y).</translation>
-    </message>
-    <message>
-        <source>Stream:</source>
-        <translation>Datenstrom:</translation>
-    </message>
-    <message>
-        <source>This project has no lps-position stream; import one first.</source>
-        <translation>Dieses Projekt hat keinen lps-position-Datenstrom; importieren Sie zuerst einen.</translation>
-    </message>
-    <message>
-        <source>Track and pose</source>
-        <translation>Bahn und Lage</translation>
-    </message>
-    <message>
-        <source>Place the track over the raw positions: the track models follow its lanes.</source>
-        <translation>Legen Sie die Bahn über die Rohpositionen: Die Bahnmodelle folgen ihren Bahnen.</translation>
-    </message>
-    <message>
-        <source>Fit pose</source>
-        <translation>Lage anpassen</translation>
-    </message>
-    <message>
-        <source>Centre the track on the positions and turn it along their longest extent.</source>
-        <translation>Die Bahn auf die Positionen zentrieren und entlang ihrer größten Ausdehnung drehen.</translation>
-    </message>
-    <message>
-        <source>x [m]</source>
-        <translation>x [m]</translation>
-    </message>
-    <message>
-        <source>y [m]</source>
-        <translation>y [m]</translation>
-    </message>
-    <message>
-        <source>Track:</source>
-        <translation>Bahn:</translation>
-    </message>
-    <message>
-        <source>Origin x:</source>
-        <translation>Ursprung x:</translation>
-    </message>
-    <message>
-        <source>Origin y:</source>
-        <translation>Ursprung y:</translation>
-    </message>
-    <message>
-        <source>Rotation:</source>
-        <translation>Drehung:</translation>
-    </message>
-    <message>
-        <source>Filter and noise</source>
-        <translation>Filter und Rauschen</translation>
-    </message>
-    <message>
-        <source>Kalman filter variant, motion model and noise settings.</source>
-        <translation>Kalman-Filter-Variante, Bewegungsmodell und Rauscheinstellungen.</translation>
-    </message>
-    <message>
-        <source>Filter:</source>
-        <translation>Filter:</translation>
-    </message>
-    <message>
-        <source>Motion model:</source>
-        <translation>Bewegungsmodell:</translation>
-    </message>
-    <message>
-        <source>Noise:</source>
-        <translation>Rauschen:</translation>
-    </message>
-    <message>
-        <source>The position-filter processor was not found; check the plugin folder.</source>
-        <translation>Der Prozessor position-filter wurde nicht gefunden; bitte den Plugin-Ordner prüfen.</translation>
-    </message>
-    <message>
-        <source>Smoothing and output</source>
-        <translation>Glättung und Ausgabe</translation>
-    </message>
-    <message>
-        <source>Next runs the filter.</source>
-        <translation>„Weiter“ startet den Filter.</translation>
-    </message>
-    <message>
-        <source>Resample to a uniform rate</source>
-        <translation>Auf eine gleichmäßige Rate umtasten</translation>
-    </message>
-    <message>
-        <source>Smoother:</source>
-        <translation>Glätter:</translation>
-    </message>
-    <message>
-        <source>Lag:</source>
-        <translation>Verzögerung:</translation>
-    </message>
-    <message>
-        <source>Output (rec/stream):</source>
-        <translation>Ausgabe (Aufnahme/Datenstrom):</translation>
-    </message>
-    <message>
-        <source>Result</source>
-        <translation>Ergebnis</translation>
-    </message>
-    <message>
-        <source>The output must be named rec/stream.</source>
-        <translation>Die Ausgabe muss Aufnahme/Datenstrom heißen.</translation>
-    </message>
-    <message>
-        <source>'%1' already exists; choose another name.</source>
-        <translation>„%1“ existiert bereits; wählen Sie einen anderen Namen.</translation>
-    </message>
-</context>
-<context>
-    <name>athlos::ui::TrackTrajectoryView</name>
-    <message>
-        <source>x [m]</source>
-        <translation>x [m]</translation>
-    </message>
-    <message>
-        <source>y [m]</source>
-        <translation>y [m]</translation>
-    </message>
-    <message>
-        <source>Raw positions</source>
-        <translation>Rohpositionen</translation>
-    </message>
-    <message>
-        <source>Filtered trajectory</source>
-        <translation>Gefilterte Trajektorie</translation>
-    </message>
-    <message>
-        <source>Outliers</source>
-        <translation>Ausreißer</translation>
-    </message>
-    <message>
-        <source>speed [m/s]</source>
-        <translation>Geschwindigkeit [m/s]</translation>
-    </message>
-    <message>
-        <source>'%1' is not a stream of this project</source>
-        <translation>„%1“ ist kein Datenstrom dieses Projekts</translation>
-    </message>
-    <message>
-        <source>'%1' has no x/y samples</source>
-        <translation>„%1“ hat keine x/y-Abtastwerte</translation>
-    </message>
-    <message>
-        <source>%1: %2 filtered samples, %3 raw fixes, %4 rejected as outliers</source>
-        <translation>%1: %2 gefilterte Abtastwerte, %3 Rohpositionen, %4 als Ausreißer verworfen</translation>
-    </message>
-    <message>
-        <source>unknown</source>
-        <translation>unbekannt</translation>
-    </message>
-    <message>
-        <source>no position-filter result (kind trajectory) in this project; run position-filter first</source>
-        <translation>kein Ergebnis von position-filter (Art trajectory) in diesem Projekt; zuerst position-filter ausführen</translation>
-    </message>
-    <message>
-        <source>Track</source>
-        <translation>Bahn</translation>
+        <source>None</source>
+        <translation>Keine</translation>
     </message>
 </context>
 <context>
@@ -1365,6 +1887,117 @@
     <message>
         <source>Walk</source>
         <translation>Lauf</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::VideoDock</name>
+    <message>
+        <source>Video</source>
+        <translation>Video</translation>
+    </message>
+    <message>
+        <source>◀ Frame</source>
+        <translation>◀ Bild</translation>
+    </message>
+    <message>
+        <source>One video frame back</source>
+        <translation>Ein Videobild zurück</translation>
+    </message>
+    <message>
+        <source>Frame ▶</source>
+        <translation>Bild ▶</translation>
+    </message>
+    <message>
+        <source>One video frame forward</source>
+        <translation>Ein Videobild vor</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Offset of the video: t_recording = t_video + offset</source>
+        <translation>Versatz des Videos: t_Aufnahme = t_Video + Versatz</translation>
+    </message>
+    <message>
+        <source>Mark event in video</source>
+        <translation>Ereignis im Video markieren</translation>
+    </message>
+    <message>
+        <source>The event (clap, take-off…) is in the frame shown now</source>
+        <translation>Das Ereignis (Klatschen, Absprung …) ist im jetzt gezeigten Bild</translation>
+    </message>
+    <message>
+        <source>Mark event in signal</source>
+        <translation>Ereignis im Signal markieren</translation>
+    </message>
+    <message>
+        <source>The same event is at the cursor in the signal (e.g. the acceleration spike)</source>
+        <translation>Dasselbe Ereignis liegt im Signal am Cursor (z. B. die Beschleunigungsspitze)</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Rückgängig</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Wiederholen</translation>
+    </message>
+    <message>
+        <source>Recording:</source>
+        <translation>Aufnahme:</translation>
+    </message>
+    <message>
+        <source>Offset:</source>
+        <translation>Versatz:</translation>
+    </message>
+    <message>
+        <source>No project</source>
+        <translation>Kein Projekt</translation>
+    </message>
+    <message>
+        <source>No recording of this project has a video. Use View → Video… to attach one.</source>
+        <translation>Keine Aufnahme dieses Projekts hat ein Video. Mit Ansicht → Video… lässt sich eines anhängen.</translation>
+    </message>
+    <message>
+        <source>Recording &apos;%1&apos; has no video. Use View → Video… to attach one.</source>
+        <translation>Aufnahme &apos;%1&apos; hat kein Video. Mit Ansicht → Video… lässt sich eines anhängen.</translation>
+    </message>
+    <message>
+        <source>%1 (%2, %3 fps, %4 frames)</source>
+        <translation>%1 (%2, %3 fps, %4 Bilder)</translation>
+    </message>
+    <message>
+        <source>Video offset %1 s</source>
+        <translation>Video-Versatz %1 s</translation>
+    </message>
+    <message>
+        <source>Put the cursor where the video shows the event first.</source>
+        <translation>Zuerst den Cursor dorthin setzen, wo das Video das Ereignis zeigt.</translation>
+    </message>
+    <message>
+        <source>Synchronised: video %1 s = recording %2 s, offset %3 s.</source>
+        <translation>Synchronisiert: Video %1 s = Aufnahme %2 s, Versatz %3 s.</translation>
+    </message>
+    <message>
+        <source>Event marked in the video at %1 s (frame %2). Now put the cursor on the same event in a signal and press &quot;Mark event in signal&quot;.</source>
+        <translation>Ereignis im Video bei %1 s (Bild %2) markiert. Jetzt den Cursor im Signal auf dasselbe Ereignis setzen und „Ereignis im Signal markieren“ drücken.</translation>
+    </message>
+    <message>
+        <source>Event marked in the signal at %1 s. Now put the cursor where the video shows the same event and press &quot;Mark event in video&quot;.</source>
+        <translation>Ereignis im Signal bei %1 s markiert. Jetzt den Cursor dorthin setzen, wo das Video dasselbe Ereignis zeigt, und „Ereignis im Video markieren“ drücken.</translation>
+    </message>
+    <message>
+        <source>No video at %1 s: the video covers %2 … %3 s of the recording (offset %4 s).</source>
+        <translation>Kein Video bei %1 s: Das Video deckt %2 … %3 s der Aufnahme ab (Versatz %4 s).</translation>
+    </message>
+    <message>
+        <source>outside the video</source>
+        <translation>außerhalb des Videos</translation>
+    </message>
+    <message>
+        <source>frame %1 / %2 · video %3 s</source>
+        <translation>Bild %1 / %2 · Video %3 s</translation>
     </message>
 </context>
 <context>
