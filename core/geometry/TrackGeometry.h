@@ -180,7 +180,9 @@ inline TrackQuery TrackGeometry::fieldOval(const Eigen::Vector2d& p, const Headi
     if (std::abs(q.x()) > halfL) {
         const Eigen::Vector2d rel(q.x() - (q.x() > 0 ? halfL : -halfL), q.y());
         const double rho2 = std::max(rel.squaredNorm(), 1e-12), rho = std::sqrt(rho2);
-        const double invRho = 1.0 / rho, invRho2 = invRho * invRho;
+        // 1/ρ² and √ρ² run in parallel; 1/ρ = ρ · 1/ρ² then costs one multiply instead of a
+        // division waiting for the square root (the filter loop is latency-bound here).
+        const double invRho2 = 1.0 / rho2, invRho = rho * invRho2;
         const Eigen::Vector2d tangent = rot_ * Eigen::Vector2d(-rel.y(), rel.x());  // running direction × ρ
         bool done = false;
         if (hint) {
