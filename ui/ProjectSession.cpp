@@ -89,23 +89,29 @@ bool ProjectSession::saveProject()
 {
     std::shared_ptr<Project> project = window_.project_;
     if (!project) return false;
+    if (!runSave([project](const Progress& progress) { return project->save(progress); },
+                 tr("Saving cancelled; the file on disk is unchanged.")))
+        return false;
+    window_.updateTitle();
+    window_.statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(project->path())), 5000);
+    return true;
+}
+
+bool ProjectSession::runSave(const std::function<Status(const Progress&)>& save, const QString& cancelledMessage)
+{
     window_.panels_->storeLayout();
     // The panels' workers may be reading lazy samples; saving rebinds the streams to the new file.
     window_.panels_->waitForLoads();
     window_.setBusy(true);
-    const BackgroundTask::Outcome outcome = BackgroundTask::run(
-        &window_, tr("Saving…"), [project](const Progress& progress) { return project->save(progress); },
-        window_.interactive_);
+    const BackgroundTask::Outcome outcome = BackgroundTask::run(&window_, tr("Saving…"), save, window_.interactive_);
     window_.setBusy(false);
     if (!outcome.status) {
-        if (outcome.cancelled) window_.statusBar()->showMessage(tr("Saving cancelled; the file on disk is unchanged."), 5000);
+        if (outcome.cancelled) window_.statusBar()->showMessage(cancelledMessage, 5000);
         else window_.showError(tr("Could not save the project"), outcome.status.message());
         return false;
     }
-    project->setModified(false);
+    window_.project_->setModified(false);
     afterSave();
-    window_.updateTitle();
-    window_.statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(project->path())), 5000);
     return true;
 }
 
@@ -113,20 +119,9 @@ bool ProjectSession::saveProjectAs(const QString& path)
 {
     std::shared_ptr<Project> project = window_.project_;
     if (!project) return false;
-    window_.panels_->storeLayout();
-    window_.panels_->waitForLoads();
-    window_.setBusy(true);
-    const BackgroundTask::Outcome outcome = BackgroundTask::run(
-        &window_, tr("Saving…"), [project, path](const Progress& progress) { return project->saveAs(path, progress); },
-        window_.interactive_);
-    window_.setBusy(false);
-    if (!outcome.status) {
-        if (outcome.cancelled) window_.statusBar()->showMessage(tr("Saving cancelled; nothing was written."), 5000);
-        else window_.showError(tr("Could not save the project"), outcome.status.message());
+    if (!runSave([project, path](const Progress& progress) { return project->saveAs(path, progress); },
+                 tr("Saving cancelled; nothing was written.")))
         return false;
-    }
-    project->setModified(false);
-    afterSave();
     RecentProjects::add(project->path());
     window_.updateTitle();
     window_.browser_->showProjectDetails();

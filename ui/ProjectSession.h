@@ -3,9 +3,13 @@
 // the crash journal's recovery on open, and the question about unsaved changes. Each operation
 // reports its own errors (dialog when interactive, errorReported always) and returns whether it
 // succeeded. Long work runs on a worker thread (BackgroundTask) while the window takes no input.
+#include "core/util/Expected.h"
+#include "core/util/Progress.h"
+
 #include <QCoreApplication>
 #include <QString>
 #include <QStringList>
+#include <functional>
 
 class QTimer;
 
@@ -45,6 +49,9 @@ public:
     void importDialog();
 
 private:
+    // Stores the layout, runs save on a worker with progress, and on success marks the project
+    // saved and discards the journal; errors and cancellation are reported here.
+    bool runSave(const std::function<Status(const Progress&)>& save, const QString& cancelledMessage);
     // Offers (interactive) or applies (tests, offscreen) the crash journal of a just opened project.
     void recoverJournal();
     void afterSave();

@@ -303,19 +303,23 @@ void VideoDock::markVideoEvent()
     }
     // The event happens in the frame on screen: its start time on the video clock.
     markedVideo_ = double(wanted_) / info_->fps;
-    if (markedSignal_) {
-        const double offset = VideoLink::offsetFromEvent(*markedVideo_, *markedSignal_);
-        syncLabel_->setText(tr("Synchronised: video %1 s = recording %2 s, offset %3 s.")
-                                .arg(formatSeconds(*markedVideo_), formatSeconds(*markedSignal_), formatSeconds(offset)));
-        markedVideo_.reset();
-        markedSignal_.reset();
-        setOffset(offset);
-        return;
-    }
+    if (completeSync()) return;
     syncLabel_->setText(tr("Event marked in the video at %1 s (frame %2). Now put the cursor on the same event in a "
                            "signal and press \"Mark event in signal\".")
                             .arg(formatSeconds(*markedVideo_))
                             .arg(wanted_));
+}
+
+bool VideoDock::completeSync()
+{
+    if (!markedVideo_ || !markedSignal_) return false;
+    const double offset = VideoLink::offsetFromEvent(*markedVideo_, *markedSignal_);
+    syncLabel_->setText(tr("Synchronised: video %1 s = recording %2 s, offset %3 s.")
+                            .arg(formatSeconds(*markedVideo_), formatSeconds(*markedSignal_), formatSeconds(offset)));
+    markedVideo_.reset();
+    markedSignal_.reset();
+    setOffset(offset);
+    return true;
 }
 
 void VideoDock::markSignalEvent()
@@ -323,15 +327,7 @@ void VideoDock::markSignalEvent()
     TimeController* time = workspace_.timeController();
     if (!info_ || !time) return;
     markedSignal_ = time->cursor();
-    if (markedVideo_) {
-        const double offset = VideoLink::offsetFromEvent(*markedVideo_, *markedSignal_);
-        syncLabel_->setText(tr("Synchronised: video %1 s = recording %2 s, offset %3 s.")
-                                .arg(formatSeconds(*markedVideo_), formatSeconds(*markedSignal_), formatSeconds(offset)));
-        markedVideo_.reset();
-        markedSignal_.reset();
-        setOffset(offset);
-        return;
-    }
+    if (completeSync()) return;
     syncLabel_->setText(tr("Event marked in the signal at %1 s. Now put the cursor where the video shows the same "
                            "event and press \"Mark event in video\".")
                             .arg(formatSeconds(*markedSignal_)));

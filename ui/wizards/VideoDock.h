@@ -68,6 +68,8 @@ public:
     QLabel* positionLabel() const { return positionLabel_; }
 
 private:
+    // Both events marked (either order): sets the offset from the pair and says so.
+    bool completeSync();
     void applyOffset(double offset);
     void reloadProject();
     void onCursor(double t);
