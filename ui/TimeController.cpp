@@ -63,7 +63,7 @@ void TimeController::setPlaying(bool playing)
         if (direction_ > 0 && cursor_ >= end_) setCursor(begin_);
         if (direction_ < 0 && cursor_ <= begin_) setCursor(end_);
         clock_.start();
-        timer_.start();
+        if (!manualClock_) timer_.start();
     } else {
         timer_.stop();
     }

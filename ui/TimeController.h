@@ -42,6 +42,9 @@ public:
     bool handleKey(QKeyEvent* event);
     // Moves playback by wall-clock seconds (the timer does this; tests call it directly).
     void advance(double wallSeconds);
+    // Manual clock: playing no longer starts the display timer, only advance() moves the cursor
+    // (tests and benchmarks that must know which instant each frame shows).
+    void setManualClock(bool manual) { manualClock_ = manual; if (manual) timer_.stop(); }
 
 public slots:
     void setCursor(double t);
@@ -72,6 +75,7 @@ private:
     double cursor_ = 0;
     double visibleBegin_ = 0, visibleEnd_ = 1;
     bool playing_ = false;
+    bool manualClock_ = false;
     int direction_ = 1;
     double speed_ = 1.0;
     double step_ = 1.0 / 30.0;
