@@ -3,6 +3,7 @@
 // For comparison, QCustomPlot fed all 10 M points directly (its own adaptive sampling).
 //
 //   QT_QPA_PLATFORM is forced to offscreen; run: bench_plot_repaint [--benchmark_filter=...]
+#include "bench/QtBenchmarkMain.h"
 #include "core/model/Stream.h"
 #include "ui/MinMaxPyramid.h"
 #include "ui/TimeSeriesPanel.h"
@@ -167,14 +168,4 @@ static void BM_NaiveQCustomPlotFullRange10M(benchmark::State& state)
 }
 BENCHMARK(BM_NaiveQCustomPlotFullRange10M)->Unit(benchmark::kMillisecond)->Iterations(5);
 
-int main(int argc, char** argv)
-{
-    // Before QApplication: the platform plugin is chosen in its constructor.
-    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
-    QApplication app(argc, argv);
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
-}
+ATHLOS_QT_BENCHMARK_MAIN()

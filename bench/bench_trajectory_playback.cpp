@@ -4,6 +4,7 @@
 // "fps" is frames per wall-clock second of rendering alone (the budget for 30 fps is 33 ms/frame).
 //
 //   QT_QPA_PLATFORM is forced to offscreen; run: bench_trajectory_playback [--benchmark_filter=...]
+#include "bench/QtBenchmarkMain.h"
 #include "core/processing/ProcessorRunner.h"
 #include "plugins/team/SimulateTeamProcessor.h"
 #include "plugins/team/TeamSimulator.h"
@@ -138,14 +139,4 @@ static void BM_PlaybackCanvasFrame(benchmark::State& state)
 }
 BENCHMARK(BM_PlaybackCanvasFrame)->Arg(1)->Arg(4)->ArgName("speed")->Unit(benchmark::kMillisecond)->UseRealTime();
 
-int main(int argc, char** argv)
-{
-    // Before QApplication: the platform plugin is chosen in its constructor.
-    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
-    QApplication app(argc, argv);
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
-}
+ATHLOS_QT_BENCHMARK_MAIN()

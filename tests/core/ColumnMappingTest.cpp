@@ -1,5 +1,6 @@
 // CSV column mapping (ImportOptions::columns, timeColumn, timeUnit): renames, unit conversion to SI,
 // skipped columns, and every bad mapping naming the option or column at fault.
+#include "TestFiles.h"
 #include "core/io/Importer.h"
 
 #include <gtest/gtest.h>
@@ -16,13 +17,7 @@ namespace {
 
 class ColumnMap : public ::testing::Test {
 protected:
-    QString write(const QString& name, const QByteArray& content) {
-        const QString path = dir_.filePath(name);
-        QFile f(path);
-        EXPECT_TRUE(f.open(QIODevice::WriteOnly));
-        f.write(content);
-        return path;
-    }
+    QString write(const QString& name, const QByteArray& content) { return test::writeFile(dir_, name, content); }
     static ImportOptions csv(const QString& kind = {}) {
         ImportOptions o;
         o.format = "csv";

@@ -1,4 +1,5 @@
 // CSV import: the interchange convention, units, delimiters, time repair and every error path.
+#include "TestFiles.h"
 #include "core/io/Importer.h"
 #include "core/util/Version.h"
 
@@ -17,13 +18,7 @@ namespace {
 
 class CsvImport : public ::testing::Test {
 protected:
-    QString write(const QString& name, const QByteArray& content) {
-        const QString path = dir_.filePath(name);
-        QFile f(path);
-        EXPECT_TRUE(f.open(QIODevice::WriteOnly));
-        f.write(content);
-        return path;
-    }
+    QString write(const QString& name, const QByteArray& content) { return test::writeFile(dir_, name, content); }
     static Expected<ImportResult> import(const QString& file, const QString& kind, const QString& repair = "reject",
                                          const QString& target = "rec", const Progress& progress = {}) {
         ImportOptions options;

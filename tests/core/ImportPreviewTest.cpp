@@ -1,5 +1,6 @@
 // Import preview: detected format, kind, channels and units for each known format; the mapping it
 // suggests imports a foreign export correctly; the dry run reports errors with file:line:column.
+#include "TestFiles.h"
 #include "core/io/ImportPreview.h"
 
 #include <gtest/gtest.h>
@@ -25,13 +26,7 @@ QByteArray sentence(const QByteArray& body) {
 
 class Preview : public ::testing::Test {
 protected:
-    QString write(const QString& name, const QByteArray& content) {
-        const QString path = dir_.filePath(name);
-        QFile f(path);
-        EXPECT_TRUE(f.open(QIODevice::WriteOnly));
-        f.write(content);
-        return path;
-    }
+    QString write(const QString& name, const QByteArray& content) { return test::writeFile(dir_, name, content); }
     static const PreviewColumn* column(const ImportPreview& p, const QString& source) {
         for (const PreviewColumn& c : p.columns)
             if (c.source == source) return &c;
