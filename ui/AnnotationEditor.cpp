@@ -142,6 +142,12 @@ Status AnnotationEditor::addClass(const QString& name)
     return {};
 }
 
+void AnnotationEditor::annotationsReplaced(const QStringList& recordings)
+{
+    undoStack_->clear();
+    for (const QString& recording : recordings) emit annotationsChanged(recording);
+}
+
 void AnnotationEditor::perform(const AnnotationEdit& edit)
 {
     if (!project_) return;

@@ -7,6 +7,7 @@
 
 #include <QObject>
 #include <QString>
+#include <QStringList>
 
 class QUndoStack;
 
@@ -50,6 +51,10 @@ public:
     // During a background save the project must not change: edits are refused meanwhile.
     void setLocked(bool locked) { locked_ = locked; }
     bool isLocked() const { return locked_; }
+
+    // A processor replaced annotations of these recordings outside the editor: the undo steps refer
+    // to the old lists and are dropped, and the views redraw.
+    void annotationsReplaced(const QStringList& recordings);
 
     // Applies edit to the project, journals it, tells the views. For AnnotationCommand.
     void perform(const AnnotationEdit& edit);

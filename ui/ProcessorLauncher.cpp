@@ -11,7 +11,6 @@
 
 #include <QMenu>
 #include <QStatusBar>
-#include <QUndoStack>
 
 #include <memory>
 #include <optional>
@@ -55,11 +54,10 @@ Expected<RunOutcome> ProcessorLauncher::run(const RunRequest& request)
     project->setModified(true);
     window_.projectModified();
     if (!run->annotated.isEmpty()) {
-        // The processor replaced annotations behind the editor's back: its undo steps refer to the
-        // old list, so they are dropped, and the layers and timelines redraw.
-        window_.annotationEditor()->undoStack()->clear();
-        for (const QString& path : run->annotated)
-            emit window_.annotationEditor()->annotationsChanged(path.section(QLatin1Char('/'), 0, 0));
+        QStringList recordings;
+        for (const QString& path : run->annotated) recordings << ItemPath::parse(path).recording;
+        recordings.removeDuplicates();
+        window_.annotationEditor()->annotationsReplaced(recordings);
     }
     if (!run->written.isEmpty()) window_.selectItem(run->written.front());
     window_.statusBar()->showMessage(tr("%1 wrote %2").arg(processor->name(), run->written.join(QStringLiteral(", "))), 8000);

@@ -10,6 +10,7 @@
 #include "ui/TimeSeriesPanel.h"
 
 #include <QTemporaryDir>
+#include <QSignalSpy>
 #include <QUndoStack>
 #include <QtTest>
 #include <qcustomplot.h>
@@ -26,6 +27,7 @@ private slots:
     void journalReplaysAfterCrash();
     void shiftDragCreatesAndDeleteRemoves();
     void reviewAcceptsAndRejects();
+    void replacedByAProcessorDropsUndo();
     void autosaveWritesTheFileAndDropsTheJournal();
     void editsRoundTripThroughJson();
 
@@ -245,6 +247,26 @@ void GuiAnnotationTest::reviewAcceptsAndRejects()
     QCOMPARE(int(list.size()), 3);
     window.annotationEditor()->undoStack()->undo();
     QCOMPARE(list[1].source, QStringLiteral("stride-detector"));
+}
+
+// A processor run that writes annotations (ProcessorLauncher) leaves undo steps that index the old
+// list: they must go, and the views must hear about the change.
+void GuiAnnotationTest::replacedByAProcessorDropsUndo()
+{
+    const QString path = saveProject(QStringLiteral("replaced.athlos"));
+    QVERIFY(!path.isEmpty());
+    MainWindow window;
+    window.setInteractive(false);
+    QVERIFY(window.openProject(path));
+    AnnotationEditor* editor = window.annotationEditor();
+    editor->setCurrentClass(QStringLiteral("walk"));
+    QVERIFY(editor->create(QStringLiteral("run1"), 5.0, 7.0));
+    QCOMPARE(editor->undoStack()->count(), 1);
+    QSignalSpy changed(editor, &AnnotationEditor::annotationsChanged);
+    editor->annotationsReplaced({QStringLiteral("run1")});
+    QCOMPARE(editor->undoStack()->count(), 0);
+    QCOMPARE(changed.count(), 1);
+    QCOMPARE(changed.front().front().toString(), QStringLiteral("run1"));
 }
 
 void GuiAnnotationTest::autosaveWritesTheFileAndDropsTheJournal()
