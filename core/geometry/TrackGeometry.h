@@ -113,12 +113,6 @@ public:
     // The lean part of query() for motion models in the filter loop: heading, curvature, their
     // gradients and d (nearest, s and segment are left at their defaults). Inline for the oval.
     inline TrackQuery field(const Eigen::Vector2d& p) const;
-    // field() for a caller that already knows a heading near the answer (a filter's predicted
-    // heading) with its unit direction vector [cos, sin]: on a bend the tangent's heading is then
-    // nearHeading + ∠(nearDirection, tangent), by a short asin series when the two are within
-    // 0.05 rad, which saves the atan2 that dominated the augmented model's cost. Same result as
-    // field() to 1e-12 rad; atan2 as before when the directions differ more.
-    inline TrackQuery field(const Eigen::Vector2d& p, double nearHeading, const Eigen::Vector2d& nearDirection) const;
     double headingAt(const Eigen::Vector2d& p) const { return query(p).heading; }
     double curvatureAt(const Eigen::Vector2d& p) const { return query(p).curvature; }
     // Point at arc length s (wrapped on closed tracks, clamped on open ones) and offset d.
@@ -138,11 +132,7 @@ public:
 
 private:
     static double wrapFar(double angle);
-    struct HeadingHint {
-        double heading;
-        Eigen::Vector2d direction;
-    };
-    inline TrackQuery fieldOval(const Eigen::Vector2d& p, const HeadingHint* hint) const;
+    inline TrackQuery fieldOval(const Eigen::Vector2d& p) const;
     TrackGeometry(Kind kind, OvalParams oval, PolylineParams poly, QString name);
     TrackQuery queryOvalLocal(const Eigen::Vector2d& q) const;
     TrackQuery queryPolylineLocal(const Eigen::Vector2d& q) const;
@@ -163,16 +153,10 @@ private:
 };
 
 inline TrackQuery TrackGeometry::field(const Eigen::Vector2d& p) const {
-    return kind_ == Kind::Oval ? fieldOval(p, nullptr) : query(p);
+    return kind_ == Kind::Oval ? fieldOval(p) : query(p);
 }
 
-inline TrackQuery TrackGeometry::field(const Eigen::Vector2d& p, double nearHeading,
-                                       const Eigen::Vector2d& nearDirection) const {
-    const HeadingHint hint{nearHeading, nearDirection};
-    return kind_ == Kind::Oval ? fieldOval(p, &hint) : query(p);
-}
-
-inline TrackQuery TrackGeometry::fieldOval(const Eigen::Vector2d& p, const HeadingHint* hint) const {
+inline TrackQuery TrackGeometry::fieldOval(const Eigen::Vector2d& p) const {
     constexpr double pi = 3.14159265358979323846;
     const Eigen::Vector2d q = rot_.transpose() * (p - Eigen::Vector2d(pose_.x, pose_.y));
     const double halfL = 0.5 * oval_.straightLength;
@@ -180,24 +164,9 @@ inline TrackQuery TrackGeometry::fieldOval(const Eigen::Vector2d& p, const Headi
     if (std::abs(q.x()) > halfL) {
         const Eigen::Vector2d rel(q.x() - (q.x() > 0 ? halfL : -halfL), q.y());
         const double rho2 = std::max(rel.squaredNorm(), 1e-12), rho = std::sqrt(rho2);
-        // 1/ρ² and √ρ² run in parallel; 1/ρ = ρ · 1/ρ² then costs one multiply instead of a
-        // division waiting for the square root (the filter loop is latency-bound here).
         const double invRho2 = 1.0 / rho2, invRho = rho * invRho2;
         const Eigen::Vector2d tangent = rot_ * Eigen::Vector2d(-rel.y(), rel.x());  // running direction × ρ
-        bool done = false;
-        if (hint) {
-            // sin ∠(u, t) = (u × t)/ρ for the unit u; |sin| ≤ 0.05 keeps the s⁹ remainder of the asin
-            // series below 1e-13, and the series' short dependency chain is the point of this path.
-            const Eigen::Vector2d& u = hint->direction;
-            const double s = (u.x() * tangent.y() - u.y() * tangent.x()) * invRho;
-            if (u.dot(tangent) > 0.0 && std::abs(s) <= 0.05) {
-                const double s2 = s * s;
-                const double angle = s * ((1.0 + s2 * (1.0 / 6)) + s2 * s2 * (3.0 / 40 + s2 * (5.0 / 112)));
-                f.heading = wrapAngle(hint->heading + angle);
-                done = true;
-            }
-        }
-        if (!done) f.heading = wrapAngle(std::atan2(rel.y(), rel.x()) + pi / 2 + pose_.rotation);  // eq. 4.21
+        f.heading = wrapAngle(std::atan2(rel.y(), rel.x()) + pi / 2 + pose_.rotation);  // eq. 4.21
         f.curvature = invRho;
         f.headingGradient = tangent * invRho2;
         f.curvatureGradient = rot_ * (-rel * (invRho2 * invRho));

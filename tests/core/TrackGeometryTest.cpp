@@ -76,36 +76,6 @@ TEST(TrackGeometry, GradientsMatchNumericDifferentiation) {
     }
 }
 
-// The filter's fast path: the bend heading found from a nearby heading by an asin series must equal
-// the atan2 result, for hints on either side, near ±π, and when the hint is too far
-// (fallback) or reversed.
-TEST(TrackGeometry, FieldWithHeadingHintMatchesAtan2) {
-    TrackGeometry t = TrackGeometry::iaaf400m();
-    t.setPose({3.0, -4.0, 2.9});  // headings wrap through ±π on the bends
-    int seriesUsed = 0;
-    for (double a = -3.1; a < 3.1; a += 0.05) {
-        for (const double centre : {42.195, -42.195}) {
-            const Vector2d local = Vector2d(centre, 0) + 37.5 * Vector2d(std::cos(a), std::sin(a));
-            if (std::abs(local.x()) <= 42.195) continue;
-            const Vector2d p = t.toLps(local);
-            const auto exact = t.field(p);
-            for (const double offset : {0.0, 0.03, -0.0499, 0.08, 0.2, -1.0, M_PI}) {
-                const double hint = TrackGeometry::wrapAngle(exact.heading + offset);
-                const Vector2d direction(std::cos(hint), std::sin(hint));
-                const auto fast = t.field(p, hint, direction);
-                EXPECT_LT(angleDiff(fast.heading, exact.heading), 1e-12) << "a " << a << " offset " << offset;
-                EXPECT_GT(fast.heading, -M_PI);
-                EXPECT_LE(fast.heading, M_PI);
-                EXPECT_LT((fast.headingGradient - exact.headingGradient).norm(), 1e-15);
-                EXPECT_LT((fast.curvatureGradient - exact.curvatureGradient).norm(), 1e-15);
-                EXPECT_DOUBLE_EQ(fast.curvature, exact.curvature);
-                if (std::abs(offset) < 0.05) ++seriesUsed;
-            }
-        }
-    }
-    EXPECT_GT(seriesUsed, 100);
-}
-
 TEST(TrackGeometry, PolylineNearestSegmentHeading) {
     TrackGeometry::PolylineParams p;
     p.points = {{0, 0}, {100, 0}, {100, 50}, {0, 50}};

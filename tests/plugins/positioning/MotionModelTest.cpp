@@ -116,6 +116,58 @@ TEST(AugmentedTrackModel, FollowsTrackAndJacobianMatches) {
     expectJacobian(m, x, 0.1, 0.0);
 }
 
+// The filter loop's closed-form query (LPS-frame constants, bend heading by an asin series from the
+// predicted heading) must agree with the general query through TrackGeometry::field(): on both bends
+// and straights of a rotated, shifted oval whose headings wrap through ±π, for predicted headings on
+// either side of the tangent, too far for the series (atan2 fallback), reversed (running the wrong way)
+// and after a large turn ωT; and it must be inactive where the general query is (infield, outside).
+TEST(TrackConstraintField, FastQueryMatchesGeneralQuery) {
+    auto track = std::make_shared<TrackGeometry>(TrackGeometry::iaaf400m());
+    track->setPose({3.0, -4.0, 2.9});
+    TrackConstraintParams params;
+    params.track = track;
+    const TrackConstraintField field(params);
+    int series = 0, bends = 0, straights = 0, inactive = 0;
+    for (double s = 0.0; s < 400.0; s += 1.7) {
+        for (const double offset : {-5.0, 0.3, 4.0, 9.5, 14.0}) {
+            const TrackPoint pt = track->pointAt(s, offset);
+            const TrackQuery q = track->query(pt.position);
+            for (const double delta : {0.0, 0.03, -0.0499, 0.08, 0.4, -1.2, M_PI}) {
+                for (const double turn : {0.0, 0.02, -1.5}) {
+                    const double predicted = TrackGeometry::wrapAngle(q.heading + delta);
+                    const double before = predicted - turn;  // heading before the step, ωT = turn
+                    const Eigen::Vector2d direction(std::cos(predicted), std::sin(predicted));
+                    const TrackConstraint fast = field.at(pt.position, before, predicted, direction);
+                    const TrackConstraint general = trackConstraint(field, pt.position, before);
+                    ASSERT_EQ(fast.active, general.active) << "s " << s << " d " << offset;
+                    if (!fast.active) {
+                        ++inactive;
+                        continue;
+                    }
+                    EXPECT_EQ(fast.varies, general.varies);
+                    EXPECT_LT(std::abs(TrackGeometry::wrapAngle(fast.heading - general.heading)), 1e-12)
+                        << "s " << s << " d " << offset << " delta " << delta << " turn " << turn;
+                    EXPECT_GT(fast.heading, -M_PI);
+                    EXPECT_LE(fast.heading, M_PI);
+                    EXPECT_NEAR(fast.curvature, general.curvature, 1e-15);
+                    EXPECT_LT((fast.headingGradient - general.headingGradient).norm(), 1e-15);
+                    EXPECT_LT((fast.curvatureGradient - general.curvatureGradient).norm(), 1e-15);
+                    if (q.onBend) {
+                        ++bends;
+                        if (std::abs(delta) < 0.05 && std::abs(turn) < 1.0) ++series;
+                    } else {
+                        ++straights;
+                    }
+                }
+            }
+        }
+    }
+    EXPECT_GT(series, 500);
+    EXPECT_GT(bends, 1500);
+    EXPECT_GT(straights, 1500);
+    EXPECT_GT(inactive, 500);
+}
+
 TEST(PseudoTrackModel, MeasurementJacobianMatchesNumeric) {
     PseudoTrackModel::Params p;
     p.constraint.track = oval();
