@@ -3,6 +3,7 @@
 #include "core/estimation/Ekf.h"
 #include "core/estimation/SrUkf.h"
 #include "plugins/positioning/ConstantVelocity.h"
+#include "plugins/positioning/TrackGapBridge.h"
 #include "plugins/positioning/TrackModels.h"
 
 #include <algorithm>
@@ -179,7 +180,16 @@ PositionFilter::PositionFilter(Params params) : params_(std::move(params)) {}
 
 PositionFilterResult PositionFilter::run(const PositionSamples& in, const std::vector<double>& tOut,
                                          const ProgressFn& progress) const {
-    return dispatch(params_, in, tOut, params_.smoothing, progress);
+    PositionFilterResult result = dispatch(params_, in, tOut, params_.smoothing, progress);
+    // The augmented model's prediction follows the track; across long outages the smoother can only
+    // follow it linearly, so those gaps are bridged along the track between their observed ends.
+    if (!result.cancelled && params_.model == ModelKind::Augmented && params_.smoothing == Smoothing::Rts &&
+        params_.track && params_.bridgeGap > 0) {
+        TrackConstraintParams constraint;
+        constraint.track = params_.track;
+        TrackGapBridge(constraint, {params_.bridgeGap}).apply(in, result);
+    }
+    return result;
 }
 
 double PositionFilter::objective(const PositionSamples& in) const {

@@ -54,6 +54,8 @@ public:
         double maxStep = 0.1;      // s, longest prediction step (outages are crossed in steps)
         bool cvSwitch = true;      // track models: a = 0 after the acceleration phase
         double accelPhase = 6.0;   // s of constant acceleration after the detected start
+        double bridgeGap = 2.0;    // s: augmented model with RTS, outages at least this long are bridged
+                                   // along the track (TrackGapBridge); 0 = off
         estimation::UnscentedParams unscented;
     };
 

@@ -106,6 +106,10 @@ ParameterSpecs PositionFilterProcessor::parameters() const {
                                  "over the whole recording; fixed-lag: smoothing with `lag` seconds of look-ahead.")),
         ParameterSpec::number(QStringLiteral("lag"), 0.5, 0.0, kInf, QStringLiteral("s"),
                               tr("Look-ahead of the fixed-lag smoother.")),
+        ParameterSpec::number(QStringLiteral("bridge_gap"), 2.0, 0.0, kInf, QStringLiteral("s"),
+                              tr("model=augmented with smoother=rts: outages at least this long are bridged along "
+                                 "the track between the smoothed states at their ends (arc length by a monotone "
+                                 "cubic matching both speeds); 0 = off.")),
         optionalNumber(QStringLiteral("output_rate"), 0.0, 1e4, QStringLiteral("Hz"),
                        tr("Output on a uniform grid at this rate (multiples of 1/rate); absent: at the input time stamps.")),
         ParameterSpec::number(QStringLiteral("max_step"), 0.1, 1e-3, 10.0, QStringLiteral("s"),
@@ -168,6 +172,7 @@ Expected<PositionFilter::Params> PositionFilterProcessor::readParams(const RunCo
                   : smoother == QLatin1String("fixed-lag") ? estimation::Smoothing::FixedLag
                                                            : estimation::Smoothing::None;
     p.lag = c.number(QStringLiteral("lag"));
+    p.bridgeGap = c.number(QStringLiteral("bridge_gap"));
     if (p.smoothing == estimation::Smoothing::FixedLag && !(p.lag > 0))
         return makeError(QStringLiteral("lag must be > 0 s with smoother=fixed-lag"));
     if (c.has(QStringLiteral("output_rate")) && !(c.number(QStringLiteral("output_rate")) > 0))
