@@ -79,6 +79,11 @@ Vector<6> ctraDifference(const Vector<6>& a, const Vector<6>& b) {
 
 void ctraNormalize(Vector<6>& x) { x[kPhi] = TrackGeometry::wrapAngle(x[kPhi]); }
 
+Kinematics CtraModel::kinematics(const StateVector& x) {
+    if (x[kV] >= 0.0) return {x[kPx], x[kPy], x[kV], x[kPhi], x[kOmega], x[kA]};
+    return {x[kPx], x[kPy], -x[kV], TrackGeometry::wrapAngle(x[kPhi] + M_PI), x[kOmega], -x[kA]};
+}
+
 CtraModel::StateVector CtraModel::predict(const StateVector& x, double T, double t, StateMatrix* jacobian) const {
     return ctraPredict(x, T, constantVelocity(t), jacobian);
 }

@@ -37,7 +37,8 @@ struct CtraNoise {
     double rY = 0.01;        // m²
 };
 
-// Kinematic summary every positioning model can give for its output columns.
+// Kinematic summary every positioning model can give for its output columns (speed ≥ 0, heading =
+// direction of travel).
 struct Kinematics {
     double x = 0, y = 0, speed = 0, heading = 0, turnRate = 0, accel = 0;
 };
@@ -67,7 +68,9 @@ public:
     void normalize(StateVector& x) const;
 
     static Measurement observation(const Eigen::Vector2d& p) { return p; }
-    static Kinematics kinematics(const StateVector& x) { return {x[kPx], x[kPy], x[kV], x[kPhi], x[kOmega], x[kA]}; }
+    // (v, φ, a) and (−v, φ + π, −a) are the same motion, and unscented filters do settle in the mirrored
+    // one (seen: M-SRUKF with v = −7.5 m/s). Reported is the direction of travel: speed ≥ 0.
+    static Kinematics kinematics(const StateVector& x);
 
     const Params& params() const { return params_; }
     bool constantVelocity(double t) const { return t > params_.cvAfter; }

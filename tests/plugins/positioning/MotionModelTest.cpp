@@ -77,6 +77,24 @@ TEST(Ctra, JacobianMatchesNumericDifferentiation) {
     expectJacobian(CtraModel(cv), x, 0.1, 2.0);
 }
 
+// (v, φ, a) and (−v, φ + π, −a) are the same motion; the reported kinematics are the direction of travel.
+TEST(Ctra, KinematicsReportTheDirectionOfTravel) {
+    Vector<6> x;
+    x << 1.0, 2.0, -7.5, 0.4, -0.74, 0.19;
+    const Kinematics k = CtraModel::kinematics(x);
+    EXPECT_DOUBLE_EQ(k.speed, 7.5);
+    EXPECT_NEAR(k.heading, -0.74 + M_PI, 1e-15);
+    EXPECT_DOUBLE_EQ(k.accel, -0.4);
+    EXPECT_DOUBLE_EQ(k.turnRate, 0.19);
+    // The same position one step later either way: the mirrored state moves along the reported heading.
+    const CtraModel m;
+    Vector<6> forward;
+    forward << 1.0, 2.0, 7.5, -0.4, -0.74 + M_PI, 0.19;
+    EXPECT_LT((m.predict(x, 0.1, 0.0).head<2>() - m.predict(forward, 0.1, 0.0).head<2>()).norm(), 1e-12);
+    x[kV] = 3.0;
+    EXPECT_DOUBLE_EQ(CtraModel::kinematics(x).heading, -0.74);
+}
+
 TEST(ConstantVelocity, JacobianAndNoise) {
     const ConstantVelocityModel m;
     expectJacobian(m, Vector<4>(1, 2, 3, -4), 0.3, 0.0);

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 #include <cmath>
+#include <tuple>
 
 using namespace athlos;
 using namespace athlos::positioning;
@@ -72,6 +73,30 @@ TEST(PositionFilterValidation, OutageDuringTheStartIsBridgedAlongTheTrack) {
     std::printf("seed 5003: RMSE %.3f m bridged, %.3f m without\n", bridged, unbridged);
     EXPECT_LT(bridged, 1.0);
     EXPECT_GT(unbridged, 5.0);  // the failure the bridge exists for is still there without it
+}
+
+// The M-SRUKF settles in the mirrored CTRA state (v < 0, heading + π) on some runs; the bridge read that as
+// standing still and running the wrong way round (30-run evaluation with RTS: 0.36 → 15 m). Runs 2026 and
+// 2031 of athlos-eval-position-filter (400 m and 800 m), with that evaluation's estimated M-SRUKF noise.
+TEST(PositionFilterValidation, BridgeHandlesTheMirroredSrukfState) {
+    for (const auto& [seed, distance, lane, topSpeed] :
+         {std::tuple{2026, 400.0, 2, 7.9873824813860717}, std::tuple{2031, 800.0, 1, 6.8100522311217997}}) {
+        TrackRunSimulator::Params sp;
+        sp.seed = seed;
+        sp.distance = distance;
+        sp.lane = lane;
+        sp.topSpeed = topSpeed;
+        const auto run = TrackRunSimulator::simulate(sp);
+        auto p = paramsFor(ModelKind::Augmented, FilterKind::SrUkf);
+        p.noise.ctra = {0.00094, 0.069, 0.83, 0.013, 0.072, 0.0055, 0.019};
+        p.noise.gate = 7.11;
+        const double bridged = filteredRmse(run, p);
+        p.bridgeGap = 0.0;
+        const double unbridged = filteredRmse(run, p);
+        std::printf("seed %d M-SRUKF: RMSE %.3f m bridged, %.3f m without\n", seed, bridged, unbridged);
+        EXPECT_LT(bridged, unbridged + 0.1);
+        EXPECT_LT(bridged, 1.0);
+    }
 }
 
 TEST(PositionFilterValidation, GatingAndNoiseRecovery) {
