@@ -1,5 +1,5 @@
 // TrackGapBridge: outages bridged along the track, checked against runners whose truth is the track
-// geometry itself (pointAt): constant speed in a lane (exact), more than a lap unseen (whole laps
+// geometry itself (pointAt): constant speed in a lane (to cm), more than a lap unseen (whole laps
 // chosen by speed), running the wrong way round, an acceleration through the gap (bounded error),
 // and the cases it must leave alone (short gaps, ends off the track, the filter's own samples).
 #include "plugins/positioning/TrackGapBridge.h"
@@ -66,7 +66,7 @@ TrackGapBridge bridgeFor(std::shared_ptr<const TrackGeometry> track, double minG
 
 }  // namespace
 
-TEST(TrackGapBridge, ConstantSpeedInALaneIsExact) {
+TEST(TrackGapBridge, ConstantSpeedInALaneIsReproducedToCentimetres) {
     const auto track = rotatedOval();
     const double d = track->laneOffset(3);
     // 12 s unseen from the back straight into and through bend 2, 7 m/s on the lane-3 running line.
