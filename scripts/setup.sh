@@ -21,6 +21,9 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 BUILD_DIR=${ATHLOS_BUILD_DIR:-build}
+# ccache: paths relative to the checkout and no working-directory hash, so a fresh clone (CI) or a
+# second work tree reuses the objects another checkout compiled.
+export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$(pwd)}" CCACHE_NOHASHDIR=1
 # CI treats warnings as errors; elsewhere the cached choice stays (so demo after test does not rebuild).
 WERROR_ARG=(); [ -n "${CI:-}" ] && WERROR_ARG=(-DATHLOS_WERROR=ON)
 cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo "${WERROR_ARG[@]}" \
