@@ -4,6 +4,7 @@
 #include <QJsonDocument>
 #include <QSet>
 #include <algorithm>
+#include <limits>
 #include <string>
 
 namespace athlos::h5 {
@@ -38,11 +39,53 @@ Handle utf8Links() {
     return lcpl;
 }
 
-Handle stringType(H5T_cset_t cset = H5T_CSET_UTF8) {
+// Variable-length strings (format version 1) live in HDF5's global heap, whose reader crashes on
+// damaged files (H5HG_read); they are only read, never written.
+Handle variableStringType(H5T_cset_t cset) {
     Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
     H5Tset_size(type, H5T_VARIABLE);
     H5Tset_cset(type, cset);
     return type;
+}
+
+// Format version 2 writes fixed-length, NUL-padded UTF-8 strings of `bytes` bytes (at least 1).
+Handle fixedStringType(std::size_t bytes) {
+    Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+    H5Tset_size(type, std::max<std::size_t>(bytes, 1));
+    H5Tset_strpad(type, H5T_STR_NULLPAD);
+    H5Tset_cset(type, H5T_CSET_UTF8);
+    return type;
+}
+
+// Bytes of `count` elements of `width` bytes, refused when the file cannot hold them: a damaged
+// size must not turn into a huge allocation. Compressed data may expand (deflate at most ~1032:1).
+std::size_t checkedBytes(hid_t object, hsize_t count, std::size_t width, bool compressed, const QString& what) {
+    const hid_t fileId = H5Iget_file_id(object);
+    hsize_t fileSize = 0;
+    if (fileId >= 0) {
+        H5Fget_filesize(fileId, &fileSize);
+        H5Fclose(fileId);
+    }
+    const long double bytes = static_cast<long double>(count) * static_cast<long double>(width);
+    const long double limit = static_cast<long double>(fileSize) * (compressed ? 1100.0L : 1.0L) + 4096.0L;
+    if (width == 0 || bytes > limit || bytes > static_cast<long double>(std::numeric_limits<std::ptrdiff_t>::max() / 2))
+        throw Failure{QStringLiteral("%1 claims %2 bytes in a file of %3 bytes (damaged sizes)")
+                          .arg(what).arg(double(bytes), 0, 'g', 6).arg(fileSize)};
+    return static_cast<std::size_t>(bytes);
+}
+
+bool isCompressed(hid_t dataset) {
+    Handle dcpl(H5Dget_create_plist(dataset), H5Pclose);
+    if (!dcpl.valid()) return true;
+    const int filters = H5Pget_nfilters(dcpl);
+    for (int i = 0; i < filters; ++i) {
+        unsigned flags = 0;
+        size_t elements = 0;
+        unsigned config = 0;
+        if (H5Pget_filter2(dcpl, unsigned(i), &flags, &elements, nullptr, 0, nullptr, &config) == H5Z_FILTER_DEFLATE)
+            return true;
+    }
+    return false;
 }
 
 // H5Treclaim is declared by 1.10.8's headers but not exported by its library.
@@ -124,9 +167,22 @@ Handle createSampleDataset(hid_t parent, const char* name, int rank, const hsize
     Handle space = simpleSpace(rank, dims);
     Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
     const bool empty = std::any_of(dims, dims + rank, [](hsize_t d) { return d == 0; });
-    if (!empty && (H5Pset_chunk(dcpl, rank, chunk) < 0 || H5Pset_shuffle(dcpl) < 0 || H5Pset_deflate(dcpl, kDeflateLevel) < 0))
+    // Fletcher32 last: its checksum covers the stored (compressed) bytes, so a damaged chunk is
+    // reported before it reaches the decompressor.
+    if (!empty && (H5Pset_chunk(dcpl, rank, chunk) < 0 || H5Pset_shuffle(dcpl) < 0 ||
+                   H5Pset_deflate(dcpl, kDeflateLevel) < 0 || H5Pset_fletcher32(dcpl) < 0))
         fail(QStringLiteral("cannot set up compression for ") + childPath(parent, QString::fromLatin1(name)));
     return createDataset(parent, QString::fromLatin1(name), H5T_IEEE_F64LE, space, dcpl);
+}
+
+// Table and annotation columns: chunked only to carry a Fletcher32 checksum (they are small).
+Handle createColumnDataset(hid_t parent, const QString& name, hid_t type, hsize_t size) {
+    Handle space = simpleSpace(1, &size);
+    Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+    const hsize_t chunk = std::clamp<hsize_t>(size, 1, 65536);
+    if (size > 0 && (H5Pset_chunk(dcpl, 1, &chunk) < 0 || H5Pset_fletcher32(dcpl) < 0))
+        fail(QStringLiteral("cannot set up checksums for ") + childPath(parent, name));
+    return createDataset(parent, name, type, space, dcpl);
 }
 
 void writeRows(hid_t dataset, const double* values, hsize_t row, hsize_t count, hsize_t columns, int rank) {
@@ -204,8 +260,10 @@ QString childPath(hid_t parent, const QString& name) {
 
 Handle createFile(const QString& path) {
     Handle fapl = fileAccess();
-    // 1.8 object headers: dense attribute/link storage, readable by every current HDF5 tool.
-    H5Pset_libver_bounds(fapl, H5F_LIBVER_V18, H5F_LIBVER_LATEST);
+    // HDF5 1.10 file format (format_version 2): superblock version 3 and version-2 object headers,
+    // which carry checksums, so damaged metadata is detected instead of being parsed. Readable by
+    // HDF5 1.10 and later (h5py, HDFView, MATLAB R2021b+).
+    H5Pset_libver_bounds(fapl, H5F_LIBVER_V110, H5F_LIBVER_LATEST);
     return checked(H5Fcreate(QFile::encodeName(path).constData(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), H5Fclose,
                    QStringLiteral("cannot create the file"));
 }
@@ -282,19 +340,24 @@ bool hasAttribute(hid_t object, const char* name) {
 
 void writeString(hid_t object, const char* name, const QString& value) {
     const QByteArray bytes = value.toUtf8();
-    const char* data = bytes.constData();
-    Handle type = stringType();
-    writeAttribute(object, name, type, type, scalarSpace(), &data);
+    Handle type = fixedStringType(std::size_t(bytes.size()));
+    std::string buffer(std::max<std::size_t>(std::size_t(bytes.size()), 1), '\0');
+    std::copy(bytes.begin(), bytes.end(), buffer.begin());
+    writeAttribute(object, name, type, type, scalarSpace(), buffer.data());
 }
 
 void writeStrings(hid_t object, const char* name, const QStringList& values) {
     std::vector<QByteArray> bytes;
-    std::vector<const char*> data;
-    for (const auto& v : values) bytes.push_back(v.toUtf8());
-    for (const auto& b : bytes) data.push_back(b.constData());
-    const hsize_t size = data.size();
-    Handle type = stringType();
-    writeAttribute(object, name, type, type, simpleSpace(1, &size), data.data());
+    std::size_t width = 1;
+    for (const auto& v : values) {
+        bytes.push_back(v.toUtf8());
+        width = std::max(width, std::size_t(bytes.back().size()));
+    }
+    std::vector<char> buffer(bytes.size() * width, '\0');
+    for (std::size_t i = 0; i < bytes.size(); ++i) std::copy(bytes[i].begin(), bytes[i].end(), buffer.begin() + i * width);
+    const hsize_t size = bytes.size();
+    Handle type = fixedStringType(width);
+    writeAttribute(object, name, type, type, simpleSpace(1, &size), buffer.data());
 }
 
 void writeInt(hid_t object, const char* name, long long value) {
@@ -318,14 +381,15 @@ QString readString(hid_t object, const char* name) {
     Handle fileType(H5Aget_type(attribute), H5Tclose);
     const QString what = QStringLiteral("cannot read ") + attributeName(object, name);
     if (H5Tis_variable_str(fileType) > 0) {
-        Handle memType = stringType(H5Tget_cset(fileType));
+        Handle memType = variableStringType(H5Tget_cset(fileType));
         char* data = nullptr;
         check(H5Aread(attribute, memType, &data), what);
         const QString value = QString::fromUtf8(data);
         H5free_memory(data);
         return value;
     }
-    std::string data(H5Tget_size(fileType) + 1, '\0');
+    const std::size_t width = checkedBytes(object, 1, H5Tget_size(fileType), false, attributeName(object, name));
+    std::string data(width + 1, '\0');
     Handle memType(H5Tcopy(fileType), H5Tclose);
     check(H5Aread(attribute, memType, data.data()), what);
     return QString::fromUtf8(data.c_str());
@@ -361,7 +425,7 @@ QJsonArray readJsonArray(hid_t object, const char* name) {
 
 void writeNumberColumn(hid_t parent, const QString& name, const std::vector<double>& values) {
     const hsize_t size = values.size();
-    Handle dataset = createDataset(parent, name, H5T_IEEE_F64LE, simpleSpace(1, &size));
+    Handle dataset = createColumnDataset(parent, name, H5T_IEEE_F64LE, size);
     if (size > 0)
         check(H5Dwrite(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
               QStringLiteral("cannot write ") + childPath(parent, name));
@@ -369,14 +433,18 @@ void writeNumberColumn(hid_t parent, const QString& name, const std::vector<doub
 
 void writeTextColumn(hid_t parent, const QString& name, const QStringList& values) {
     std::vector<QByteArray> bytes;
-    std::vector<const char*> data;
-    for (const auto& v : values) bytes.push_back(v.toUtf8());
-    for (const auto& b : bytes) data.push_back(b.constData());
-    const hsize_t size = data.size();
-    Handle type = stringType();
-    Handle dataset = createDataset(parent, name, type, simpleSpace(1, &size));
+    std::size_t width = 1;
+    for (const auto& v : values) {
+        bytes.push_back(v.toUtf8());
+        width = std::max(width, std::size_t(bytes.back().size()));
+    }
+    std::vector<char> buffer(bytes.size() * width, '\0');
+    for (std::size_t i = 0; i < bytes.size(); ++i) std::copy(bytes[i].begin(), bytes[i].end(), buffer.begin() + i * width);
+    const hsize_t size = bytes.size();
+    Handle type = fixedStringType(width);
+    Handle dataset = createColumnDataset(parent, name, type, size);
     if (size > 0)
-        check(H5Dwrite(dataset, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()),
+        check(H5Dwrite(dataset, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer.data()),
               QStringLiteral("cannot write ") + childPath(parent, name));
 }
 
@@ -384,6 +452,7 @@ std::vector<double> readNumberColumn(hid_t parent, const QString& name) {
     Handle dataset = openDataset(parent, name);
     const auto dims = extent(dataset);
     if (dims.size() != 1) throw Failure{childPath(parent, name) + QStringLiteral(" is not one-dimensional")};
+    checkedBytes(dataset, dims[0], sizeof(double), isCompressed(dataset), childPath(parent, name));
     std::vector<double> values(dims[0]);
     if (!values.empty())
         check(H5Dread(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
@@ -401,7 +470,8 @@ QStringList readTextColumn(hid_t parent, const QString& name) {
     if (dims[0] == 0) return values;
     const QString what = QStringLiteral("cannot read ") + childPath(parent, name);
     if (H5Tis_variable_str(fileType) > 0) {
-        Handle memType = stringType(H5Tget_cset(fileType));
+        checkedBytes(dataset, dims[0], sizeof(char*), true, childPath(parent, name));
+        Handle memType = variableStringType(H5Tget_cset(fileType));
         std::vector<char*> data(dims[0], nullptr);
         check(H5Dread(dataset, memType, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), what);
         for (const char* s : data) values << QString::fromUtf8(s ? s : "");
@@ -410,7 +480,7 @@ QStringList readTextColumn(hid_t parent, const QString& name) {
         return values;
     }
     const std::size_t width = H5Tget_size(fileType);
-    std::vector<char> data(dims[0] * width);
+    std::vector<char> data(checkedBytes(dataset, dims[0], width, isCompressed(dataset), childPath(parent, name)));
     Handle memType(H5Tcopy(fileType), H5Tclose);
     check(H5Dread(dataset, memType, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), what);
     for (hsize_t i = 0; i < dims[0]; ++i) {
@@ -443,6 +513,11 @@ void writeSamples(hid_t group, const StreamData& data, const std::function<void(
 
 StreamData readSamples(hid_t group, int columns) {
     SampleSets sets = openSamples(group, columns);
+    if (sets.columns > hsize_t(std::numeric_limits<int>::max()))
+        throw Failure{objectPath(group) + QStringLiteral(" claims an impossible number of columns (damaged sizes)")};
+    checkedBytes(sets.t, sets.rows, sizeof(double), isCompressed(sets.t), objectPath(sets.t));
+    checkedBytes(sets.data, sets.rows * std::max<hsize_t>(sets.columns, 1), sizeof(double), isCompressed(sets.data),
+                 objectPath(sets.data));
     StreamData data(sets.rows, static_cast<int>(sets.columns));
     if (sets.rows > 0)
         check(H5Dread(sets.t, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.t.data()),

@@ -1,6 +1,8 @@
 #include "core/store/ProjectFile.h"
 
 #include "core/store/Hdf5Util.h"
+#include "core/store/VerifiedFiles.h"
+#include "core/util/IsolatedRun.h"
 #include "core/util/Version.h"
 
 #include <QDateTime>
@@ -139,6 +141,55 @@ Contents readContents(hid_t file, const QString& path, int formatVersion) {
     return c;
 }
 
+// Opens file and reads what ProjectFile::read needs; with allSamples also every stream's samples
+// (which verifies their Fletcher32 checksums). The caller holds the HDF5 lock. Throws Failure.
+Contents readProject(const QString& file, bool allSamples) {
+    const htri_t isHdf5 = H5Fis_hdf5(QFile::encodeName(file).constData());
+    if (isHdf5 == 0) throw Failure{QStringLiteral("not an HDF5 file, so not an Athlos project")};
+    if (isHdf5 < 0) throw Failure{QStringLiteral("the file cannot be read (HDF5: %1)").arg(h5::libraryMessage())};
+    Handle handle = h5::tryOpenFileReadOnly(file);
+    if (!handle.valid())
+        throw Failure{QStringLiteral("the file is damaged or truncated (HDF5: %1)").arg(h5::libraryMessage())};
+    if (!h5::hasAttribute(handle, "format"))
+        throw Failure{QStringLiteral("an HDF5 file, but not an Athlos project (it has no 'format' attribute)")};
+    if (const QString format = h5::readString(handle, "format"); format != QLatin1String("athlos"))
+        throw Failure{QStringLiteral("an HDF5 file, but not an Athlos project (format '%1')").arg(format.left(64))};
+    const long long version = h5::readInt(handle, "format_version");
+    if (version > Project::kFormatVersion)
+        throw Failure{QStringLiteral("it was written by a newer Athlos (format version %1; this build reads up to %2)")
+                          .arg(version).arg(Project::kFormatVersion)};
+    if (version < 1) throw Failure{QStringLiteral("invalid format version %1").arg(version)};
+    Contents c = readContents(handle, file, static_cast<int>(version));
+    if (allSamples) {
+        for (const auto& [recName, rec] : c.recordings)
+            for (const auto& [name, stream] : rec.streams)
+                h5::readSamples(h5::openGroup(handle, streamGroup(recName, name)), static_cast<int>(stream.info().columns.size()));
+    }
+    return c;
+}
+
+// libhdf5 parses damaged metadata without bounds checks (a fuzzed file crashed it in H5HG_read), so
+// a file this process has not checked or written is first read completely in a child process;
+// only when that succeeds is it opened here. The caller holds the HDF5 lock (so no other thread is
+// inside the library when the child is forked).
+Status checkInIsolation(const QString& file) {
+    if (VerifiedFiles::contains(file)) return {};
+    const long long size = VerifiedFiles::sizeOf(file);
+    Status status = runIsolated(
+        QStringLiteral("the file"),
+        [&]() -> Status {
+            try {
+                readProject(file, true);
+                return {};
+            } catch (const Failure& failure) {
+                return makeError(failure.message);
+            }
+        },
+        IsolatedRunParams{isolatedTimeoutFor(size), 0});
+    if (status) VerifiedFiles::remember(file);
+    return status;
+}
+
 // Writing ---------------------------------------------------------------------------------------
 
 // What write() does with each stream, decided before taking the HDF5 lock: Stream::data() holds the
@@ -216,6 +267,8 @@ public:
     hid_t open(const QString& file) {
         auto it = files_.find(file);
         if (it == files_.end()) {
+            if (Status checked = checkInIsolation(file); !checked)
+                throw Failure{QStringLiteral("cannot read unloaded streams from '%1': %2").arg(file, checked.message())};
             try {
                 it = files_.emplace(file, h5::openFileReadOnly(file)).first;
             } catch (const Failure& f) {
@@ -307,24 +360,9 @@ Status ProjectFile::read(const QString& path, Project& project) {
     const QString file = fileInfo.absoluteFilePath();
 
     auto guard = h5::lock();
+    if (Status checked = checkInIsolation(file); !checked) return refuse(checked.message());
     try {
-        const htri_t isHdf5 = H5Fis_hdf5(QFile::encodeName(file).constData());
-        if (isHdf5 == 0) return refuse(QStringLiteral("not an HDF5 file, so not an Athlos project"));
-        if (isHdf5 < 0) return refuse(QStringLiteral("the file cannot be read (HDF5: %1)").arg(h5::libraryMessage()));
-        Handle handle = h5::tryOpenFileReadOnly(file);
-        if (!handle.valid())
-            return refuse(QStringLiteral("the file is damaged or truncated (HDF5: %1)").arg(h5::libraryMessage()));
-        if (!h5::hasAttribute(handle, "format"))
-            return refuse(QStringLiteral("an HDF5 file, but not an Athlos project (it has no 'format' attribute)"));
-        if (const QString format = h5::readString(handle, "format"); format != QLatin1String("athlos"))
-            return refuse(QStringLiteral("an HDF5 file, but not an Athlos project (format '%1')").arg(format));
-        const long long version = h5::readInt(handle, "format_version");
-        if (version > Project::kFormatVersion)
-            return refuse(QStringLiteral("it was written by a newer Athlos (format version %1; this build reads up to %2)")
-                              .arg(version).arg(Project::kFormatVersion));
-        if (version < 1) return refuse(QStringLiteral("invalid format version %1").arg(version));
-
-        Contents c = readContents(handle, file, static_cast<int>(version));
+        Contents c = readProject(file, false);
         project.meta() = std::move(c.meta);
         project.recordings() = std::move(c.recordings);
         project.geometry() = std::move(c.geometry);
@@ -336,6 +374,14 @@ Status ProjectFile::read(const QString& path, Project& project) {
     } catch (const std::bad_alloc&) {
         return refuse(QStringLiteral("out of memory (is the file damaged?)"));
     }
+}
+
+Status ProjectFile::check(const QString& path) {
+    const QString file = QFileInfo(path).absoluteFilePath();
+    auto guard = h5::lock();
+    if (Status checked = checkInIsolation(file); !checked)
+        return makeError(QStringLiteral("'%1': %2").arg(QDir::toNativeSeparators(path), checked.message()));
+    return {};
 }
 
 Status ProjectFile::write(const Project& project, const QString& path, const Progress& progress) {
@@ -350,7 +396,8 @@ Status ProjectFile::write(const Project& project, const QString& path, const Pro
     for (const auto& [recName, rec] : project.recordings()) {
         for (const auto& [name, stream] : rec.streams) {
             StreamPlan plan{recName, name, stream.info(), nullptr, std::nullopt};
-            if (!stream.isLoaded() && stream.fileSource()) {
+            // Streams of a version-1 file are decoded and rewritten, so that they gain checksums.
+            if (!stream.isLoaded() && stream.fileSource() && project.meta().formatVersion >= 2) {
                 plan.source = stream.fileSource();
                 if (!targetCanonical.isEmpty() && QFileInfo(plan.source->file).canonicalFilePath() == targetCanonical)
                     return refuse(QStringLiteral("stream %1/%2 is read from that very file; save to another file")
@@ -390,6 +437,7 @@ Status ProjectFile::write(const Project& project, const QString& path, const Pro
 
 void ProjectFile::rebind(Project& project, const QString& path) {
     const QString file = QFileInfo(path).absoluteFilePath();
+    VerifiedFiles::remember(file);  // written by this process
     for (auto& [recName, rec] : project.recordings()) {
         for (auto& [name, stream] : rec.streams) {
             const QString group = streamGroup(recName, name);
@@ -400,6 +448,8 @@ void ProjectFile::rebind(Project& project, const QString& path) {
 
 Expected<StreamData> ProjectFile::loadStream(const QString& file, const QString& group, int columns) {
     auto guard = h5::lock();
+    if (Status checked = checkInIsolation(file); !checked)
+        return makeError(QStringLiteral("cannot load %1 from '%2': %3").arg(group, QDir::toNativeSeparators(file), checked.message()));
     try {
         Handle handle = h5::openFileReadOnly(file);
         Handle streamGroup = h5::openGroup(handle, group);

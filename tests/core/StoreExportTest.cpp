@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <QTemporaryDir>
 #include <string>
 
@@ -24,16 +26,21 @@ std::vector<double> readDoubles(hid_t file, const char* name, std::vector<hsize_
     return values;
 }
 
+// Athlos writes fixed-length, NUL-padded UTF-8 strings (no variable-length strings since format 2).
 std::vector<std::string> readStringArrayAttribute(hid_t object, const char* name) {
     const hid_t attribute = H5Aopen(object, name, H5P_DEFAULT);
     const hid_t space = H5Aget_space(attribute);
-    const hid_t type = H5Tcopy(H5T_C_S1);
-    H5Tset_size(type, H5T_VARIABLE);
-    H5Tset_cset(type, H5T_CSET_UTF8);
-    std::vector<char*> raw(std::size_t(H5Sget_simple_extent_npoints(space)));
+    const hid_t type = H5Aget_type(attribute);
+    EXPECT_EQ(H5Tis_variable_str(type), 0);
+    const std::size_t width = H5Tget_size(type);
+    const std::size_t count = std::size_t(H5Sget_simple_extent_npoints(space));
+    std::vector<char> raw(width * count);
     H5Aread(attribute, type, raw.data());
-    std::vector<std::string> values(raw.begin(), raw.end());
-    H5Dvlen_reclaim(type, space, H5P_DEFAULT, raw.data());  // H5Treclaim is missing from 1.10.8's library
+    std::vector<std::string> values;
+    for (std::size_t i = 0; i < count; ++i) {
+        const char* s = raw.data() + i * width;
+        values.emplace_back(s, std::find(s, s + width, '\0'));
+    }
     H5Tclose(type);
     H5Sclose(space);
     H5Aclose(attribute);
