@@ -1,7 +1,11 @@
 #pragma once
 // `athlos <command> …`: one function per command, each returning the process exit code.
 // Exit codes: 0 success, 1 failure (one-line reason on stderr), 2 usage error, 130 cancelled.
+#include "core/model/Project.h"
+#include "core/util/Expected.h"
+
 #include <QStringList>
+#include <memory>
 
 namespace athlos::cli {
 
@@ -18,5 +22,9 @@ int cmdScreenshot(const QStringList& args);
 
 // Prints "athlos: <message>" on stderr and returns code.
 int fail(const QString& message, int code = Failed);
+
+// Opens a project to change it (its write lock held until the Project is destroyed) and prints
+// what opening noted ("athlos: note: …") on stderr.
+Expected<std::unique_ptr<Project>> openForChange(const QString& path);
 
 }  // namespace athlos::cli

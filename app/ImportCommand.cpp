@@ -84,7 +84,7 @@ int cmdImport(const QStringList& args) {
 
     if (!QFileInfo::exists(projectPath))
         return fail(QStringLiteral("'%1' does not exist (create it with: athlos new %1)").arg(projectPath));
-    auto project = Project::open(projectPath);
+    auto project = openForChange(projectPath);
     if (!project) return fail(project.message());
 
     TerminalProgress bar(QStringLiteral("import"));

@@ -18,6 +18,13 @@ int fail(const QString& message, int code) {
     return code;
 }
 
+Expected<std::unique_ptr<Project>> openForChange(const QString& path) {
+    auto project = Project::openForChange(path);
+    if (project)
+        for (const QString& note : (*project)->notes()) std::fprintf(stderr, "athlos: note: %s\n", qUtf8Printable(note));
+    return project;
+}
+
 int cmdNew(const QStringList& args) {
     CommandParser p(QStringLiteral("new <project> [--sport S]"), QStringLiteral("Create an empty project file."));
     p.addPositional(QStringLiteral("project"), QStringLiteral("The .athlos file to create."));

@@ -80,7 +80,7 @@ int cmdRun(const QStringList& args) {
         return fail(QStringLiteral("unknown processor '%1' (available: %2)")
                         .arg(request.processorId, ProcessorRegistry::instance().ids().join(QStringLiteral(", "))));
 
-    auto project = Project::open(p.positional()[0]);
+    auto project = openForChange(p.positional()[0]);
     if (!project) return fail(project.message());
     TerminalProgress bar(request.processorId);
     auto outcome = runProcessor(**project, *processor, request, bar.progress().sub(0.0, 0.9));
@@ -102,7 +102,7 @@ int cmdPipeline(const QStringList& args) {
     if (auto code = p.parse(args, 2, 2)) return *code;
     auto pipeline = readPipelineFile(p.positional()[1]);
     if (!pipeline) return fail(pipeline.message());
-    auto project = Project::open(p.positional()[0]);
+    auto project = openForChange(p.positional()[0]);
     if (!project) return fail(project.message());
     TerminalProgress bar(QStringLiteral("pipeline"));
     auto written = runPipeline(**project, *pipeline, bar.progress().sub(0.0, 0.9));

@@ -123,7 +123,7 @@ int cmdVideo(const QStringList& args)
     }
     if ((detach || info) && (offset || fps)) return fail(QStringLiteral("--offset and --fps go with a <file> or alone"), Usage);
 
-    auto project = Project::open(projectPath);
+    auto project = info ? Project::open(projectPath) : openForChange(projectPath);
     if (!project) return fail(project.message());
     Project& pr = **project;
     if (!pr.recording(recording))

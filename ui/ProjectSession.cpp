@@ -54,6 +54,10 @@ bool ProjectSession::newProject(const QString& path)
 {
     if (!maybeSaveChanges()) return false;
     std::shared_ptr<Project> project = Project::create(path);
+    if (Status locked = project->lockForChange(); !locked) {
+        window_.showError(tr("Could not create the project"), locked.message());
+        return false;
+    }
     window_.setBusy(true);
     const BackgroundTask::Outcome outcome = BackgroundTask::run(
         &window_, tr("Creating project…"), [project](const Progress& progress) { return project->save(progress); },
@@ -72,15 +76,24 @@ bool ProjectSession::newProject(const QString& path)
 bool ProjectSession::openProject(const QString& path)
 {
     if (!maybeSaveChanges()) return false;
-    auto opened = Project::open(path);
+    // The GUI holds the project's write lock while it is open: a batch run on the same file is
+    // refused instead of one overwriting the other's results.
+    auto opened = Project::openForChange(path);
     if (!opened) {
         window_.showError(tr("Could not open the project"), opened.message());
         if (!QFileInfo::exists(path)) RecentProjects::remove(path);
         return false;
     }
+    const QStringList notes = (*opened)->notes();
     window_.setProject(std::shared_ptr<Project>(std::move(opened).value()));
     RecentProjects::add(path);
     window_.statusBar()->showMessage(tr("Opened %1").arg(QDir::toNativeSeparators(path)), 5000);
+    // Information, not an error: the project is as it was last saved.
+    if (!notes.isEmpty()) {
+        window_.statusBar()->showMessage(notes.join(QLatin1Char(' ')), 15000);
+        if (window_.interactive_)
+            QMessageBox::information(&window_, tr("Opened after an interrupted save"), notes.join(QStringLiteral("\n")));
+    }
     recoverJournal();
     return true;
 }

@@ -1,6 +1,7 @@
 #include "core/model/Project.h"
 
 #include "core/store/ProjectFile.h"
+#include "core/store/ProjectLock.h"
 #include "core/util/Version.h"
 
 #include <QDateTime>
@@ -66,6 +67,32 @@ Expected<std::unique_ptr<Project>> Project::open(const QString& path) {
     return project;
 }
 
+Expected<std::unique_ptr<Project>> Project::openForChange(const QString& path) {
+    auto lock = ProjectLock::acquire(path);
+    if (!lock) return lock.error();
+    auto project = open(path);
+    if (!project) {
+        // What the lock did about stale saves stays worth knowing even when the project is refused.
+        if (!(*lock)->notes().isEmpty())
+            return makeError(project.message() + QStringLiteral(" (") + (*lock)->notes().join(QStringLiteral("; ")) + QLatin1Char(')'));
+        return project.error();
+    }
+    (*project)->notes_ = (*lock)->notes();
+    (*project)->lock_ = std::move(lock).value();
+    return project;
+}
+
+Status Project::lockForChange() {
+    if (holdsLock()) return {};
+    auto lock = ProjectLock::acquire(path_);
+    if (!lock) return lock.error();
+    notes_ = (*lock)->notes();
+    lock_ = std::move(lock).value();
+    return {};
+}
+
+bool Project::holdsLock() const { return lock_ && lock_->projectPath() == path_; }
+
 Status Project::save(const Progress& progress) { return saveAs(path_, progress); }
 
 Status Project::saveAs(const QString& path, const Progress& progress) {
@@ -81,6 +108,13 @@ Status Project::saveAs(const QString& path, const Progress& progress) {
     const QString tmp = dir.filePath(QStringLiteral(".%1.tmp-%2")
                                          .arg(target.fileName())
                                          .arg(QRandomGenerator::global()->generate64(), 16, 16, QLatin1Char('0')));
+    // Every save holds the target's write lock: this project's own, or one taken for the save.
+    std::unique_ptr<ProjectLock> saveLock;
+    if (!lock_ || lock_->projectPath() != absolute) {
+        auto acquired = ProjectLock::acquire(absolute, ProjectLock::StaleSaves::Leave);
+        if (!acquired) return makeError(QStringLiteral("cannot save '%1': %2").arg(path, acquired.message()));
+        saveLock = std::move(acquired).value();
+    }
     const ProjectMeta previous = meta_;
     meta_.appVersion = appVersion();
     meta_.modified = nowUtc();
@@ -103,7 +137,9 @@ Status Project::saveAs(const QString& path, const Progress& progress) {
     }
     syncPath(dir.absolutePath());
     path_ = given.isSymLink() ? given.absoluteFilePath() : absolute;
-    ProjectFile::rebind(*this, path_);
+    meta_.formatVersion = kFormatVersion;  // a version-1 project is upgraded by its first save
+    if (lock_ && saveLock) lock_ = std::move(saveLock);  // Save As: the held lock moves to the new file
+    ProjectFile::rebind(*this, absolute);
     modified_ = false;
     return {};
 }

@@ -18,6 +18,8 @@
 
 namespace athlos {
 
+class ProjectLock;
+
 struct ProjectMeta {
     int formatVersion = 1;
     QString appVersion;       // app that last wrote the file
@@ -39,13 +41,25 @@ struct ItemPath {
 
 class Project {
 public:
-    static constexpr int kFormatVersion = 1;
+    // 2: fixed-length strings, HDF5 1.10 file format (metadata checksums), Fletcher32 on every
+    // non-empty dataset. Version-1 files are read and upgraded when saved.
+    static constexpr int kFormatVersion = 2;
 
     // A new, empty project bound to path; nothing is written until save().
     static std::unique_ptr<Project> create(const QString& path, const QString& sport = {});
     // Opens an existing file: structure and metadata only. Refuses newer format versions and
     // damaged files with a message naming the file.
     static Expected<std::unique_ptr<Project>> open(const QString& path);
+
+    // Opens an existing file to change it: takes the project's write lock first (a second writer
+    // is refused with a message naming the holder; see ProjectLock), deals with stale temporary
+    // files of a killed save (notes()), then opens. The lock is held until the Project is destroyed.
+    static Expected<std::unique_ptr<Project>> openForChange(const QString& path);
+    // Takes the write lock for this project's path (e.g. for a new project in the GUI).
+    Status lockForChange();
+    bool holdsLock() const;
+    // What opening found and did that the user should know (stale saves recovered or removed).
+    const QStringList& notes() const { return notes_; }
 
     ~Project();
     Project(const Project&) = delete;
@@ -108,6 +122,8 @@ private:
     QStringList annotationClasses_;
     QJsonArray pipelineHistory_;
     bool modified_ = false;
+    std::unique_ptr<ProjectLock> lock_;
+    QStringList notes_;
 };
 
 }  // namespace athlos

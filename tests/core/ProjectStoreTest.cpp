@@ -295,13 +295,25 @@ TEST_F(ProjectStoreTest, CrashDuringSaveLeavesThePreviousFile) {
     ASSERT_TRUE(WIFEXITED(status));
     ASSERT_EQ(WEXITSTATUS(status), 3);
     EXPECT_EQ(fileBytes(path_), before);
-    // The dead process's temporary file remains (nobody could delete it), but it is not the project.
-    const QStringList stray = test::strayFiles(dir_.path(), {QFileInfo(path_).fileName()});
-    ASSERT_EQ(stray.size(), 1);
-    EXPECT_TRUE(stray.front().startsWith(QLatin1Char('.') + QFileInfo(path_).fileName() + QStringLiteral(".tmp-")));
+    // The dead process's temporary file and lock remain (nobody could delete them), but they are
+    // not the project.
+    QStringList stray = test::strayFiles(dir_.path(), {QFileInfo(path_).fileName()});
+    stray.sort();
+    ASSERT_EQ(stray.size(), 2);
+    EXPECT_EQ(stray[0], QLatin1Char('.') + QFileInfo(path_).fileName() + QStringLiteral(".lock"));
+    EXPECT_TRUE(stray[1].startsWith(QLatin1Char('.') + QFileInfo(path_).fileName() + QStringLiteral(".tmp-")));
     auto opened = reopen(path_);
     ASSERT_TRUE(opened);
     EXPECT_EQ(opened->stream(QStringLiteral("run3/big")), nullptr);
+    // The next writer takes over the dead process's lock and removes its unfinished save, saying so.
+    {
+        auto writer = Project::openForChange(path_);
+        ASSERT_TRUE(writer.ok()) << writer.message().toStdString();
+        ASSERT_EQ((*writer)->notes().size(), 1);
+        EXPECT_TRUE((*writer)->notes()[0].contains(QStringLiteral("removed"))) << (*writer)->notes()[0].toStdString();
+    }
+    EXPECT_TRUE(test::strayFiles(dir_.path(), {QFileInfo(path_).fileName()}).isEmpty());
+    EXPECT_EQ(fileBytes(path_), before);
 }
 
 }  // namespace

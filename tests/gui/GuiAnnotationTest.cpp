@@ -28,6 +28,7 @@ private slots:
     void shiftDragCreatesAndDeleteRemoves();
     void reviewAcceptsAndRejects();
     void replacedByAProcessorDropsUndo();
+    void processorAnnotationsAreJournaled();
     void autosaveWritesTheFileAndDropsTheJournal();
     void editsRoundTripThroughJson();
 
@@ -104,6 +105,8 @@ void GuiAnnotationTest::editUndoRedoSaveReopen()
     QVERIFY(!QFileInfo::exists(AnnotationJournal::pathFor(path)));  // the save has it all
     QCOMPARE(annotationsOf(path, rec), expected);
 
+    // One writer per project: the first window lets go of it before the second opens it.
+    window.setProject(nullptr);
     MainWindow reopened;
     reopened.setInteractive(false);
     QVERIFY(reopened.openProject(path));
@@ -263,10 +266,45 @@ void GuiAnnotationTest::replacedByAProcessorDropsUndo()
     QVERIFY(editor->create(QStringLiteral("run1"), 5.0, 7.0));
     QCOMPARE(editor->undoStack()->count(), 1);
     QSignalSpy changed(editor, &AnnotationEditor::annotationsChanged);
-    editor->annotationsReplaced({QStringLiteral("run1")});
+    const QByteArray digest = AnnotationJournal::stateDigest(*window.project());
+    std::map<QString, Annotations> before{{QStringLiteral("run1"), window.project()->recording(QStringLiteral("run1"))->annotations}};
+    editor->annotationsReplaced({QStringLiteral("run1")}, before, digest);
     QCOMPARE(editor->undoStack()->count(), 0);
     QCOMPARE(changed.count(), 1);
     QCOMPARE(changed.front().front().toString(), QStringLiteral("run1"));
+}
+
+// Annotations a processor run wrote in the GUI are journaled like manual edits: after a crash the
+// journal brings them back onto the file as it was last saved.
+void GuiAnnotationTest::processorAnnotationsAreJournaled()
+{
+    const QString path = saveProject(QStringLiteral("journaled.athlos"));
+    QVERIFY(!path.isEmpty());
+    Annotations predicted;
+    {
+        MainWindow window;
+        window.setInteractive(false);
+        window.setAutosaveDelay(0);
+        QVERIFY(window.openProject(path));
+        Project* project = window.project();
+        const QByteArray digest = AnnotationJournal::stateDigest(*project);
+        std::map<QString, Annotations> before{{QStringLiteral("run1"), project->recording(QStringLiteral("run1"))->annotations}};
+        // What runProcessor does with an annotation output: replace the predicted ones.
+        Annotations& list = project->recording(QStringLiteral("run1"))->annotations;
+        list.push_back({QStringLiteral("stride"), 1.0, 1.5, QStringLiteral("run1/strides"), 0.75, QStringLiteral("gait-events")});
+        list.push_back({QStringLiteral("stride"), 1.5, 2.0, QStringLiteral("run1/strides"), 0.5, QStringLiteral("gait-events")});
+        predicted = list;
+        window.annotationEditor()->annotationsReplaced({QStringLiteral("run1")}, before, digest);
+        QVERIFY(AnnotationJournal::hasPendingEdits(path));
+        window.project()->setModified(false);  // "crash": leave without saving
+    }
+    auto reopened = Project::open(path);
+    QVERIFY(reopened);
+    QVERIFY(AnnotationJournal::belongsTo(**reopened));
+    auto replayed = AnnotationJournal::replay(**reopened);
+    QVERIFY2(replayed, qPrintable(replayed ? QString() : replayed.message()));
+    QCOMPARE(*replayed, 1);
+    QVERIFY((*reopened)->recording(QStringLiteral("run1"))->annotations == predicted);
 }
 
 void GuiAnnotationTest::autosaveWritesTheFileAndDropsTheJournal()
