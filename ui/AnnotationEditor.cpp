@@ -142,10 +142,20 @@ Status AnnotationEditor::addClass(const QString& name)
     return {};
 }
 
-void AnnotationEditor::annotationsReplaced(const QStringList& recordings)
+void AnnotationEditor::annotationsReplaced(const QStringList& recordings, const std::map<QString, Annotations>& before,
+                                           const QByteArray& baseDigest)
 {
     undoStack_->clear();
-    for (const QString& recording : recordings) emit annotationsChanged(recording);
+    for (const QString& recording : recordings) {
+        const Recording* rec = project_ ? project_->recording(recording) : nullptr;
+        const auto old = before.find(recording);
+        const Annotations previous = old == before.end() ? Annotations{} : old->second;
+        if (rec && rec->annotations != previous) {
+            const AnnotationEdit edit = AnnotationEdit::replaceAll(recording, previous, rec->annotations);
+            if (Status journaled = journal_.append(edit, baseDigest); !journaled) emit errorOccurred(journaled.message());
+        }
+        emit annotationsChanged(recording);
+    }
 }
 
 void AnnotationEditor::perform(const AnnotationEdit& edit)

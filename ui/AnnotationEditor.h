@@ -7,6 +7,7 @@
 
 #include <QObject>
 #include <QString>
+#include <map>
 #include <QStringList>
 
 class QUndoStack;
@@ -52,9 +53,12 @@ public:
     void setLocked(bool locked) { locked_ = locked; }
     bool isLocked() const { return locked_; }
 
-    // A processor replaced annotations of these recordings outside the editor: the undo steps refer
-    // to the old lists and are dropped, and the views redraw.
-    void annotationsReplaced(const QStringList& recordings);
+    // A processor replaced annotations of these recordings outside the editor. Each changed list is
+    // journaled (as one "replace-all" edit against `before`, the lists before the run, whose
+    // annotation state had digest baseDigest), so a crash before the next save loses nothing; the
+    // undo steps refer to the old lists and are dropped, and the views redraw.
+    void annotationsReplaced(const QStringList& recordings, const std::map<QString, Annotations>& before,
+                             const QByteArray& baseDigest);
 
     // Applies edit to the project, journals it, tells the views. For AnnotationCommand.
     void perform(const AnnotationEdit& edit);

@@ -1,5 +1,7 @@
 #include "ui/ProcessorLauncher.h"
 
+#include "core/model/AnnotationJournal.h"
+
 #include "core/model/Project.h"
 #include "core/processing/ProcessorRegistry.h"
 #include "ui/AnnotationEditor.h"
@@ -33,6 +35,11 @@ Expected<RunOutcome> ProcessorLauncher::run(const RunRequest& request)
     window_.panels_->waitForLoads();
     window_.panels_->releaseStreamsOf(request.output);
 
+    // The annotation state before the run, for the journal entries of what the run changes.
+    std::map<QString, Annotations> annotationsBefore;
+    for (const auto& [name, recording] : project->recordings()) annotationsBefore.emplace(name, recording.annotations);
+    const QByteArray digestBefore = AnnotationJournal::stateDigest(*project);
+
     auto result = std::make_shared<std::optional<Expected<RunOutcome>>>();
     window_.setBusy(true);
     const BackgroundTask::Outcome outcome = BackgroundTask::run(
@@ -57,7 +64,7 @@ Expected<RunOutcome> ProcessorLauncher::run(const RunRequest& request)
         QStringList recordings;
         for (const QString& path : run->annotated) recordings << ItemPath::parse(path).recording;
         recordings.removeDuplicates();
-        window_.annotationEditor()->annotationsReplaced(recordings);
+        window_.annotationEditor()->annotationsReplaced(recordings, annotationsBefore, digestBefore);
     }
     if (!run->written.isEmpty()) window_.selectItem(run->written.front());
     window_.statusBar()->showMessage(tr("%1 wrote %2").arg(processor->name(), run->written.join(QStringLiteral(", "))), 8000);

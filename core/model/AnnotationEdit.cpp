@@ -2,6 +2,8 @@
 
 #include "core/model/Project.h"
 
+#include <QJsonArray>
+
 namespace athlos {
 
 namespace {
@@ -12,6 +14,7 @@ const char* kindName(AnnotationEdit::Kind kind)
     case AnnotationEdit::Kind::Remove: return "remove";
     case AnnotationEdit::Kind::Replace: return "replace";
     case AnnotationEdit::Kind::AddClass: return "add-class";
+    case AnnotationEdit::Kind::ReplaceAll: return "replace-all";
     }
     return "";
 }
@@ -75,6 +78,16 @@ AnnotationEdit AnnotationEdit::addClass(QString name)
     return e;
 }
 
+AnnotationEdit AnnotationEdit::replaceAll(QString recording, Annotations before, Annotations after)
+{
+    AnnotationEdit e;
+    e.kind = Kind::ReplaceAll;
+    e.recording = std::move(recording);
+    e.beforeAll = std::move(before);
+    e.afterAll = std::move(after);
+    return e;
+}
+
 AnnotationEdit AnnotationEdit::inverse() const
 {
     AnnotationEdit e = *this;
@@ -91,6 +104,9 @@ AnnotationEdit AnnotationEdit::inverse() const
         break;
     case Kind::Replace:
         std::swap(e.before, e.after);
+        break;
+    case Kind::ReplaceAll:
+        std::swap(e.beforeAll, e.afterAll);
         break;
     case Kind::AddClass:
         break;
@@ -123,6 +139,10 @@ Status AnnotationEdit::apply(Project& project) const
         if (kind == Kind::Remove) list.erase(list.begin() + index);
         else list[std::size_t(index)] = after;
         break;
+    case Kind::ReplaceAll:
+        if (list != beforeAll) return makeError(QStringLiteral("the annotations of '%1' do not match the edit").arg(recording));
+        list = afterAll;
+        break;
     case Kind::AddClass:
         break;
     }
@@ -138,6 +158,16 @@ QJsonObject AnnotationEdit::toJson() const
         return json;
     }
     json[QStringLiteral("rec")] = recording;
+    if (kind == Kind::ReplaceAll) {
+        auto list = [](const Annotations& annotations) {
+            QJsonArray array;
+            for (const Annotation& a : annotations) array.append(annotationToJson(a));
+            return array;
+        };
+        json[QStringLiteral("before")] = list(beforeAll);
+        json[QStringLiteral("after")] = list(afterAll);
+        return json;
+    }
     json[QStringLiteral("index")] = index;
     if (kind != Kind::Insert) json[QStringLiteral("before")] = annotationToJson(before);
     if (kind != Kind::Remove) json[QStringLiteral("after")] = annotationToJson(after);
@@ -152,10 +182,16 @@ Expected<AnnotationEdit> AnnotationEdit::fromJson(const QJsonObject& json)
     else if (op == QLatin1String("remove")) e.kind = Kind::Remove;
     else if (op == QLatin1String("replace")) e.kind = Kind::Replace;
     else if (op == QLatin1String("add-class")) e.kind = Kind::AddClass;
+    else if (op == QLatin1String("replace-all")) e.kind = Kind::ReplaceAll;
     else return makeError(QStringLiteral("unknown annotation edit '%1'").arg(op));
     e.className = json.value(QStringLiteral("class")).toString();
     e.recording = json.value(QStringLiteral("rec")).toString();
     e.index = json.value(QStringLiteral("index")).toInt(-1);
+    if (e.kind == Kind::ReplaceAll) {
+        for (const auto& value : json.value(QStringLiteral("before")).toArray()) e.beforeAll.push_back(annotationFromJson(value.toObject()));
+        for (const auto& value : json.value(QStringLiteral("after")).toArray()) e.afterAll.push_back(annotationFromJson(value.toObject()));
+        return e;
+    }
     if (json.contains(QStringLiteral("before"))) e.before = annotationFromJson(json.value(QStringLiteral("before")).toObject());
     if (json.contains(QStringLiteral("after"))) e.after = annotationFromJson(json.value(QStringLiteral("after")).toObject());
     return e;

@@ -12,7 +12,9 @@ namespace athlos {
 class Project;
 
 struct AnnotationEdit {
-    enum class Kind { Insert, Remove, Replace, AddClass };
+    // ReplaceAll: a recording's whole list at once (what a processor run that writes predicted
+    // annotations changes), journaled like a manual edit.
+    enum class Kind { Insert, Remove, Replace, AddClass, ReplaceAll };
 
     Kind kind = Kind::Insert;
     QString recording;
@@ -20,11 +22,13 @@ struct AnnotationEdit {
     Annotation before;    // Remove, Replace
     Annotation after;     // Insert, Replace
     QString className;    // AddClass
+    Annotations beforeAll, afterAll;  // ReplaceAll
 
     static AnnotationEdit insert(QString recording, int index, Annotation annotation);
     static AnnotationEdit remove(QString recording, int index, Annotation annotation);
     static AnnotationEdit replace(QString recording, int index, Annotation before, Annotation after);
     static AnnotationEdit addClass(QString name);
+    static AnnotationEdit replaceAll(QString recording, Annotations before, Annotations after);
 
     // Insert ↔ Remove, Replace swaps before/after. AddClass has no inverse (classes only grow).
     AnnotationEdit inverse() const;

@@ -105,12 +105,17 @@ void AnnotationJournal::setProjectPath(const QString& projectPath)
 
 Status AnnotationJournal::append(const AnnotationEdit& edit, const Project* base)
 {
+    return append(edit, base ? stateDigest(*base) : QByteArray());
+}
+
+Status AnnotationJournal::append(const AnnotationEdit& edit, const QByteArray& baseDigest)
+{
     if (file_.fileName().isEmpty()) return makeError(QStringLiteral("the annotation journal has no file"));
     if (!file_.isOpen() && !file_.open(QIODevice::WriteOnly | QIODevice::Append))
         return makeError(QStringLiteral("%1: %2").arg(file_.fileName(), file_.errorString()));
     QByteArray line;
-    if (base && file_.size() == 0) {
-        const QJsonObject header{{kHeaderKey, 1}, {QStringLiteral("base"), QString::fromLatin1(stateDigest(*base))}};
+    if (!baseDigest.isEmpty() && file_.size() == 0) {
+        const QJsonObject header{{kHeaderKey, 1}, {QStringLiteral("base"), QString::fromLatin1(baseDigest)}};
         line = QJsonDocument(header).toJson(QJsonDocument::Compact) + '\n';
     }
     line += QJsonDocument(edit.toJson()).toJson(QJsonDocument::Compact);

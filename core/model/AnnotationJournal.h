@@ -45,6 +45,9 @@ public:
     // One line, flushed and fsync'd. The first edit of a journal file also writes the digest of
     // base (the state the edit applies to) when given.
     Status append(const AnnotationEdit& edit, const Project* base = nullptr);
+    // The same with the base state's digest computed beforehand (the project has changed since,
+    // e.g. by a processor run).
+    Status append(const AnnotationEdit& edit, const QByteArray& baseDigest);
     // After a successful save: the file has everything.
     void discard();
 
