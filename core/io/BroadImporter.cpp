@@ -1,6 +1,8 @@
 #include "core/io/BroadImporter.h"
 
 #include "core/store/Hdf5Util.h"
+#include "core/store/VerifiedFiles.h"
+#include "core/util/IsolatedRun.h"
 
 #include <cmath>
 #include <cstring>
@@ -50,6 +52,13 @@ public:
             (rank == 2 && dims[1] != hsize_t(columns)) || (rank == 1 && columns != 1))
             return makeError(QStringLiteral("%1: dataset '%2' should be N×%3").arg(path_, QLatin1String(name)).arg(columns));
         rows = dims[0];
+        // A damaged extent must not become a huge allocation: the file (deflate at most ~1032:1)
+        // cannot hold more than this.
+        hsize_t fileSize = 0;
+        H5Fget_filesize(file_, &fileSize);
+        if (static_cast<long double>(rows) * columns * 8.0L > static_cast<long double>(fileSize) * 1100.0L + 4096.0L)
+            return makeError(QStringLiteral("%1: dataset '%2' claims %3 rows, more than the file can hold (damaged file?)")
+                                 .arg(path_, QLatin1String(name)).arg(rows));
         std::vector<double> out(rows * hsize_t(columns));
         Handle type(H5Dget_type(ds), H5Tclose);
         herr_t status = -1;
@@ -133,16 +142,14 @@ QString BroadImporter::description() const {
     return QStringLiteral("BROAD benchmark trial (HDF5): IMU and optical reference orientation");
 }
 
-bool BroadImporter::canRead(const QString& file, const QByteArray& head) const {
-    if (!hasSignature(head))
-        return false;
-    const auto guard = h5::lock();  // HDF5 may be built without thread safety; the store shares this lock
-    Handle f(H5Fopen(file.toLocal8Bit().constData(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
-    return f.valid() && hasDataset(f, "imu_acc");
-}
+// BROAD is the only HDF5 format Athlos imports, so the signature decides; nothing in the file is
+// parsed before read() has checked it in isolation.
+bool BroadImporter::canRead(const QString&, const QByteArray& head) const { return hasSignature(head); }
 
-Expected<ImportResult> BroadImporter::read(const QString& file, const ImportOptions&, const Progress& progress) const {
-    const auto guard = h5::lock();
+namespace {
+
+// Reads a BROAD file; the caller holds the HDF5 lock.
+Expected<ImportResult> readBroad(const QString& file, const Progress& progress) {
     BroadFile broad(file);
     if (Status s = broad.open(); !s)
         return s.error();
@@ -217,6 +224,25 @@ Expected<ImportResult> BroadImporter::read(const QString& file, const ImportOpti
     result.items.push_back({QStringLiteral("imu"), Stream(std::move(imuInfo), std::move(*imu))});
     result.items.push_back({QStringLiteral("reference"), Stream(std::move(referenceInfo), std::move(*reference))});
     return result;
+}
+
+}  // namespace
+
+Expected<ImportResult> BroadImporter::read(const QString& file, const ImportOptions&, const Progress& progress) const {
+    const auto guard = h5::lock();  // HDF5 may be built without thread safety; the store shares this lock
+    // libhdf5 can crash or hang on damaged files: read the whole file in a child process first.
+    if (!VerifiedFiles::contains(file)) {
+        const Status checked = runIsolated(
+            QStringLiteral("'%1'").arg(file),
+            [&]() -> Status {
+                auto result = readBroad(file, Progress{});
+                return result ? Status{} : Status(result.error());
+            },
+            IsolatedRunParams{isolatedTimeoutFor(VerifiedFiles::sizeOf(file)), 0});
+        if (!checked) return checked.error();
+        VerifiedFiles::remember(file);
+    }
+    return readBroad(file, progress);
 }
 
 }  // namespace athlos

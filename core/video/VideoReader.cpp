@@ -1,5 +1,7 @@
 #include "core/video/VideoReader.h"
 
+#include "core/util/IsolatedRun.h"
+
 #include "core/video/VideoContainerProbe.h"
 
 #include <QCoreApplication>
@@ -46,6 +48,28 @@ Expected<std::unique_ptr<VideoReader>> VideoReader::open(const QString& path, co
     const QFileInfo fileInfo(path);
     if (!fileInfo.exists()) return makeError(QCoreApplication::translate("athlos::VideoReader", "video '%1' does not exist").arg(path));
     if (!fileInfo.isFile() || !fileInfo.isReadable()) return makeError(QCoreApplication::translate("athlos::VideoReader", "video '%1' is not a readable file").arg(path));
+    // FFmpeg's demuxers and decoders parse untrusted bytes: a damaged file is first opened, and its
+    // first, middle and last frames decoded, in a child process, so a crash or hang there is a
+    // refusal here. Then the same open runs in this process.
+    Status checked = runIsolated(
+        QCoreApplication::translate("athlos::VideoReader", "video '%1'").arg(path),
+        [&]() -> Status {
+            auto reader = openUnchecked(path, params);
+            if (!reader) return reader.error();
+            // Only a crash or a hang matters here: the frame count of some containers is an
+            // estimate, so a frame that cannot be decoded is the reader's business later.
+            const long long frames = (*reader)->info().frames;
+            for (const long long index : {frames / 2, frames - 1}) (void)(*reader)->frameAt(index);
+            return {};
+        },
+        IsolatedRunParams{isolatedTimeoutFor(fileInfo.size(), std::chrono::seconds(30)), 0});
+    if (!checked) return checked.error();
+    return openUnchecked(path, params);
+}
+
+Expected<std::unique_ptr<VideoReader>> VideoReader::openUnchecked(const QString& path, const Params& params)
+{
+    const QFileInfo fileInfo(path);
 
     quietFfmpeg();
     // OpenCV reports a failed open on stderr as well; the error below says it in one line.
@@ -85,6 +109,12 @@ Expected<std::unique_ptr<VideoReader>> VideoReader::open(const QString& path, co
     if (!(reader->streamFps_ > 0) || !std::isfinite(reader->streamFps_))
         return makeError(QCoreApplication::translate("athlos::VideoReader", "'%1': the video stream has no frame rate").arg(path));
     if (info.frames <= 0) return makeError(QCoreApplication::translate("athlos::VideoReader", "'%1': the video has no frames").arg(path));
+    if (info.width <= 0 || info.height <= 0 || info.width > kMaxFrameSide || info.height > kMaxFrameSide)
+        return makeError(QCoreApplication::translate("athlos::VideoReader", "'%1': frame size %2×%3 is outside 1…%4 pixels per side")
+                             .arg(path).arg(info.width).arg(info.height).arg(kMaxFrameSide));
+    if (info.frames > kMaxFrames)
+        return makeError(QCoreApplication::translate("athlos::VideoReader", "'%1': %2 frames is more than a recording can have (limit %3)")
+                             .arg(path).arg(info.frames).arg(kMaxFrames));
     // The first frame must decode: a stream FFmpeg can open but not decode fails here.
     if (!reader->grab())
         return makeError(QCoreApplication::translate("athlos::VideoReader", "'%1': the first frame of the '%2' video stream cannot be decoded (no working decoder in "

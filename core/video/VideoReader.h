@@ -45,8 +45,13 @@ public:
         int maxForwardDecode = 48;       // decode on instead of seeking when at most this far ahead
     };
 
+    // Limits of what is accepted as a video (a damaged header must not allocate gigabytes).
+    static constexpr int kMaxFrameSide = 8192;                   // pixels
+    static constexpr long long kMaxFrames = 24LL * 3600 * 240;   // a day at 240 fps
+
     // Opens path. Errors name the file: missing, not a video, no decoder for the codec (naming the
-    // FourCC), zero frames.
+    // FourCC), zero frames, implausible sizes; a file that crashes or hangs FFmpeg (checked in a
+    // child process first) is refused.
     static Expected<std::unique_ptr<VideoReader>> open(const QString& path, const Params& params);
     static Expected<std::unique_ptr<VideoReader>> open(const QString& path) { return open(path, Params{}); }
     ~VideoReader();
@@ -65,6 +70,7 @@ public:
     long long decodedCount() const { return decoded_; }
 
 private:
+    static Expected<std::unique_ptr<VideoReader>> openUnchecked(const QString& path, const Params& params);
     VideoReader() = default;
     // Index of the frame last grabbed, from its timestamp; -1 if unknown.
     long long grabbedIndex() const;
