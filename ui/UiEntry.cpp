@@ -5,11 +5,11 @@
 #include "ui/AnnotationLayer.h"
 #include "ui/MainWindow.h"
 #include "ui/TimeController.h"
-#include "ui/ToolRegistry.h"
 #include "ui/TimeSeriesPanel.h"
+#include "ui/ToolRegistry.h"
 #include "ui/TrajectoryPanel.h"
-#include "ui/wizards/PlaybackTracks.h"
-#include "ui/wizards/PlaybackView.h"
+#include "ui/views/PlaybackTracks.h"
+#include "ui/views/PlaybackView.h"
 
 #include <QApplication>
 #include <QCoreApplication>

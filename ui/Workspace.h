@@ -1,6 +1,6 @@
 #pragma once
 // What tools, wizards and views may use from the main window, without depending on it.
-// MainWindow implements it; wizards (ui/wizards/) and tool windows receive a Workspace&.
+// MainWindow implements it; wizards (ui/wizards/) and views (ui/views/) receive a Workspace&.
 #include "core/processing/ProcessorRunner.h"
 #include "core/util/Expected.h"
 

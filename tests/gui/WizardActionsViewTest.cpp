@@ -8,8 +8,8 @@
 #include "ui/TimeController.h"
 #include "ui/ToolRegistry.h"
 #include "ui/UiEntry.h"
-#include "ui/wizards/ActionTimeline.h"
-#include "ui/wizards/ActionsView.h"
+#include "ui/views/ActionTimeline.h"
+#include "ui/views/ActionsView.h"
 
 #include <QDockWidget>
 #include <QImage>

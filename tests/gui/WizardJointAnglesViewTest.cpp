@@ -6,7 +6,7 @@
 #include "ui/MainWindow.h"
 #include "ui/TimeController.h"
 #include "ui/ToolRegistry.h"
-#include "ui/wizards/JointAnglesView.h"
+#include "ui/views/JointAnglesView.h"
 
 #include <QDockWidget>
 #include <QTemporaryDir>

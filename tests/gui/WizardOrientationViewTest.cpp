@@ -6,7 +6,7 @@
 #include "core/math/OrientationError.h"
 #include "ui/MainWindow.h"
 #include "ui/ToolRegistry.h"
-#include "ui/wizards/OrientationAnglesView.h"
+#include "ui/views/OrientationAnglesView.h"
 
 #include <QComboBox>
 #include <QTemporaryDir>

@@ -7,9 +7,9 @@
 #include "ui/TimeController.h"
 #include "ui/ToolRegistry.h"
 #include "ui/UiEntry.h"
-#include "ui/wizards/PlaybackCanvas.h"
-#include "ui/wizards/PlaybackTracks.h"
-#include "ui/wizards/PlaybackView.h"
+#include "ui/views/PlaybackCanvas.h"
+#include "ui/views/PlaybackTracks.h"
+#include "ui/views/PlaybackView.h"
 
 #include <QComboBox>
 #include <QImage>

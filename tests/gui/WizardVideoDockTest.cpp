@@ -8,7 +8,7 @@
 #include "ui/MainWindow.h"
 #include "ui/TimeController.h"
 #include "ui/ToolRegistry.h"
-#include "ui/wizards/VideoDock.h"
+#include "ui/views/VideoDock.h"
 
 #include <QDoubleSpinBox>
 #include <QLabel>

@@ -6,7 +6,7 @@
 #include "ui/PlotStyle.h"
 #include "ui/ToolRegistry.h"
 #include "ui/Workspace.h"
-#include "ui/wizards/VenuePlot.h"
+#include "ui/venue/VenuePlot.h"
 #include "ui/wizards/WizardPages.h"
 #include "ui/wizards/WizardParameterForm.h"
 

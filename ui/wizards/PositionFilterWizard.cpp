@@ -4,11 +4,11 @@
 #include "ui/PlotStyle.h"
 #include "ui/ToolRegistry.h"
 #include "ui/Workspace.h"
-#include "ui/wizards/WizardParameterForm.h"
-#include "ui/wizards/EqualAspectFrame.h"
-#include "ui/wizards/TrackOverlay.h"
-#include "ui/wizards/TrackTrajectoryView.h"
+#include "ui/venue/EqualAspectFrame.h"
+#include "ui/venue/TrackOverlay.h"
+#include "ui/views/TrackTrajectoryView.h"
 #include "ui/wizards/WizardPages.h"
+#include "ui/wizards/WizardParameterForm.h"
 
 #include <QCheckBox>
 #include <QComboBox>

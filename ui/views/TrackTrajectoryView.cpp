@@ -1,11 +1,11 @@
-#include "ui/wizards/TrackTrajectoryView.h"
+#include "ui/views/TrackTrajectoryView.h"
 
 #include "core/model/Project.h"
 #include "ui/MainWindow.h"
 #include "ui/PlotStyle.h"
 #include "ui/ToolRegistry.h"
-#include "ui/wizards/EqualAspectFrame.h"
-#include "ui/wizards/TrackOverlay.h"
+#include "ui/venue/EqualAspectFrame.h"
+#include "ui/venue/TrackOverlay.h"
 
 #include <QCoreApplication>
 #include <QDockWidget>

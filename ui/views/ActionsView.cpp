@@ -1,4 +1,4 @@
-#include "ui/wizards/ActionsView.h"
+#include "ui/views/ActionsView.h"
 
 #include "core/model/Project.h"
 #include "ui/AnnotationEditor.h"
@@ -6,7 +6,7 @@
 #include "ui/TimeController.h"
 #include "ui/ToolRegistry.h"
 #include "ui/Workspace.h"
-#include "ui/wizards/ActionTimeline.h"
+#include "ui/views/ActionTimeline.h"
 
 #include <QComboBox>
 #include <QCoreApplication>

@@ -1,4 +1,4 @@
-#include "ui/wizards/JointAnglesView.h"
+#include "ui/views/JointAnglesView.h"
 
 #include "core/model/Project.h"
 #include "ui/MainWindow.h"

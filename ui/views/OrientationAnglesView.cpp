@@ -1,4 +1,4 @@
-#include "ui/wizards/OrientationAnglesView.h"
+#include "ui/views/OrientationAnglesView.h"
 
 #include "core/math/EulerAngles.h"
 #include "core/model/Project.h"

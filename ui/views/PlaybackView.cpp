@@ -1,12 +1,12 @@
-#include "ui/wizards/PlaybackView.h"
+#include "ui/views/PlaybackView.h"
 
 #include "core/model/Project.h"
 #include "ui/MainWindow.h"
 #include "ui/TimeController.h"
 #include "ui/ToolRegistry.h"
 #include "ui/Workspace.h"
-#include "ui/wizards/PlaybackCanvas.h"
-#include "ui/wizards/PlaybackTracks.h"
+#include "ui/views/PlaybackCanvas.h"
+#include "ui/views/PlaybackTracks.h"
 
 #include <QComboBox>
 #include <QCoreApplication>

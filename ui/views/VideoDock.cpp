@@ -1,4 +1,4 @@
-#include "ui/wizards/VideoDock.h"
+#include "ui/views/VideoDock.h"
 
 #include "core/model/Project.h"
 #include "core/video/VideoReader.h"
@@ -6,7 +6,7 @@
 #include "ui/TimeController.h"
 #include "ui/ToolRegistry.h"
 #include "ui/Workspace.h"
-#include "ui/wizards/VideoDecodeWorker.h"
+#include "ui/views/VideoDecodeWorker.h"
 
 #include <QComboBox>
 #include <QCoreApplication>

@@ -6,7 +6,7 @@
 // metadata ("venue") and so persists with the project. Tool "View → Team playback…" (a dock) and
 // screenshot view "playback"; the built-in "trajectory" screenshot uses it for team recordings.
 #include "core/util/Expected.h"
-#include "ui/wizards/VenueDrawing.h"
+#include "ui/venue/VenueDrawing.h"
 
 #include <QPointer>
 #include <QRectF>
