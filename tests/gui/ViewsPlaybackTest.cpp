@@ -67,7 +67,7 @@ QColor pixelAt(const QImage& image, QPointF p) { return image.pixelColor(p.toPoi
 
 }  // namespace
 
-class WizardPlaybackViewTest : public QObject {
+class ViewsPlaybackTest : public QObject {
     Q_OBJECT
 
 private slots:
@@ -237,5 +237,5 @@ private:
     QTemporaryDir dir_;
 };
 
-QTEST_MAIN(WizardPlaybackViewTest)
-#include "WizardPlaybackViewTest.moc"
+QTEST_MAIN(ViewsPlaybackTest)
+#include "ViewsPlaybackTest.moc"
