@@ -2,10 +2,10 @@
 
 #include "core/model/Project.h"
 #include "core/video/VideoReader.h"
-#include "ui/MainWindow.h"
 #include "ui/TimeController.h"
 #include "ui/ToolRegistry.h"
 #include "ui/Workspace.h"
+#include "ui/WorkspaceNotifier.h"
 #include "ui/views/VideoDecodeWorker.h"
 
 #include <QComboBox>
@@ -167,8 +167,7 @@ VideoDock::VideoDock(Workspace& workspace, QWidget* parent) : QDockWidget(tr("Vi
     if (TimeController* time = workspace_.timeController())
         connect(time, &TimeController::cursorChanged, this, &VideoDock::onCursor);
     // The dock reads the project it was opened on: follow the window when it swaps projects.
-    if (auto* main = qobject_cast<MainWindow*>(workspace_.window()))
-        connect(main, &MainWindow::projectChanged, this, &VideoDock::reloadProject);
+    connect(workspace_.notifier(), &WorkspaceNotifier::projectChanged, this, &VideoDock::reloadProject);
     projectSeen_ = workspace_.project();
     reloadProject();
 }
@@ -440,8 +439,7 @@ void launchVideo(Workspace& workspace)
                                  QCoreApplication::translate(kContext, "Import a recording first; a video is attached to a recording."));
         return;
     }
-    QString recording;
-    if (auto* main = qobject_cast<MainWindow*>(parent)) recording = ItemPath::parse(main->currentItem()).recording;
+    QString recording = ItemPath::parse(workspace.currentItem()).recording;
     if (recording.isEmpty() || !project->recording(recording)) recording = project->recordingNames().front();
 
     const auto link = VideoLink::of(*project, recording);
@@ -471,9 +469,9 @@ void launchVideo(Workspace& workspace)
     (void)dock->setRecording(recording);
 }
 
-Status prepareVideoView(MainWindow& window)
+Status prepareVideoView(Workspace& workspace)
 {
-    Project* project = window.project();
+    Project* project = workspace.project();
     const QString recording = project ? VideoLink::firstLinkedRecording(*project) : QString();
     if (recording.isEmpty())
         return makeError(QCoreApplication::translate(kContext, "no recording in this project has a video; attach one with "
@@ -481,14 +479,14 @@ Status prepareVideoView(MainWindow& window)
     if (auto resolved = VideoLink::resolve(*project, recording); !resolved) return resolved.error();
     // Plot the recording's first stream so the cursor range is the recording's.
     if (const Recording* rec = project->recording(recording); rec && !rec->streams.empty())
-        window.selectItem(recording + QLatin1Char('/') + rec->streams.begin()->first);
-    window.waitForPlots();
-    auto* dock = new VideoDock(window, &window);
-    window.addDock(dock, Qt::RightDockWidgetArea);
-    window.resizeDocks({dock}, {window.width() * 2 / 5}, Qt::Horizontal);
+        workspace.selectItem(recording + QLatin1Char('/') + rec->streams.begin()->first);
+    workspace.waitForPlots();
+    auto* dock = new VideoDock(workspace, workspace.window());
+    workspace.addDock(dock, Qt::RightDockWidgetArea);
+    workspace.resizeDock(dock, workspace.window()->width() * 2 / 5, Qt::Horizontal);
     if (Status status = dock->setRecording(recording); !status) return status;
     // The cursor in the middle of the part of the recording the video covers.
-    TimeController* time = window.timeController();
+    TimeController* time = workspace.timeController();
     const auto link = VideoLink::of(*project, recording);
     auto reader = VideoReader::open(*VideoLink::resolve(*project, recording));
     if (time && link && reader) {
