@@ -7,6 +7,8 @@
 #include "ui/Workspace.h"
 #include "ui/WorkspaceNotifier.h"
 #include "ui/views/VideoDecodeWorker.h"
+#include "ui/views/VideoFrameView.h"
+#include "ui/views/VideoOffsetCommand.h"
 
 #include <QComboBox>
 #include <QCoreApplication>
@@ -16,78 +18,17 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMessageBox>
-#include <QPainter>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QThread>
-#include <QUndoCommand>
 #include <QUndoStack>
 #include <QVBoxLayout>
 
 #include <cmath>
-#include <functional>
 
 namespace athlos::ui {
 
-// The picture, scaled to fit with its aspect ratio, or a placeholder text.
-class VideoFrameView : public QWidget {
-public:
-    explicit VideoFrameView(QWidget* parent) : QWidget(parent)
-    {
-        setMinimumSize(160, 120);
-        setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
-    }
-    void setImage(const QImage& image)
-    {
-        image_ = image;
-        text_.clear();
-        update();
-    }
-    void setText(const QString& text)
-    {
-        image_ = {};
-        text_ = text;
-        update();
-    }
-    QSize sizeHint() const override { return {480, 270}; }
-
-protected:
-    void paintEvent(QPaintEvent*) override
-    {
-        QPainter painter(this);
-        painter.fillRect(rect(), QColor(24, 24, 28));
-        if (!image_.isNull()) {
-            QSize size = image_.size().scaled(this->size(), Qt::KeepAspectRatio);
-            const QRect target(QPoint((width() - size.width()) / 2, (height() - size.height()) / 2), size);
-            painter.setRenderHint(QPainter::SmoothPixmapTransform);
-            painter.drawImage(target, image_);
-        } else {
-            painter.setPen(QColor(200, 200, 200));
-            painter.drawText(rect().adjusted(12, 12, -12, -12), Qt::AlignCenter | Qt::TextWordWrap, text_);
-        }
-    }
-
-private:
-    QImage image_;
-    QString text_;
-};
-
 namespace {
-
-// An offset change, undoable in the dock.
-class OffsetCommand : public QUndoCommand {
-public:
-    OffsetCommand(std::function<void(double)> apply, double before, double after, const QString& text)
-        : QUndoCommand(text), apply_(std::move(apply)), before_(before), after_(after)
-    {
-    }
-    void undo() override { apply_(before_); }
-    void redo() override { apply_(after_); }
-
-private:
-    std::function<void(double)> apply_;
-    double before_, after_;
-};
 
 QString formatSeconds(double t) { return QString::number(t, 'f', 3); }
 
@@ -272,7 +213,7 @@ void VideoDock::setOffset(double offset)
     if (!link_ || !std::isfinite(offset)) return;
     const double before = link_->offset;
     if (offset == before) return;
-    undoStack_->push(new OffsetCommand([this](double value) { applyOffset(value); }, before, offset,
+    undoStack_->push(new VideoOffsetCommand([this](double value) { applyOffset(value); }, before, offset,
                                        tr("Video offset %1 s").arg(formatSeconds(offset))));
 }
 
