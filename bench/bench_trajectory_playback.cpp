@@ -9,9 +9,9 @@
 #include "plugins/team/SimulateTeamProcessor.h"
 #include "plugins/team/TeamSimulator.h"
 #include "ui/TimeController.h"
-#include "ui/wizards/PlaybackCanvas.h"
-#include "ui/wizards/PlaybackTracks.h"
-#include "ui/wizards/PlaybackView.h"
+#include "ui/views/PlaybackCanvas.h"
+#include "ui/views/PlaybackTracks.h"
+#include "ui/views/PlaybackView.h"
 
 #include <QApplication>
 #include <QDir>

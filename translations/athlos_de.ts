@@ -1358,6 +1358,10 @@
 <context>
     <name>athlos::ui::ParameterForm</name>
     <message>
+        <source>(not set)</source>
+        <translation>(nicht gesetzt)</translation>
+    </message>
+    <message>
         <source>This processor has no parameters.</source>
         <translation>Dieser Prozessor hat keine Parameter.</translation>
     </message>
@@ -1998,13 +2002,6 @@
     <message>
         <source>frame %1 / %2 · video %3 s</source>
         <translation>Bild %1 / %2 · Video %3 s</translation>
-    </message>
-</context>
-<context>
-    <name>athlos::ui::WizardParameterForm</name>
-    <message>
-        <source>(not set)</source>
-        <translation>(nicht gesetzt)</translation>
     </message>
 </context>
 </TS>

@@ -11,6 +11,7 @@
 #include "ui/TimeSeriesPanel.h"
 #include "ui/TrajectoryPanel.h"
 #include "ui/WindowActions.h"
+#include "ui/WorkspaceNotifier.h"
 
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -21,6 +22,7 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QStatusBar>
+#include <QTabWidget>
 #include <QTimer>
 #include <qcustomplot.h>
 
@@ -43,6 +45,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
 {
     setWindowIcon(QIcon(QStringLiteral(":/athlos/icons/athlos.svg")));
     setAcceptDrops(true);
+    notifier_ = new WorkspaceNotifier(this);
+    connect(this, &MainWindow::projectChanged, notifier_, &WorkspaceNotifier::projectChanged);
 
     // Order matters: the actions need the panels, the annotation editor and the session.
     panels_ = new PanelLayout(*this);
@@ -151,6 +155,11 @@ void MainWindow::addDock(QDockWidget* dock, Qt::DockWidgetArea area)
     dock->raise();
 }
 
+void MainWindow::resizeDock(QDockWidget* dock, int size, Qt::Orientation orientation)
+{
+    resizeDocks({dock}, {size}, orientation);
+}
+
 // --- panels: PanelLayout ------------------------------------------------------------------------
 
 TimeController* MainWindow::timeController() const { return panels_->timeController(); }
@@ -161,6 +170,11 @@ void MainWindow::restoreLayout() { panels_->restoreLayout(); }
 void MainWindow::showTimeSeriesView() { panels_->showTimeSeriesView(); }
 void MainWindow::showTrajectoryView() { panels_->showTrajectoryView(); }
 void MainWindow::waitForPlots() { panels_->waitForPlots(); }
+
+void MainWindow::addView(QWidget* view, const QString& title)
+{
+    panels_->tabs()->setCurrentIndex(panels_->tabs()->addTab(view, title));
+}
 TimeSeriesPanel* MainWindow::timeSeriesPanel() const { return panels_->timeSeries(); }
 TrajectoryPanel* MainWindow::trajectoryPanel() const { return panels_->trajectory(); }
 

@@ -37,6 +37,7 @@ class TimeController;
 class TimeSeriesPanel;
 class TrajectoryPanel;
 class WindowActions;
+class WorkspaceNotifier;
 
 class MainWindow : public QMainWindow, public Workspace {
     Q_OBJECT
@@ -60,6 +61,10 @@ public:
     Expected<RunOutcome> runProcessor(const RunRequest& request) override;
     void projectModified() override;
     void showItem(const QString& path) override;
+    void addView(QWidget* view, const QString& title) override;
+    void resizeDock(QDockWidget* dock, int size, Qt::Orientation orientation) override;
+    // Emits projectChanged() whenever the window does.
+    WorkspaceNotifier* notifier() override { return notifier_; }
 
     // Processing → Run processor…, optionally pre-filled (re-run from provenance).
     void openProcessorDialog(const RunRequest& prefill = {});
@@ -81,15 +86,15 @@ public:
     bool importFiles(const QStringList& files);
 
     // Selects "rec" or "rec/item" in the project tree; a stream is then plotted.
-    bool selectItem(const QString& path);
-    QString currentItem() const;
-    void showTimeSeriesView();
+    bool selectItem(const QString& path) override;
+    QString currentItem() const override;
+    void showTimeSeriesView() override;
     void showTrajectoryView();
     // The first stream of the first recording that has one, and the first position-like stream.
     QString firstStream() const;
     QString firstPositionStream() const;
     // Blocks until both panels finished loading and lays out and replots them.
-    void waitForPlots();
+    void waitForPlots() override;
 
     // The one time cursor every time panel follows.
     TimeController* timeController() const override;
@@ -104,7 +109,7 @@ public:
     void restoreLayout();
 
     // Annotation tool on the main time-series panel.
-    AnnotationEditor* annotationEditor() const { return annotationEditor_; }
+    AnnotationEditor* annotationEditor() const override { return annotationEditor_; }
     AnnotationLayer* annotationLayer() const { return annotationLayer_; }
     AnnotationPanel* annotationPanel() const { return annotationPanel_; }
     void showAnnotationPanel();
@@ -147,6 +152,7 @@ private:
     bool interactive_ = true;
     bool busy_ = false;  // a background job runs inside a nested event loop
 
+    WorkspaceNotifier* notifier_ = nullptr;
     PanelLayout* panels_ = nullptr;
     ProjectBrowser* browser_ = nullptr;
     AnnotationEditor* annotationEditor_ = nullptr;

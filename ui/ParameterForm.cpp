@@ -28,12 +28,21 @@ double finiteOr(double value, double fallback)
 {
     return std::isfinite(value) ? value : fallback;
 }
+
+// 'g' with 8 digits keeps 1e-6 and 25 alike readable and editable.
+QString numberText(double value) { return QString::number(value, 'g', 8); }
 }  // namespace
 
 ParameterForm::ParameterForm(QWidget* parent) : QWidget(parent)
 {
     layout_ = new QFormLayout(this);
     layout_->setContentsMargins(0, 0, 0, 0);
+}
+
+ParameterForm::ParameterForm(const ParameterSpecs& specs, NumberStyle style, QWidget* parent) : ParameterForm(parent)
+{
+    style_ = style;
+    setSpecs(specs);
 }
 
 void ParameterForm::setSpecs(const ParameterSpecs& specs)
@@ -43,17 +52,20 @@ void ParameterForm::setSpecs(const ParameterSpecs& specs)
     enableBoxes_.clear();
     specs_ = specs;
     if (specs_.isEmpty()) {
-        layout_->addRow(new QLabel(tr("This processor has no parameters."), this));
+        // A wizard page explains a missing processor itself.
+        if (style_ == NumberStyle::SpinBox) layout_->addRow(new QLabel(tr("This processor has no parameters."), this));
         return;
     }
     for (const ParameterSpec& spec : specs_) {
         QWidget* editor = createEditor(spec);
         editor->setToolTip(spec.help);
-        editor->setObjectName(spec.name);
+        editor->setObjectName(QStringLiteral("param_") + spec.name);
         editors_[spec.name] = editor;
-        auto* label = new QLabel(spec.name, this);
+        // A text field has no suffix: the unit goes into the label.
+        const bool unitInLabel = qobject_cast<QLineEdit*>(editor) && !unitSuffix(spec.unit).isEmpty();
+        auto* label = new QLabel(unitInLabel ? QStringLiteral("%1 [%2]").arg(spec.name, spec.unit) : spec.name, this);
         label->setToolTip(spec.help);
-        if (!spec.optional) {
+        if (!spec.optional || emptyMeansAbsent(spec)) {
             layout_->addRow(label, editor);
             continue;
         }
@@ -63,7 +75,7 @@ void ParameterForm::setSpecs(const ParameterSpecs& specs)
         rowLayout->setContentsMargins(0, 0, 0, 0);
         auto* enable = new QCheckBox(row);
         enable->setToolTip(tr("Set %1 (otherwise the processor decides)").arg(spec.name));
-        enable->setObjectName(spec.name + QStringLiteral("_enabled"));
+        enable->setObjectName(QStringLiteral("param_") + spec.name + QStringLiteral("_enabled"));
         editor->setParent(row);
         editor->setEnabled(false);
         connect(enable, &QCheckBox::toggled, editor, &QWidget::setEnabled);
@@ -74,10 +86,22 @@ void ParameterForm::setSpecs(const ParameterSpecs& specs)
     }
 }
 
+bool ParameterForm::emptyMeansAbsent(const ParameterSpec& spec) const
+{
+    return style_ == NumberStyle::Text && spec.optional &&
+           (spec.type == ParameterSpec::Type::Double || spec.type == ParameterSpec::Type::String);
+}
+
 QWidget* ParameterForm::createEditor(const ParameterSpec& spec)
 {
     switch (spec.type) {
     case ParameterSpec::Type::Double: {
+        if (style_ == NumberStyle::Text) {
+            auto* edit = new QLineEdit(this);
+            if (spec.optional) edit->setPlaceholderText(tr("(not set)"));  // empty = let the processor decide
+            if (spec.defaultValue.isValid()) edit->setText(numberText(spec.defaultValue.toDouble()));
+            return edit;
+        }
         auto* box = new QDoubleSpinBox(this);
         box->setDecimals(6);
         box->setStepType(QAbstractSpinBox::AdaptiveDecimalStepType);
@@ -109,68 +133,81 @@ QWidget* ParameterForm::createEditor(const ParameterSpec& spec)
         break;
     }
     auto* edit = new QLineEdit(this);
+    if (emptyMeansAbsent(spec)) edit->setPlaceholderText(tr("(not set)"));
     edit->setText(spec.defaultValue.toString());
     return edit;
 }
 
-void ParameterForm::setEditorValue(const ParameterSpec& spec, QWidget* editor, const QVariant& value)
+void ParameterForm::setEditorValue(QWidget* editor, const QVariant& value)
 {
-    switch (spec.type) {
-    case ParameterSpec::Type::Double:
-        static_cast<QDoubleSpinBox*>(editor)->setValue(value.toDouble());
-        return;
-    case ParameterSpec::Type::Int:
-        static_cast<QSpinBox*>(editor)->setValue(value.toInt());
-        return;
-    case ParameterSpec::Type::Bool:
-        static_cast<QCheckBox*>(editor)->setChecked(value.toBool());
-        return;
-    case ParameterSpec::Type::Choice: {
-        auto* box = static_cast<QComboBox*>(editor);
-        const int index = box->findText(value.toString());
-        if (index >= 0) box->setCurrentIndex(index);
-        return;
+    if (auto* box = qobject_cast<QDoubleSpinBox*>(editor)) box->setValue(value.toDouble());
+    else if (auto* spin = qobject_cast<QSpinBox*>(editor)) spin->setValue(value.toInt());
+    else if (auto* check = qobject_cast<QCheckBox*>(editor)) check->setChecked(value.toBool());
+    else if (auto* combo = qobject_cast<QComboBox*>(editor)) {
+        const int index = combo->findText(value.toString());
+        if (index >= 0) combo->setCurrentIndex(index);
+    } else if (auto* edit = qobject_cast<QLineEdit*>(editor)) {
+        edit->setText(value.typeId() == QMetaType::Double ? numberText(value.toDouble()) : value.toString());
     }
-    case ParameterSpec::Type::String:
-        static_cast<QLineEdit*>(editor)->setText(value.toString());
-        return;
-    }
+}
+
+QVariant ParameterForm::rawValue(QWidget* editor) const
+{
+    if (auto* box = qobject_cast<QDoubleSpinBox*>(editor)) return box->value();
+    if (auto* spin = qobject_cast<QSpinBox*>(editor)) return spin->value();
+    if (auto* check = qobject_cast<QCheckBox*>(editor)) return check->isChecked();
+    if (auto* combo = qobject_cast<QComboBox*>(editor)) return combo->currentText();
+    if (auto* edit = qobject_cast<QLineEdit*>(editor)) return edit->text().trimmed();
+    return {};
+}
+
+std::optional<Expected<QVariant>> ParameterForm::converted(const ParameterSpec& spec) const
+{
+    if (QCheckBox* enable = enableBox(spec.name); enable && !enable->isChecked()) return std::nullopt;
+    QWidget* editor = editors_.at(spec.name);
+    const QVariant raw = rawValue(editor);
+    // Spin boxes, check boxes and combos hold only values of the right type and range; typed text
+    // is converted (and checked) by the spec.
+    if (!qobject_cast<QLineEdit*>(editor)) return Expected<QVariant>(raw);
+    if (emptyMeansAbsent(spec) && raw.toString().isEmpty()) return std::nullopt;
+    return spec.convert(raw);
 }
 
 QVariantMap ParameterForm::values() const
 {
     QVariantMap map;
-    for (const ParameterSpec& spec : specs_) {
-        if (QCheckBox* enable = enableBox(spec.name); enable && !enable->isChecked()) continue;
-        QWidget* editor = editors_.at(spec.name);
-        switch (spec.type) {
-        case ParameterSpec::Type::Double:
-            map[spec.name] = static_cast<QDoubleSpinBox*>(editor)->value();
-            break;
-        case ParameterSpec::Type::Int:
-            map[spec.name] = static_cast<QSpinBox*>(editor)->value();
-            break;
-        case ParameterSpec::Type::Bool:
-            map[spec.name] = static_cast<QCheckBox*>(editor)->isChecked();
-            break;
-        case ParameterSpec::Type::Choice:
-            map[spec.name] = static_cast<QComboBox*>(editor)->currentText();
-            break;
-        case ParameterSpec::Type::String:
-            map[spec.name] = static_cast<QLineEdit*>(editor)->text();
-            break;
-        }
-    }
+    for (const ParameterSpec& spec : specs_)
+        if (auto value = converted(spec); value && *value) map.insert(spec.name, **value);
     return map;
+}
+
+QStringList ParameterForm::errors() const
+{
+    QStringList list;
+    for (const ParameterSpec& spec : specs_)
+        if (auto value = converted(spec); value && !*value) list << value->message();
+    return list;
 }
 
 void ParameterForm::setValues(const QVariantMap& values)
 {
     for (const ParameterSpec& spec : specs_) {
-        const bool present = values.contains(spec.name);
-        if (QCheckBox* enable = enableBox(spec.name)) enable->setChecked(present);
-        if (present) setEditorValue(spec, editors_.at(spec.name), values.value(spec.name));
+        if (values.contains(spec.name)) {
+            setValue(spec.name, values.value(spec.name));
+        } else if (QCheckBox* enable = enableBox(spec.name)) {
+            enable->setChecked(false);
+        } else if (emptyMeansAbsent(spec)) {
+            static_cast<QLineEdit*>(editors_.at(spec.name))->clear();
+        }
     }
+}
+
+void ParameterForm::setValue(const QString& name, const QVariant& value)
+{
+    QWidget* widget = editor(name);
+    if (!widget) return;
+    if (QCheckBox* enable = enableBox(name)) enable->setChecked(true);
+    setEditorValue(widget, value);
 }
 
 QWidget* ParameterForm::editor(const QString& name) const

@@ -8,10 +8,13 @@
 #include <functional>
 #include <vector>
 
+namespace athlos {
+class Project;
+}
+
 namespace athlos::ui {
 
 class Workspace;
-class MainWindow;
 
 struct ToolEntry {
     QString id;          // stable, e.g. "position-filter-wizard"
@@ -21,11 +24,15 @@ struct ToolEntry {
 };
 
 // A screenshot view: prepares the (offscreen, already sized) main window for `athlos screenshot
-// --view <name>`: shows the right panels with data from the project. Error if the project has no
-// suitable data for the view.
+// --view <name>` through its Workspace: shows the right panels with data from the project. Error
+// if the project has no suitable data for the view.
 struct ViewEntry {
-    QString name;        // e.g. "trajectory"
-    std::function<Status(MainWindow&)> prepare;
+    QString name;        // e.g. "playback"
+    std::function<Status(Workspace&)> prepare;
+    // Whether the project has the data the view shows; unset: prepare() decides (and says why
+    // not). A built-in view may hand over to a registered one that has data (e.g. `trajectory`
+    // to `team`).
+    std::function<bool(const Project&)> hasData = {};
 };
 
 void registerTool(ToolEntry entry);

@@ -5,11 +5,9 @@
 #include "ui/AnnotationLayer.h"
 #include "ui/MainWindow.h"
 #include "ui/TimeController.h"
-#include "ui/ToolRegistry.h"
 #include "ui/TimeSeriesPanel.h"
+#include "ui/ToolRegistry.h"
 #include "ui/TrajectoryPanel.h"
-#include "ui/wizards/PlaybackTracks.h"
-#include "ui/wizards/PlaybackView.h"
 
 #include <QApplication>
 #include <QCoreApplication>
@@ -137,11 +135,12 @@ Status renderScreenshot(const QString& projectPath, const QString& view, const Q
                              .arg(view));
     } else if (view == QLatin1String("trajectory")) {
         // A team (a recording with the position streams of two or more athletes) plays back on its
-        // venue, cursor mid-recording.
-        const QString team = PlaybackTracks::teamRecording(*window.project(), 2);
-        const QString path = team.isEmpty() ? window.firstPositionStream() : QString();
-        if (!team.isEmpty()) {
-            if (Status prepared = PlaybackView::showInWindow(window, team); !prepared) return prepared;
+        // venue, cursor mid-recording: the view `team` that the playback view registers.
+        const ViewEntry* team = registeredView(QStringLiteral("team"));
+        const bool showTeam = team && team->hasData && team->hasData(*window.project());
+        const QString path = showTeam ? QString() : window.firstPositionStream();
+        if (showTeam) {
+            if (Status prepared = team->prepare(window); !prepared) return prepared;
         } else if (path.isEmpty()) {
             const QString note = QCoreApplication::translate("athlos::ui::UiEntry", "No position stream (lps-position, trajectory or gnss with x/y) in this "
                                       "project; showing the main view.");

@@ -1,6 +1,6 @@
 #pragma once
 // What tools, wizards and views may use from the main window, without depending on it.
-// MainWindow implements it; wizards (ui/wizards/) and tool windows receive a Workspace&.
+// MainWindow implements it; wizards (ui/wizards/) and views (ui/views/) receive a Workspace&.
 #include "core/processing/ProcessorRunner.h"
 #include "core/util/Expected.h"
 
@@ -16,7 +16,9 @@ class Project;
 
 namespace athlos::ui {
 
+class AnnotationEditor;
 class TimeController;
+class WorkspaceNotifier;
 
 class Workspace {
 public:
@@ -40,6 +42,25 @@ public:
     // Adds a tool's dock (video, playback, joint angles, action timeline…) to the window; the
     // window owns it and lists it under View. Give the dock a stable objectName.
     virtual void addDock(QDockWidget* dock, Qt::DockWidgetArea area = Qt::BottomDockWidgetArea) = 0;
+    // Resizes a dock added with addDock(): its width (Qt::Horizontal) or height (Qt::Vertical).
+    virtual void resizeDock(QDockWidget* dock, int size, Qt::Orientation orientation) = 0;
+    // Adds a tool's view (track, orientation, playback…) as a tab next to the time-series and
+    // trajectory panels and brings it forward; the window owns it.
+    virtual void addView(QWidget* view, const QString& title) = 0;
+
+    // Signals: projectChanged() when the project is opened, closed, replaced or modified.
+    virtual WorkspaceNotifier* notifier() = 0;
+    // The item selected in the project tree ("rec" or "rec/item"), or empty.
+    virtual QString currentItem() const = 0;
+    // Selects "rec" or "rec/item" in the project tree; a stream is then plotted (without bringing
+    // the time-series panel forward, unlike showItem()). False if there is no such item.
+    virtual bool selectItem(const QString& path) = 0;
+    // Brings the time-series panel forward.
+    virtual void showTimeSeriesView() = 0;
+    // Blocks until the panels finished loading and lays out and replots them (screenshot views).
+    virtual void waitForPlots() = 0;
+    // The window's annotation editor: annotation edits go through it (undo, journal, autosave).
+    virtual AnnotationEditor* annotationEditor() const = 0;
 };
 
 }  // namespace athlos::ui

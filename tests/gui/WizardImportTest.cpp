@@ -2,6 +2,7 @@
 // project and a Workspace double. Values are checked in SI; failed, refused and cancelled imports
 // must leave the project as it was.
 #include "GuiTestSupport.h"
+#include "WizardTestSupport.h"
 
 #include "ui/MainWindow.h"
 #include "ui/Workspace.h"
@@ -27,20 +28,10 @@ using namespace athlos::ui;
 
 namespace {
 
-class RecordingWorkspace : public Workspace {
+class RecordingWorkspace : public testing::WorkspaceDouble {
 public:
-    explicit RecordingWorkspace(Project* project) : project_(project) {}
-    Project* project() override { return project_; }
-    QWidget* window() override { return nullptr; }
+    using WorkspaceDouble::WorkspaceDouble;
     Expected<RunOutcome> runProcessor(const RunRequest&) override { return makeError(QStringLiteral("not here")); }
-    void projectModified() override { ++modifications; }
-    void showItem(const QString& path) override { shown = path; }
-    TimeController* timeController() const override { return nullptr; }
-    void addDock(QDockWidget*, Qt::DockWidgetArea) override {}
-
-    Project* project_;
-    int modifications = 0;
-    QString shown;
 };
 
 // Every item of the project with its row count: equal snapshots mean an unchanged project.

@@ -6,9 +6,9 @@
 #include "core/processing/ProcessorRegistry.h"
 #include "ui/ToolRegistry.h"
 #include "ui/Workspace.h"
+#include "ui/venue/TrackOverlay.h"
+#include "ui/venue/VenuePlot.h"
 #include "ui/wizards/LpsCalibrationWizard.h"
-#include "ui/wizards/TrackOverlay.h"
-#include "ui/wizards/VenuePlot.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -7,9 +7,9 @@
 #include "ui/MainWindow.h"
 #include "ui/ToolRegistry.h"
 #include "ui/Workspace.h"
+#include "ui/venue/TrackOverlay.h"
+#include "ui/views/TrackTrajectoryView.h"
 #include "ui/wizards/PositionFilterWizard.h"
-#include "ui/wizards/TrackOverlay.h"
-#include "ui/wizards/TrackTrajectoryView.h"
 
 #include <QAction>
 #include <QCheckBox>

@@ -3,12 +3,12 @@
 #include "core/geometry/TrackGeometry.h"
 #include "core/io/Importer.h"
 #include "core/model/Project.h"
+#include "ui/ParameterForm.h"
 #include "ui/PlotStyle.h"
 #include "ui/ToolRegistry.h"
 #include "ui/Workspace.h"
-#include "ui/wizards/VenuePlot.h"
+#include "ui/venue/VenuePlot.h"
 #include "ui/wizards/WizardPages.h"
-#include "ui/wizards/WizardParameterForm.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -140,7 +140,7 @@ QWizardPage* LpsCalibrationWizard::createWalkPage()
     auto* page = wizardPage(tr("Calibration walk"),
                             tr("The TDoA recording of the walk and the calibration settings. Next runs the calibration."));
     tdoaCombo_ = streamCombo(workspace_.project(), QStringLiteral("lps-tdoa"), QStringLiteral("tdoaCombo"), page);
-    calibrationForm_ = new WizardParameterForm(calibrationSpecs_, page);
+    calibrationForm_ = new ParameterForm(calibrationSpecs_, ParameterForm::NumberStyle::Text, page);
     calibrationForm_->setObjectName(QStringLiteral("calibrationForm"));
     walkCheck_ = new QCheckBox(tr("Show the walk positions (runs lps-positioning with the calibrated beacons)"), page);
     walkCheck_->setObjectName(QStringLiteral("walkCheck"));

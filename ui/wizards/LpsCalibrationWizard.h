@@ -17,8 +17,8 @@ class QLineEdit;
 
 namespace athlos::ui {
 
+class ParameterForm;
 class VenuePlot;
-class WizardParameterForm;
 class Workspace;
 
 class LpsCalibrationWizard : public QWizard {
@@ -76,7 +76,7 @@ private:
     QComboBox* trackCombo_ = nullptr;
     VenuePlot* beaconView_ = nullptr;
     QComboBox* tdoaCombo_ = nullptr;
-    WizardParameterForm* calibrationForm_ = nullptr;
+    ParameterForm* calibrationForm_ = nullptr;
     QCheckBox* walkCheck_ = nullptr;
     QLineEdit* outputEdit_ = nullptr;
     QLabel* walkError_ = nullptr;

@@ -1,13 +1,13 @@
 #include "ui/wizards/PositionFilterWizard.h"
 
 #include "core/model/Project.h"
+#include "ui/ParameterForm.h"
 #include "ui/PlotStyle.h"
 #include "ui/ToolRegistry.h"
 #include "ui/Workspace.h"
-#include "ui/wizards/WizardParameterForm.h"
-#include "ui/wizards/EqualAspectFrame.h"
-#include "ui/wizards/TrackOverlay.h"
-#include "ui/wizards/TrackTrajectoryView.h"
+#include "ui/venue/EqualAspectFrame.h"
+#include "ui/venue/TrackOverlay.h"
+#include "ui/views/TrackTrajectoryView.h"
 #include "ui/wizards/WizardPages.h"
 
 #include <QCheckBox>
@@ -150,7 +150,7 @@ QWizardPage* PositionFilterWizard::createFilterPage()
     ParameterSpecs noiseSpecs;
     for (const ParameterSpec& spec : specs_)
         if (isNoiseParameter(spec.name)) noiseSpecs.append(spec);
-    noiseForm_ = new WizardParameterForm(noiseSpecs, page);
+    noiseForm_ = new ParameterForm(noiseSpecs, ParameterForm::NumberStyle::Text, page);
     noiseForm_->setObjectName(QStringLiteral("noiseForm"));
     auto* layout = new QFormLayout(page);
     layout->addRow(tr("Filter:"), filterCombo_);

@@ -21,8 +21,8 @@ class QPushButton;
 
 namespace athlos::ui {
 
-class WizardParameterForm;
 class EqualAspectFrame;
+class ParameterForm;
 class TrackOverlay;
 class TrackTrajectoryView;
 class Workspace;
@@ -82,7 +82,7 @@ private:
     QComboBox* filterCombo_ = nullptr;
     QComboBox* modelCombo_ = nullptr;
     QComboBox* noiseCombo_ = nullptr;
-    WizardParameterForm* noiseForm_ = nullptr;
+    ParameterForm* noiseForm_ = nullptr;
     QComboBox* smootherCombo_ = nullptr;
     QDoubleSpinBox* lag_ = nullptr;
     QCheckBox* rateCheck_ = nullptr;

@@ -1,4 +1,4 @@
-#include "ui/wizards/VideoDecodeWorker.h"
+#include "ui/views/VideoDecodeWorker.h"
 
 namespace athlos::ui {
 

@@ -5,8 +5,8 @@
 // bin), the current position as a dot in the team colour with its label, the speed colour scale
 // and the time. World → screen has equal metres per pixel on both axes, y up; the wheel zooms
 // about the mouse, dragging pans, a double-click frames the venue again.
-#include "ui/wizards/PlaybackTracks.h"
-#include "ui/wizards/VenueDrawing.h"
+#include "ui/venue/VenueDrawing.h"
+#include "ui/views/PlaybackTracks.h"
 
 #include <QLineF>
 #include <QPen>

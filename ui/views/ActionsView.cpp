@@ -1,12 +1,12 @@
-#include "ui/wizards/ActionsView.h"
+#include "ui/views/ActionsView.h"
 
 #include "core/model/Project.h"
 #include "ui/AnnotationEditor.h"
-#include "ui/MainWindow.h"
 #include "ui/TimeController.h"
 #include "ui/ToolRegistry.h"
 #include "ui/Workspace.h"
-#include "ui/wizards/ActionTimeline.h"
+#include "ui/WorkspaceNotifier.h"
+#include "ui/views/ActionTimeline.h"
 
 #include <QComboBox>
 #include <QCoreApplication>
@@ -303,21 +303,19 @@ void launchActionTimeline(Workspace& workspace)
     }
     auto* view = new ActionsView(project, workspace.timeController());
     auto* dock = makeDock(workspace.window(), view);
-    if (auto* main = qobject_cast<MainWindow*>(workspace.window())) {
-        // The view reads the project it was opened on: close with it, follow annotation edits
-        // and review through the window's editor.
-        QObject::connect(main, &MainWindow::projectChanged, dock, &QWidget::close);
-        view->setEditor(main->annotationEditor());
-    }
+    // The view reads the project it was opened on: close with it, follow annotation edits and
+    // review through the window's editor.
+    QObject::connect(workspace.notifier(), &WorkspaceNotifier::projectChanged, dock, &QWidget::close);
+    view->setEditor(workspace.annotationEditor());
     workspace.addDock(dock, Qt::BottomDockWidgetArea);
     dock->show();
 }
 
 // The foot IMU the predicted actions came from, with the annotations on its time series, and the
 // action timeline docked below, over the first ~15 s that have annotations.
-Status prepareActionsView(MainWindow& window)
+Status prepareActionsView(Workspace& workspace)
 {
-    Project* project = window.project();
+    Project* project = workspace.project();
     const QStringList recordings = project ? ActionsView::annotatedRecordings(*project) : QStringList();
     if (recordings.isEmpty())
         return makeError(QCoreApplication::translate("athlos::ui::ActionsView",
@@ -335,30 +333,30 @@ Status prepareActionsView(MainWindow& window)
     const QString stream = ActionsView::sourceStream(*project, recording);
     if (stream.isEmpty())
         return makeError(QCoreApplication::translate("athlos::ui::ActionsView", "recording '%1' has no stream to plot").arg(recording));
-    window.selectItem(stream);
-    window.showTimeSeriesView();
-    window.waitForPlots();
+    workspace.selectItem(stream);
+    workspace.showTimeSeriesView();
+    workspace.waitForPlots();
 
-    auto* view = new ActionsView(project, window.timeController());
-    view->setEditor(window.annotationEditor());
+    auto* view = new ActionsView(project, workspace.timeController());
+    view->setEditor(workspace.annotationEditor());
     if (Status s = view->setRecording(recording); !s) {
         delete view;
         return s;
     }
-    auto* dock = makeDock(&window, view);
-    window.addDock(dock, Qt::BottomDockWidgetArea);
+    auto* dock = makeDock(workspace.window(), view);
+    workspace.addDock(dock, Qt::BottomDockWidgetArea);
     dock->show();
-    window.resizeDocks({dock}, {int(window.height() * 0.36)}, Qt::Vertical);
+    workspace.resizeDock(dock, int(workspace.window()->height() * 0.36), Qt::Vertical);
 
     view->reviewNext();  // the first predicted action outlined, its review line filled in
     const auto& all = project->recording(recording)->annotations;
     double first = all.front().tStart;
     for (const Annotation& a : all) first = std::min(first, a.tStart);
-    TimeController* time = window.timeController();
+    TimeController* time = workspace.timeController();
     const double begin = std::max(time->begin(), first - 1.0);
     time->setVisibleRange(begin, std::min(time->end(), begin + 15.0));
     time->setCursor(0.5 * (time->visibleBegin() + time->visibleEnd()));
-    window.waitForPlots();
+    workspace.waitForPlots();
     return {};
 }
 

@@ -1,12 +1,14 @@
-#include "ui/wizards/VideoDock.h"
+#include "ui/views/VideoDock.h"
 
 #include "core/model/Project.h"
 #include "core/video/VideoReader.h"
-#include "ui/MainWindow.h"
 #include "ui/TimeController.h"
 #include "ui/ToolRegistry.h"
 #include "ui/Workspace.h"
-#include "ui/wizards/VideoDecodeWorker.h"
+#include "ui/WorkspaceNotifier.h"
+#include "ui/views/VideoDecodeWorker.h"
+#include "ui/views/VideoFrameView.h"
+#include "ui/views/VideoOffsetCommand.h"
 
 #include <QComboBox>
 #include <QCoreApplication>
@@ -16,78 +18,17 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMessageBox>
-#include <QPainter>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QThread>
-#include <QUndoCommand>
 #include <QUndoStack>
 #include <QVBoxLayout>
 
 #include <cmath>
-#include <functional>
 
 namespace athlos::ui {
 
-// The picture, scaled to fit with its aspect ratio, or a placeholder text.
-class VideoFrameView : public QWidget {
-public:
-    explicit VideoFrameView(QWidget* parent) : QWidget(parent)
-    {
-        setMinimumSize(160, 120);
-        setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
-    }
-    void setImage(const QImage& image)
-    {
-        image_ = image;
-        text_.clear();
-        update();
-    }
-    void setText(const QString& text)
-    {
-        image_ = {};
-        text_ = text;
-        update();
-    }
-    QSize sizeHint() const override { return {480, 270}; }
-
-protected:
-    void paintEvent(QPaintEvent*) override
-    {
-        QPainter painter(this);
-        painter.fillRect(rect(), QColor(24, 24, 28));
-        if (!image_.isNull()) {
-            QSize size = image_.size().scaled(this->size(), Qt::KeepAspectRatio);
-            const QRect target(QPoint((width() - size.width()) / 2, (height() - size.height()) / 2), size);
-            painter.setRenderHint(QPainter::SmoothPixmapTransform);
-            painter.drawImage(target, image_);
-        } else {
-            painter.setPen(QColor(200, 200, 200));
-            painter.drawText(rect().adjusted(12, 12, -12, -12), Qt::AlignCenter | Qt::TextWordWrap, text_);
-        }
-    }
-
-private:
-    QImage image_;
-    QString text_;
-};
-
 namespace {
-
-// An offset change, undoable in the dock.
-class OffsetCommand : public QUndoCommand {
-public:
-    OffsetCommand(std::function<void(double)> apply, double before, double after, const QString& text)
-        : QUndoCommand(text), apply_(std::move(apply)), before_(before), after_(after)
-    {
-    }
-    void undo() override { apply_(before_); }
-    void redo() override { apply_(after_); }
-
-private:
-    std::function<void(double)> apply_;
-    double before_, after_;
-};
 
 QString formatSeconds(double t) { return QString::number(t, 'f', 3); }
 
@@ -167,8 +108,7 @@ VideoDock::VideoDock(Workspace& workspace, QWidget* parent) : QDockWidget(tr("Vi
     if (TimeController* time = workspace_.timeController())
         connect(time, &TimeController::cursorChanged, this, &VideoDock::onCursor);
     // The dock reads the project it was opened on: follow the window when it swaps projects.
-    if (auto* main = qobject_cast<MainWindow*>(workspace_.window()))
-        connect(main, &MainWindow::projectChanged, this, &VideoDock::reloadProject);
+    connect(workspace_.notifier(), &WorkspaceNotifier::projectChanged, this, &VideoDock::reloadProject);
     projectSeen_ = workspace_.project();
     reloadProject();
 }
@@ -273,7 +213,7 @@ void VideoDock::setOffset(double offset)
     if (!link_ || !std::isfinite(offset)) return;
     const double before = link_->offset;
     if (offset == before) return;
-    undoStack_->push(new OffsetCommand([this](double value) { applyOffset(value); }, before, offset,
+    undoStack_->push(new VideoOffsetCommand([this](double value) { applyOffset(value); }, before, offset,
                                        tr("Video offset %1 s").arg(formatSeconds(offset))));
 }
 
@@ -440,8 +380,7 @@ void launchVideo(Workspace& workspace)
                                  QCoreApplication::translate(kContext, "Import a recording first; a video is attached to a recording."));
         return;
     }
-    QString recording;
-    if (auto* main = qobject_cast<MainWindow*>(parent)) recording = ItemPath::parse(main->currentItem()).recording;
+    QString recording = ItemPath::parse(workspace.currentItem()).recording;
     if (recording.isEmpty() || !project->recording(recording)) recording = project->recordingNames().front();
 
     const auto link = VideoLink::of(*project, recording);
@@ -471,9 +410,9 @@ void launchVideo(Workspace& workspace)
     (void)dock->setRecording(recording);
 }
 
-Status prepareVideoView(MainWindow& window)
+Status prepareVideoView(Workspace& workspace)
 {
-    Project* project = window.project();
+    Project* project = workspace.project();
     const QString recording = project ? VideoLink::firstLinkedRecording(*project) : QString();
     if (recording.isEmpty())
         return makeError(QCoreApplication::translate(kContext, "no recording in this project has a video; attach one with "
@@ -481,14 +420,14 @@ Status prepareVideoView(MainWindow& window)
     if (auto resolved = VideoLink::resolve(*project, recording); !resolved) return resolved.error();
     // Plot the recording's first stream so the cursor range is the recording's.
     if (const Recording* rec = project->recording(recording); rec && !rec->streams.empty())
-        window.selectItem(recording + QLatin1Char('/') + rec->streams.begin()->first);
-    window.waitForPlots();
-    auto* dock = new VideoDock(window, &window);
-    window.addDock(dock, Qt::RightDockWidgetArea);
-    window.resizeDocks({dock}, {window.width() * 2 / 5}, Qt::Horizontal);
+        workspace.selectItem(recording + QLatin1Char('/') + rec->streams.begin()->first);
+    workspace.waitForPlots();
+    auto* dock = new VideoDock(workspace, workspace.window());
+    workspace.addDock(dock, Qt::RightDockWidgetArea);
+    workspace.resizeDock(dock, workspace.window()->width() * 2 / 5, Qt::Horizontal);
     if (Status status = dock->setRecording(recording); !status) return status;
     // The cursor in the middle of the part of the recording the video covers.
-    TimeController* time = window.timeController();
+    TimeController* time = workspace.timeController();
     const auto link = VideoLink::of(*project, recording);
     auto reader = VideoReader::open(*VideoLink::resolve(*project, recording));
     if (time && link && reader) {

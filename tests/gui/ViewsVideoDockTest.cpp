@@ -8,7 +8,7 @@
 #include "ui/MainWindow.h"
 #include "ui/TimeController.h"
 #include "ui/ToolRegistry.h"
-#include "ui/wizards/VideoDock.h"
+#include "ui/views/VideoDock.h"
 
 #include <QDoubleSpinBox>
 #include <QLabel>
@@ -32,7 +32,7 @@ long long indexOnScreen(const VideoDock& dock)
 
 }  // namespace
 
-class WizardVideoDockTest : public QObject {
+class ViewsVideoDockTest : public QObject {
     Q_OBJECT
 
 private slots:
@@ -226,5 +226,5 @@ private:
     QString video_;
 };
 
-QTEST_MAIN(WizardVideoDockTest)
-#include "WizardVideoDockTest.moc"
+QTEST_MAIN(ViewsVideoDockTest)
+#include "ViewsVideoDockTest.moc"

@@ -1,4 +1,4 @@
-#include "ui/wizards/EqualAspectFrame.h"
+#include "ui/venue/EqualAspectFrame.h"
 
 #include <qcustomplot.h>
 #include <algorithm>

@@ -4,9 +4,10 @@
 // speed. The venue (football, rugby, 400 m track, none) defaults to a guess from the streams'
 // "venue" attribute, the project's sport or the data extent; a choice is stored in the recording's
 // metadata ("venue") and so persists with the project. Tool "View → Team playback…" (a dock) and
-// screenshot view "playback"; the built-in "trajectory" screenshot uses it for team recordings.
+// screenshot views "playback" and "team"; the built-in "trajectory" screenshot shows "team" when
+// the project has a team.
 #include "core/util/Expected.h"
-#include "ui/wizards/VenueDrawing.h"
+#include "ui/venue/VenueDrawing.h"
 
 #include <QPointer>
 #include <QRectF>
@@ -23,7 +24,6 @@ class Project;
 
 namespace athlos::ui {
 
-class MainWindow;
 class PlaybackCanvas;
 class TimeController;
 class Workspace;
@@ -57,7 +57,7 @@ public:
     static VenueDrawing::Venue venueFor(const Project& project, const QString& recording, const QRectF* extent = nullptr);
     // Shows the playback of a recording as the current tab of the window, cursor in the middle of
     // the recording (screenshots).
-    static Status showInWindow(MainWindow& window, const QString& recording);
+    static Status showInWindow(Workspace& workspace, const QString& recording);
 
 private:
     void onVenueChosen();

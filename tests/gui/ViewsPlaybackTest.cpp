@@ -7,9 +7,9 @@
 #include "ui/TimeController.h"
 #include "ui/ToolRegistry.h"
 #include "ui/UiEntry.h"
-#include "ui/wizards/PlaybackCanvas.h"
-#include "ui/wizards/PlaybackTracks.h"
-#include "ui/wizards/PlaybackView.h"
+#include "ui/views/PlaybackCanvas.h"
+#include "ui/views/PlaybackTracks.h"
+#include "ui/views/PlaybackView.h"
 
 #include <QComboBox>
 #include <QImage>
@@ -67,7 +67,7 @@ QColor pixelAt(const QImage& image, QPointF p) { return image.pixelColor(p.toPoi
 
 }  // namespace
 
-class WizardPlaybackViewTest : public QObject {
+class ViewsPlaybackTest : public QObject {
     Q_OBJECT
 
 private slots:
@@ -237,5 +237,5 @@ private:
     QTemporaryDir dir_;
 };
 
-QTEST_MAIN(WizardPlaybackViewTest)
-#include "WizardPlaybackViewTest.moc"
+QTEST_MAIN(ViewsPlaybackTest)
+#include "ViewsPlaybackTest.moc"

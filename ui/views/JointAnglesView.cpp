@@ -1,11 +1,11 @@
-#include "ui/wizards/JointAnglesView.h"
+#include "ui/views/JointAnglesView.h"
 
 #include "core/model/Project.h"
-#include "ui/MainWindow.h"
 #include "ui/PlotStyle.h"
 #include "ui/TimeController.h"
 #include "ui/ToolRegistry.h"
 #include "ui/Workspace.h"
+#include "ui/WorkspaceNotifier.h"
 
 #include <QComboBox>
 #include <QCoreApplication>
@@ -311,14 +311,13 @@ void launchJointAngles(Workspace& workspace)
     if (!workspace.project()) return;
     QDockWidget* dock = makeDock(workspace.project(), workspace.timeController(), QString(), workspace.window());
     // The view reads the project it was opened on: close it when the main window swaps projects.
-    if (auto* main = qobject_cast<MainWindow*>(workspace.window()))
-        QObject::connect(main, &MainWindow::projectChanged, dock, &QWidget::close);
+    QObject::connect(workspace.notifier(), &WorkspaceNotifier::projectChanged, dock, &QWidget::close);
     workspace.addDock(dock, Qt::RightDockWidgetArea);
 }
 
-Status prepareJointAnglesView(MainWindow& window)
+Status prepareJointAnglesView(Workspace& workspace)
 {
-    Project* project = window.project();
+    Project* project = workspace.project();
     QStringList streams = project ? JointAnglesView::jointAngleStreams(*project) : QStringList();
     // The knee first: it is the joint the demo and the validation are about.
     std::stable_partition(streams.begin(), streams.end(), [project](const QString& path) {
@@ -328,19 +327,19 @@ Status prepareJointAnglesView(MainWindow& window)
         return makeError(trView("no joint-angles stream (kind joint-angles with flexion, abduction, rotation) in this project; "
                                 "run joint-angles first"));
     // The stream in the main time series too, so the shared cursor and range are visible in both.
-    window.selectItem(streams.front());
-    window.showTimeSeriesView();
-    window.waitForPlots();
-    TimeController* time = window.timeController();
-    QDockWidget* dock = makeDock(project, time, streams.front(), &window);
-    window.addDock(dock, Qt::RightDockWidgetArea);
-    window.resizeDocks({dock}, {window.width() * 11 / 20}, Qt::Horizontal);
+    workspace.selectItem(streams.front());
+    workspace.showTimeSeriesView();
+    workspace.waitForPlots();
+    TimeController* time = workspace.timeController();
+    QDockWidget* dock = makeDock(project, time, streams.front(), workspace.window());
+    workspace.addDock(dock, Qt::RightDockWidgetArea);
+    workspace.resizeDock(dock, workspace.window()->width() * 11 / 20, Qt::Horizontal);
     // Show the last third (squats in the simulated demo) with the cursor in its middle.
     const double b = time->begin(), e = time->end();
     time->setVisibleRange(b + 0.55 * (e - b), e);
     time->setCursor(b + 0.8 * (e - b));
     QCoreApplication::processEvents();
-    window.waitForPlots();
+    workspace.waitForPlots();
     if (auto* view = dock->findChild<JointAnglesView*>())
         for (int i = 0; i < 3; ++i) view->plot(i)->replot();
     return {};

@@ -6,7 +6,7 @@
 #include "ui/MainWindow.h"
 #include "ui/TimeController.h"
 #include "ui/ToolRegistry.h"
-#include "ui/wizards/JointAnglesView.h"
+#include "ui/views/JointAnglesView.h"
 
 #include <QDockWidget>
 #include <QTemporaryDir>
@@ -49,7 +49,7 @@ void addTrial(Project& project) {
 
 }  // namespace
 
-class WizardJointAnglesViewTest : public QObject {
+class ViewsJointAnglesTest : public QObject {
     Q_OBJECT
 
 private slots:
@@ -150,5 +150,5 @@ private:
     QTemporaryDir dir_;
 };
 
-QTEST_MAIN(WizardJointAnglesViewTest)
-#include "WizardJointAnglesViewTest.moc"
+QTEST_MAIN(ViewsJointAnglesTest)
+#include "ViewsJointAnglesTest.moc"

@@ -1,4 +1,4 @@
-#include "ui/wizards/ActionTimeline.h"
+#include "ui/views/ActionTimeline.h"
 
 #include "core/model/Project.h"
 #include "ui/PlotStyle.h"

@@ -8,8 +8,8 @@
 #include "ui/TimeController.h"
 #include "ui/ToolRegistry.h"
 #include "ui/UiEntry.h"
-#include "ui/wizards/ActionTimeline.h"
-#include "ui/wizards/ActionsView.h"
+#include "ui/views/ActionTimeline.h"
+#include "ui/views/ActionsView.h"
 
 #include <QDockWidget>
 #include <QImage>
@@ -40,7 +40,7 @@ bool isCursorRed(const QColor& c) { return c.red() > 180 && c.green() < 90 && c.
 
 }  // namespace
 
-class WizardActionsViewTest : public QObject {
+class ViewsActionsTest : public QObject {
     Q_OBJECT
 
 private slots:
@@ -269,5 +269,5 @@ private:
     QTemporaryDir dir_;
 };
 
-QTEST_MAIN(WizardActionsViewTest)
-#include "WizardActionsViewTest.moc"
+QTEST_MAIN(ViewsActionsTest)
+#include "ViewsActionsTest.moc"

@@ -1,9 +1,9 @@
-#include "ui/wizards/VenuePlot.h"
+#include "ui/venue/VenuePlot.h"
 
 #include "core/model/Table.h"
 #include "ui/PlotStyle.h"
-#include "ui/wizards/EqualAspectFrame.h"
-#include "ui/wizards/TrackOverlay.h"
+#include "ui/venue/EqualAspectFrame.h"
+#include "ui/venue/TrackOverlay.h"
 
 #include <QVBoxLayout>
 #include <qcustomplot.h>

@@ -1,20 +1,18 @@
-#include "ui/wizards/OrientationAnglesView.h"
+#include "ui/views/OrientationAnglesView.h"
 
 #include "core/math/EulerAngles.h"
 #include "core/model/Project.h"
-#include "ui/MainWindow.h"
 #include "ui/PlotStyle.h"
 #include "ui/ToolRegistry.h"
 #include "ui/Workspace.h"
+#include "ui/WorkspaceNotifier.h"
 
 #include <QComboBox>
 #include <QCoreApplication>
-#include <QDockWidget>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QSplitter>
-#include <QTabWidget>
 #include <QVBoxLayout>
 #include <qcustomplot.h>
 #include <algorithm>
@@ -241,15 +239,14 @@ void launchOrientationAngles(Workspace& workspace)
     auto* layout = new QVBoxLayout(window);
     layout->addWidget(new OrientationAnglesView(workspace.project(), window));
     // The view reads the project it was opened on: close it when the main window swaps projects.
-    if (auto* main = qobject_cast<MainWindow*>(workspace.window()))
-        QObject::connect(main, &MainWindow::projectChanged, window, &QWidget::close);
+    QObject::connect(workspace.notifier(), &WorkspaceNotifier::projectChanged, window, &QWidget::close);
     window->resize(900, 600);
     window->show();
 }
 
-Status prepareOrientationView(MainWindow& window)
+Status prepareOrientationView(Workspace& workspace)
 {
-    Project* project = window.project();
+    Project* project = workspace.project();
     const QStringList streams = project ? OrientationAnglesView::orientationStreams(*project) : QStringList();
     if (streams.isEmpty())
         return makeError(QCoreApplication::translate("athlos::ui::OrientationAnglesView",
@@ -260,15 +257,7 @@ Status prepareOrientationView(MainWindow& window)
         delete view;
         return status;
     }
-    const QString title = QCoreApplication::translate("athlos::ui::OrientationAnglesView", "Orientation");
-    if (auto* tabs = qobject_cast<QTabWidget*>(window.centralWidget())) {
-        tabs->setCurrentIndex(tabs->addTab(view, title));
-    } else {
-        auto* dock = new QDockWidget(title, &window);
-        dock->setObjectName(QStringLiteral("orientationDock"));
-        dock->setWidget(view);
-        window.addDockWidget(Qt::RightDockWidgetArea, dock);
-    }
+    workspace.addView(view, QCoreApplication::translate("athlos::ui::OrientationAnglesView", "Orientation"));
     QCoreApplication::processEvents();
     view->anglePlot()->replot();
     view->errorPlot()->replot();

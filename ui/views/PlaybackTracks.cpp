@@ -1,4 +1,4 @@
-#include "ui/wizards/PlaybackTracks.h"
+#include "ui/views/PlaybackTracks.h"
 
 #include "core/model/Project.h"
 #include "ui/TrajectoryPanel.h"

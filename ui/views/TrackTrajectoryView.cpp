@@ -1,16 +1,14 @@
-#include "ui/wizards/TrackTrajectoryView.h"
+#include "ui/views/TrackTrajectoryView.h"
 
 #include "core/model/Project.h"
-#include "ui/MainWindow.h"
 #include "ui/PlotStyle.h"
 #include "ui/ToolRegistry.h"
-#include "ui/wizards/EqualAspectFrame.h"
-#include "ui/wizards/TrackOverlay.h"
+#include "ui/Workspace.h"
+#include "ui/venue/EqualAspectFrame.h"
+#include "ui/venue/TrackOverlay.h"
 
 #include <QCoreApplication>
-#include <QDockWidget>
 #include <QLabel>
-#include <QTabWidget>
 #include <QVBoxLayout>
 #include <qcustomplot.h>
 #include <algorithm>
@@ -222,11 +220,11 @@ void TrackTrajectoryView::showFullRange() { aspect_->frameAll(); }
 
 namespace {
 
-// Screenshot view "track": the first position-filter result on its track, shown as a tab of the
-// main window's central tab widget (or as a dock if the centre is something else).
-Status prepareTrackView(MainWindow& window)
+// Screenshot view "track": the first position-filter result on its track, shown as a tab next to
+// the main window's panels.
+Status prepareTrackView(Workspace& workspace)
 {
-    Project* project = window.project();
+    Project* project = workspace.project();
     const QString path = project ? TrackTrajectoryView::findResult(*project) : QString();
     if (path.isEmpty())
         return makeError(QCoreApplication::translate("athlos::ui::TrackTrajectoryView",
@@ -237,15 +235,7 @@ Status prepareTrackView(MainWindow& window)
         delete view;
         return status;
     }
-    const QString title = QCoreApplication::translate("athlos::ui::TrackTrajectoryView", "Track");
-    if (auto* tabs = qobject_cast<QTabWidget*>(window.centralWidget())) {
-        tabs->setCurrentIndex(tabs->addTab(view, title));
-    } else {
-        auto* dock = new QDockWidget(title, &window);
-        dock->setObjectName(QStringLiteral("trackDock"));
-        dock->setWidget(view);
-        window.addDockWidget(Qt::RightDockWidgetArea, dock);
-    }
+    workspace.addView(view, QCoreApplication::translate("athlos::ui::TrackTrajectoryView", "Track"));
     QCoreApplication::processEvents();
     view->showFullRange();
     return {};

@@ -1,4 +1,4 @@
-#include "ui/wizards/TrackOverlay.h"
+#include "ui/venue/TrackOverlay.h"
 
 #include <qcustomplot.h>
 

@@ -1,12 +1,12 @@
-#include "ui/wizards/PlaybackView.h"
+#include "ui/views/PlaybackView.h"
 
 #include "core/model/Project.h"
-#include "ui/MainWindow.h"
 #include "ui/TimeController.h"
 #include "ui/ToolRegistry.h"
 #include "ui/Workspace.h"
-#include "ui/wizards/PlaybackCanvas.h"
-#include "ui/wizards/PlaybackTracks.h"
+#include "ui/WorkspaceNotifier.h"
+#include "ui/views/PlaybackCanvas.h"
+#include "ui/views/PlaybackTracks.h"
 
 #include <QComboBox>
 #include <QCoreApplication>
@@ -15,7 +15,6 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMessageBox>
-#include <QTabWidget>
 #include <QToolButton>
 #include <QVBoxLayout>
 #include <algorithm>
@@ -177,31 +176,23 @@ VenueDrawing::Venue PlaybackView::venueFor(const Project& project, const QString
     return venueOfSport(project.meta().sport).value_or(VenueDrawing::Venue::None);
 }
 
-Status PlaybackView::showInWindow(MainWindow& window, const QString& recording)
+Status PlaybackView::showInWindow(Workspace& workspace, const QString& recording)
 {
-    Project* project = window.project();
+    Project* project = workspace.project();
     const QStringList streams = project ? PlaybackTracks::positionStreams(*project, recording) : QStringList();
     if (streams.isEmpty())
         return makeError(trView("no position stream (lps-position, trajectory or gnss with x, y) in recording '%1'").arg(recording));
     // The window's time range comes from the plotted stream.
-    window.selectItem(streams.front());
-    window.waitForPlots();
+    workspace.selectItem(streams.front());
+    workspace.waitForPlots();
     auto* view = new PlaybackView(project);
     if (Status status = view->setRecording(recording); !status) {
         delete view;
         return status;
     }
-    view->setTimeController(window.timeController());
-    const QString title = trView("Playback");
-    if (auto* tabs = qobject_cast<QTabWidget*>(window.centralWidget())) {
-        tabs->setCurrentIndex(tabs->addTab(view, title));
-    } else {
-        auto* dock = new QDockWidget(title, &window);
-        dock->setObjectName(QStringLiteral("playbackDock"));
-        dock->setWidget(view);
-        window.addDockWidget(Qt::RightDockWidgetArea, dock);
-    }
-    TimeController* time = window.timeController();
+    view->setTimeController(workspace.timeController());
+    workspace.addView(view, trView("Playback"));
+    TimeController* time = workspace.timeController();
     time->setCursor(time->begin() + 0.5 * (time->end() - time->begin()));
     QCoreApplication::processEvents();
     view->canvas()->frameAll();
@@ -241,19 +232,31 @@ void launchPlayback(Workspace& workspace)
     }
     // The view reads the project it was opened on: close it when the window swaps projects (the
     // signal also comes after changes of the same project, e.g. the venue stored by this view).
-    if (auto* main = qobject_cast<MainWindow*>(workspace.window()))
-        QObject::connect(main, &MainWindow::projectChanged, dock, [dock, main, project] {
-            if (main->project() != project) dock->close();
-        });
+    QObject::connect(workspace.notifier(), &WorkspaceNotifier::projectChanged, dock, [dock, &workspace, project] {
+        if (workspace.project() != project) dock->close();
+    });
 }
 
-Status preparePlaybackView(MainWindow& window)
+Status preparePlaybackView(Workspace& workspace)
 {
-    const QString recording = window.project() ? PlaybackTracks::teamRecording(*window.project(), 0) : QString();
+    const QString recording = workspace.project() ? PlaybackTracks::teamRecording(*workspace.project(), 0) : QString();
     if (recording.isEmpty())
         return makeError(trView("no position stream (lps-position, trajectory or gnss with x, y) in this project; "
                                 "run simulate-team or import positions first"));
-    return PlaybackView::showInWindow(window, recording);
+    return PlaybackView::showInWindow(workspace, recording);
+}
+
+// A team: a recording with the position streams of two or more athletes. The built-in screenshot
+// `trajectory` shows it through this view when the project has one.
+bool hasTeam(const Project& project) { return !PlaybackTracks::teamRecording(project, 2).isEmpty(); }
+
+Status prepareTeamView(Workspace& workspace)
+{
+    const QString team = workspace.project() ? PlaybackTracks::teamRecording(*workspace.project(), 2) : QString();
+    if (team.isEmpty())
+        return makeError(trView("no team in this project (a recording with the position streams of two or more "
+                                "athletes); run simulate-team first"));
+    return PlaybackView::showInWindow(workspace, team);
 }
 
 }  // namespace
@@ -261,5 +264,6 @@ Status preparePlaybackView(MainWindow& window)
 ATHLOS_REGISTER_TOOL({QStringLiteral("team-playback"), QT_TRANSLATE_NOOP("Tools", "Team playback…"),
                       QT_TRANSLATE_NOOP("Tools", "View"), launchPlayback});
 ATHLOS_REGISTER_VIEW({QStringLiteral("playback"), preparePlaybackView});
+ATHLOS_REGISTER_VIEW({QStringLiteral("team"), prepareTeamView, hasTeam});
 
 }  // namespace athlos::ui

@@ -1,4 +1,4 @@
-#include "ui/wizards/PlaybackCanvas.h"
+#include "ui/views/PlaybackCanvas.h"
 
 #include <QMouseEvent>
 #include <QPaintEvent>

@@ -6,7 +6,7 @@
 #include "core/math/OrientationError.h"
 #include "ui/MainWindow.h"
 #include "ui/ToolRegistry.h"
-#include "ui/wizards/OrientationAnglesView.h"
+#include "ui/views/OrientationAnglesView.h"
 
 #include <QComboBox>
 #include <QTemporaryDir>
@@ -58,7 +58,7 @@ QVector<double> values(const QCPGraph* graph) {
 
 }  // namespace
 
-class WizardOrientationViewTest : public QObject {
+class ViewsOrientationAnglesTest : public QObject {
     Q_OBJECT
 
 private slots:
@@ -143,5 +143,5 @@ private:
     QTemporaryDir dir_;
 };
 
-QTEST_MAIN(WizardOrientationViewTest)
-#include "WizardOrientationViewTest.moc"
+QTEST_MAIN(ViewsOrientationAnglesTest)
+#include "ViewsOrientationAnglesTest.moc"

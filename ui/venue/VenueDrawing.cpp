@@ -1,7 +1,7 @@
-#include "ui/wizards/VenueDrawing.h"
+#include "ui/venue/VenueDrawing.h"
 
 #include "core/geometry/TrackGeometry.h"
-#include "ui/wizards/TrackOverlay.h"
+#include "ui/venue/TrackOverlay.h"
 
 #include <QCoreApplication>
 #include <QPainter>
