@@ -1,5 +1,6 @@
 #include "plugins/inertial/OrientationProcessor.h"
 
+#include "core/math/Angles.h"
 #include "plugins/inertial/OrientationEstimation.h"
 #include "plugins/inertial/ProcessorSupport.h"
 
@@ -9,7 +10,6 @@ namespace athlos::inertial {
 
 namespace {
 QString tr(const char* text) { return QCoreApplication::translate("athlos::inertial", text); }
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 struct Plan {
@@ -85,7 +85,7 @@ ParameterSpecs OrientationProcessor::parameters() const {
                               tr("vqf: time constant of the magnetometer (heading) correction.")),
         ParameterSpec::boolean(QStringLiteral("bias_estimation"), true, tr("vqf: estimate the gyroscope bias (at rest and in motion).")),
         ParameterSpec::boolean(QStringLiteral("mag_rejection"), true, tr("vqf: detect and ride out magnetic disturbances.")),
-        ParameterSpec::number(QStringLiteral("rest_th_gyr"), 2.0 * kDeg, 0.0, kInf, QStringLiteral("rad/s"),
+        ParameterSpec::number(QStringLiteral("rest_th_gyr"), 2.0 * math::kDeg, 0.0, kInf, QStringLiteral("rad/s"),
                               tr("vqf: rest detection threshold on the gyroscope deviation.")),
         ParameterSpec::number(QStringLiteral("rest_th_acc"), 0.5, 0.0, kInf, QStringLiteral("m/s^2"),
                               tr("vqf: rest detection threshold on the accelerometer deviation.")),

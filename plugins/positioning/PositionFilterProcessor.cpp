@@ -1,9 +1,12 @@
 #include "plugins/positioning/PositionFilterProcessor.h"
 
+#include "core/math/Angles.h"
+
 #include <QCoreApplication>
 #include <QJsonObject>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace athlos::positioning {
 
@@ -249,7 +252,7 @@ Expected<std::vector<ProcessorOutput>> PositionFilterProcessor::run(const RunCon
         out.at(k, 0) = s.x;
         out.at(k, 1) = s.y;
         out.at(k, 2) = std::abs(s.speed);
-        out.at(k, 3) = reverse ? TrackGeometry::wrapAngle(s.heading + M_PI) : s.heading;
+        out.at(k, 3) = reverse ? math::wrapAngle(s.heading + std::numbers::pi) : s.heading;
         out.at(k, 4) = s.turnRate;
         out.at(k, 5) = s.accel;
         double flag = 0.0;

@@ -14,7 +14,7 @@
 
 #include <QTemporaryDir>
 #include <gtest/gtest.h>
-
+#include <numbers>
 #include <random>
 
 using namespace athlos;
@@ -46,7 +46,7 @@ std::vector<TrajectorySample> randomWalk(int steps, std::uint64_t seed) {
         walk.push_back({double(k), p, heading});
         heading += 0.6 * n(rng);
         p += 1.4 * Vector3(std::cos(heading), std::sin(heading), 0.0);
-        if (std::abs(p.x()) > 70.0) { p.x() = std::copysign(70.0, p.x()); heading = M_PI - heading; }
+        if (std::abs(p.x()) > 70.0) { p.x() = std::copysign(70.0, p.x()); heading = std::numbers::pi - heading; }
         if (std::abs(p.y()) > 30.0) { p.y() = std::copysign(30.0, p.y()); heading = -heading; }
     }
     return walk;
