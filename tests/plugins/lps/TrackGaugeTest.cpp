@@ -4,11 +4,11 @@
 #include "LpsTestSupport.h"
 
 #include "core/processing/ProcessorRunner.h"
-#include "plugins/lps/CalibrationProcessor.h"
 #include "plugins/lps/FrameAlignment.h"
 #include "plugins/lps/LpsCalibration.h"
-#include "plugins/lps/PositioningProcessor.h"
-#include "plugins/lps/SimulateProcessor.h"
+#include "plugins/lps/LpsCalibrationProcessor.h"
+#include "plugins/lps/LpsPositioningProcessor.h"
+#include "plugins/lps/SimulateLpsProcessor.h"
 #include "plugins/lps/TdoaSimulator.h"
 #include "plugins/lps/TrackGauge.h"
 
@@ -167,9 +167,9 @@ TEST(LpsCalibrationGauge, WrongTrackPoseFallsBack) {
 // tag_height 1.2) on several venues: calibrated RMSE ≤ surveyed RMSE + 0.10 m with the default
 // gauge=auto. With gauge=guess at least one of these venues fails (venue 3: +0.2 m).
 TEST(LpsCalibrationGauge, JudgedFlowPassesOnSeveralVenues) {
-    const SimulateProcessor simulate;
-    const CalibrationProcessor calibrate;
-    const PositioningProcessor positioning;
+    const SimulateLpsProcessor simulate;
+    const LpsCalibrationProcessor calibrate;
+    const LpsPositioningProcessor positioning;
     int guessFailures = 0;
     for (const int venue : {1, 2, 3, 4, 5}) {
         QTemporaryDir dir;

@@ -1,4 +1,4 @@
-#include "plugins/lps/PositioningProcessor.h"
+#include "plugins/lps/LpsPositioningProcessor.h"
 
 #include "plugins/lps/ProcessorSupport.h"
 
@@ -8,7 +8,7 @@
 
 namespace athlos::lps {
 
-struct PositioningProcessor::Plan {
+struct LpsPositioningProcessor::Plan {
     TdoaPositioning::Params params;
     BeaconLayout layout;
     TrackGeometry track;
@@ -17,15 +17,15 @@ struct PositioningProcessor::Plan {
     int orientationColumns[4] = {-1, -1, -1, -1};
 };
 
-QString PositioningProcessor::name() const { return tr("LPS positioning (TDoA)"); }
+QString LpsPositioningProcessor::name() const { return tr("LPS positioning (TDoA)"); }
 
-QString PositioningProcessor::description() const {
+QString LpsPositioningProcessor::description() const {
     return tr("Tag positions and clock offsets from TDoA readings and a beacon table, one fix per instant "
               "(2D at tag_height or 3D), with beacon selection against NLOS: all, IRLS (bisquare, 2.5·MAD), "
               "largest-residual rejection or the field of view of the body-worn tag.");
 }
 
-ParameterSpecs PositioningProcessor::parameters() const {
+ParameterSpecs LpsPositioningProcessor::parameters() const {
     const double inf = std::numeric_limits<double>::infinity();
     return {
         ParameterSpec::choice(QStringLiteral("dimension"), {QStringLiteral("auto"), QStringLiteral("2d"), QStringLiteral("3d")},
@@ -70,7 +70,7 @@ ParameterSpecs PositioningProcessor::parameters() const {
     };
 }
 
-QList<InputSpec> PositioningProcessor::inputs() const {
+QList<InputSpec> LpsPositioningProcessor::inputs() const {
     return {InputSpec{QStringLiteral("tdoa"), {QStringLiteral("lps-tdoa")}, false, false,
                       tr("TDoA readings t, beacon, dt (s), several rows per instant.")},
             InputSpec{QStringLiteral("beacons"), {QStringLiteral("beacons")}, true, false,
@@ -79,12 +79,12 @@ QList<InputSpec> PositioningProcessor::inputs() const {
                       tr("Optional orientation (qw, qx, qy, qz) for heading=orientation.")}};
 }
 
-QList<OutputSpec> PositioningProcessor::outputs() const {
+QList<OutputSpec> LpsPositioningProcessor::outputs() const {
     return {OutputSpec{QStringLiteral("lps-position"), false, QString(),
                        tr("t, x, y, z (m), offset (s), rms_residual (m), n_beacons per fix.")}};
 }
 
-bool PositioningProcessor::geometryAllows3d(const BeaconLayout& layout) {
+bool LpsPositioningProcessor::geometryAllows3d(const BeaconLayout& layout) {
     double zMin = INFINITY, zMax = -INFINITY, extent = 0.0;
     for (const auto& a : layout.positions) {
         zMin = std::min(zMin, a.z());
@@ -94,7 +94,7 @@ bool PositioningProcessor::geometryAllows3d(const BeaconLayout& layout) {
     return zMax - zMin >= 0.3 * extent;
 }
 
-Expected<PositioningProcessor::Plan> PositioningProcessor::prepare(const RunContext& context) const {
+Expected<LpsPositioningProcessor::Plan> LpsPositioningProcessor::prepare(const RunContext& context) const {
     Plan plan;
     auto layout = loadBeacons(context, 1);
     if (!layout) return layout.error();
@@ -164,12 +164,12 @@ Expected<PositioningProcessor::Plan> PositioningProcessor::prepare(const RunCont
     return plan;
 }
 
-Status PositioningProcessor::validate(const RunContext& context) const {
+Status LpsPositioningProcessor::validate(const RunContext& context) const {
     auto plan = prepare(context);
     return plan ? Status() : Status(plan.error());
 }
 
-Expected<std::vector<ProcessorOutput>> PositioningProcessor::run(const RunContext& context) const {
+Expected<std::vector<ProcessorOutput>> LpsPositioningProcessor::run(const RunContext& context) const {
     auto plan = prepare(context);
     if (!plan) return plan.error();
     TdoaPositioning::HeadingFunction orientationHeading;

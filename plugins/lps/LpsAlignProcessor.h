@@ -9,7 +9,7 @@
 
 namespace athlos::lps {
 
-class AlignProcessor : public Processor {
+class LpsAlignProcessor : public Processor {
 public:
     QString id() const override { return QStringLiteral("lps-align"); }
     QString name() const override;

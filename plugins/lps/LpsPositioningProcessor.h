@@ -10,7 +10,7 @@
 
 namespace athlos::lps {
 
-class PositioningProcessor : public Processor {
+class LpsPositioningProcessor : public Processor {
 public:
     QString id() const override { return QStringLiteral("lps-positioning"); }
     QString name() const override;

@@ -1,4 +1,4 @@
-#include "plugins/lps/SimulateProcessor.h"
+#include "plugins/lps/SimulateLpsProcessor.h"
 
 #include "plugins/lps/BeaconTable.h"
 #include "plugins/lps/ProcessorSupport.h"
@@ -9,15 +9,15 @@
 
 namespace athlos::lps {
 
-QString SimulateProcessor::name() const { return tr("Simulate LPS venue and recording"); }
+QString SimulateLpsProcessor::name() const { return tr("Simulate LPS venue and recording"); }
 
-QString SimulateProcessor::description() const {
+QString SimulateLpsProcessor::description() const {
     return tr("Simulated TDoA venue around a 400 m track and a calibration walk or a run on it: 7 µs offset, 0.1 m noise, "
               "1 % positive outliers of 20 m, optional body-shadowing NLOS; plus surveyed and perturbed beacon tables "
               "and the true trajectory.");
 }
 
-ParameterSpecs SimulateProcessor::parameters() const {
+ParameterSpecs SimulateLpsProcessor::parameters() const {
     const int maxInt = std::numeric_limits<int>::max();
     return {
         ParameterSpec::choice(QStringLiteral("scenario"), {QStringLiteral("walk"), QStringLiteral("run")}, QStringLiteral("walk"),
@@ -43,14 +43,14 @@ ParameterSpecs SimulateProcessor::parameters() const {
     };
 }
 
-QList<OutputSpec> SimulateProcessor::outputs() const {
+QList<OutputSpec> SimulateLpsProcessor::outputs() const {
     return {OutputSpec{QStringLiteral("lps-tdoa"), false, QString(), tr("TDoA readings t, beacon, dt (s).")},
             OutputSpec{QStringLiteral("beacons"), true, QStringLiteral("beacons"), tr("Surveyed beacon table.")},
             OutputSpec{QStringLiteral("beacons"), true, QStringLiteral("guess"), tr("Perturbed initial beacon table.")},
             OutputSpec{QStringLiteral("trajectory"), false, QStringLiteral("truth"), tr("True tag trajectory t, x, y, z (m).")}};
 }
 
-Expected<std::vector<ProcessorOutput>> SimulateProcessor::run(const RunContext& context) const {
+Expected<std::vector<ProcessorOutput>> SimulateLpsProcessor::run(const RunContext& context) const {
     const bool walk = context.text(QStringLiteral("scenario")) == QLatin1String("walk");
     const double speed = context.number(QStringLiteral("speed")) > 0 ? context.number(QStringLiteral("speed")) : (walk ? 1.4 : 6.0);
     const double rate = context.number(QStringLiteral("rate")) > 0 ? context.number(QStringLiteral("rate")) : (walk ? 1.0 : 10.0);
