@@ -1,20 +1,21 @@
 #include "plugins/inertial/GnssImuProcessor.h"
 
+#include "core/processing/OutputStreams.h"
+#include "core/processing/Translator.h"
 #include "plugins/inertial/GnssImuFusion.h"
+#include "plugins/inertial/ImuColumns.h"
 #include "plugins/inertial/LocalTangentPlane.h"
-#include "plugins/inertial/ProcessorSupport.h"
 
-#include <QCoreApplication>
 #include <cmath>
 
 namespace athlos::inertial {
 
 namespace {
-QString tr(const char* text) { return QCoreApplication::translate("athlos::inertial", text); }
+constexpr Translator tr{"athlos::inertial"};
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 struct Plan {
-    LoadedStream imu, gnss;
+    InputSamples imu, gnss;
     ImuColumns columns;
     GnssSeries series;
     GnssImuEkf::Params params;
@@ -65,18 +66,18 @@ Expected<GnssSeries> gnssSeries(const StreamInfo& info, const StreamData& data, 
     return s;
 }
 
-Expected<Plan> prepare(const RunContext& c) {
+Expected<Plan> makePlan(const RunContext& c) {
     Plan plan;
-    auto imu = loadInput(c, 0);
+    auto imu = c.samples(0);
     if (!imu) return imu.error();
-    auto gnss = loadInput(c, 1);
+    auto gnss = c.samples(1);
     if (!gnss) return gnss.error();
     plan.imu = *imu;
     plan.gnss = *gnss;
-    auto columns = imuColumns(plan.imu.stream->info(), c.inputPath(0), false);
+    auto columns = imuColumns(plan.imu, false);
     if (!columns) return columns.error();
     plan.columns = *columns;
-    auto ts = samplingInterval(*plan.imu.data, c.inputPath(0));
+    auto ts = plan.imu.samplingInterval();
     if (!ts) return ts.error();
     plan.ts = *ts;
     const auto num = [&](const char* name, double def) {
@@ -141,13 +142,10 @@ QList<OutputSpec> GnssImuProcessor::outputs() const {
                        tr("x, y, z, vx, vy, vz (ENU from the first fix), qw..qz, speed (m/s, horizontal), distance (m).")}};
 }
 
-Status GnssImuProcessor::validate(const RunContext& context) const {
-    auto plan = prepare(context);
-    return plan ? Status() : Status(plan.error());
-}
+Status GnssImuProcessor::prepare(const RunContext& context) const { return statusOf(makePlan(context)); }
 
 Expected<std::vector<ProcessorOutput>> GnssImuProcessor::run(const RunContext& context) const {
-    auto plan = prepare(context);
+    auto plan = makePlan(context);
     if (!plan) return plan.error();
     const StreamData& in = *plan->imu.data;
     const ImuBatch batch{in.values.data() + plan->columns.gyr, in.values.data() + plan->columns.acc, nullptr, in.rows(),
@@ -173,10 +171,10 @@ Expected<std::vector<ProcessorOutput>> GnssImuProcessor::run(const RunContext& c
     context.report(1.0);
     QJsonObject attributes{{"origin", plan->origin}, {"sampling_rate", 1.0 / plan->ts}};
     std::vector<ProcessorOutput> outputs;
-    outputs.push_back({QString(), makeStream(QStringLiteral("trajectory"), QStringLiteral("ENU"),
-                                             {"x", "y", "z", "vx", "vy", "vz", "qw", "qx", "qy", "qz", "speed", "distance"},
-                                             {"m", "m", "m", "m/s", "m/s", "m/s", "1", "1", "1", "1", "m/s", "m"},
-                                             std::move(out), attributes)});
+    outputs.push_back({QString(), outputStream(QStringLiteral("trajectory"), QStringLiteral("ENU"),
+                                               columnsOf({"x", "y", "z", "vx", "vy", "vz", "qw", "qx", "qy", "qz", "speed", "distance"},
+                                                         {"m", "m", "m", "m/s", "m/s", "m/s", "1", "1", "1", "1", "m/s", "m"}),
+                                               std::move(out), attributes)});
     return outputs;
 }
 

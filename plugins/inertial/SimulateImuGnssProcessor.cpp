@@ -1,16 +1,16 @@
 #include "plugins/inertial/SimulateImuGnssProcessor.h"
 
+#include "core/processing/OutputStreams.h"
+#include "core/processing/Translator.h"
 #include "plugins/inertial/ImuGnssSimulator.h"
-#include "plugins/inertial/ProcessorSupport.h"
 
-#include <QCoreApplication>
 #include <cmath>
 #include <limits>
 
 namespace athlos::inertial {
 
 namespace {
-QString tr(const char* text) { return QCoreApplication::translate("athlos::inertial", text); }
+constexpr Translator tr{"athlos::inertial"};
 }  // namespace
 
 QString SimulateImuGnssProcessor::name() const { return tr("Simulate IMU and GNSS"); }
@@ -81,16 +81,20 @@ Expected<std::vector<ProcessorOutput>> SimulateImuGnssProcessor::run(const RunCo
         }
     const QJsonObject attrs{{"simulated", true}, {"seed", static_cast<double>(p.seed)}};
     std::vector<ProcessorOutput> out;
-    out.push_back({QString(), makeStream(QStringLiteral("imu"), QStringLiteral("sensor"),
-                                         {"acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z", "mag_x", "mag_y", "mag_z"},
-                                         {"m/s^2", "m/s^2", "m/s^2", "rad/s", "rad/s", "rad/s", "uT", "uT", "uT"},
-                                         std::move(imu), attrs)});
-    out.push_back({QStringLiteral("gnss"), makeStream(QStringLiteral("gnss"), QStringLiteral("ENU"), {"x", "y", "z", "vx", "vy", "vz"},
-                                                      {"m", "m", "m", "m/s", "m/s", "m/s"}, std::move(gnss), attrs)});
+    out.push_back({QString(),
+                   outputStream(QStringLiteral("imu"), QStringLiteral("sensor"),
+                                columnsOf({"acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z", "mag_x", "mag_y", "mag_z"},
+                                          {"m/s^2", "m/s^2", "m/s^2", "rad/s", "rad/s", "rad/s", "uT", "uT", "uT"}),
+                                std::move(imu), attrs)});
+    out.push_back({QStringLiteral("gnss"),
+                   outputStream(QStringLiteral("gnss"), QStringLiteral("ENU"),
+                                columnsOf({"x", "y", "z", "vx", "vy", "vz"}, {"m", "m", "m", "m/s", "m/s", "m/s"}),
+                                std::move(gnss), attrs)});
     out.push_back({QStringLiteral("truth"),
-                   makeStream(QStringLiteral("trajectory"), QStringLiteral("ENU"),
-                              {"x", "y", "z", "vx", "vy", "vz", "qw", "qx", "qy", "qz", "speed", "distance"},
-                              {"m", "m", "m", "m/s", "m/s", "m/s", "1", "1", "1", "1", "m/s", "m"}, std::move(truth), attrs)});
+                   outputStream(QStringLiteral("trajectory"), QStringLiteral("ENU"),
+                                columnsOf({"x", "y", "z", "vx", "vy", "vz", "qw", "qx", "qy", "qz", "speed", "distance"},
+                                          {"m", "m", "m", "m/s", "m/s", "m/s", "1", "1", "1", "1", "m/s", "m"}),
+                                std::move(truth), attrs)});
     c.report(1.0);
     return out;
 }

@@ -1,11 +1,16 @@
 #include "plugins/lps/LpsAlignProcessor.h"
 
+#include "core/processing/Translator.h"
 #include "plugins/lps/BeaconTable.h"
-#include "plugins/lps/ProcessorSupport.h"
+#include "plugins/lps/LpsInputs.h"
 
 #include <QJsonArray>
 
 namespace athlos::lps {
+
+namespace {
+constexpr Translator tr{"athlos::lps"};
+}  // namespace
 
 QString LpsAlignProcessor::name() const { return tr("LPS frame alignment"); }
 
@@ -81,7 +86,7 @@ Expected<std::pair<std::vector<Vector3>, std::vector<Vector3>>> collectMarks(con
 
 }  // namespace
 
-Status LpsAlignProcessor::validate(const RunContext& context) const {
+Status LpsAlignProcessor::prepare(const RunContext& context) const {
     auto marks = collectMarks(context);
     if (!marks) return marks.error();
     const bool full = context.text(QStringLiteral("mode")) == QLatin1String("full");

@@ -1,14 +1,17 @@
 #include "plugins/lps/LpsCalibrationProcessor.h"
 
+#include "core/processing/Translator.h"
 #include "plugins/lps/BeaconTable.h"
 #include "plugins/lps/LpsCalibration.h"
-#include "plugins/lps/ProcessorSupport.h"
+#include "plugins/lps/LpsInputs.h"
 
 #include <cmath>
 
 namespace athlos::lps {
 
 namespace {
+constexpr Translator tr{"athlos::lps"};
+
 ParameterSpec optionalNumber(const QString& name, const QString& unit, const QString& help, double min = -1e9,
                              double max = 1e9) {
     ParameterSpec spec = ParameterSpec::number(name, 0.0, min, max, unit, help);

@@ -1,12 +1,17 @@
 #include "plugins/lps/LpsPositioningProcessor.h"
 
-#include "plugins/lps/ProcessorSupport.h"
+#include "core/processing/Translator.h"
+#include "plugins/lps/LpsInputs.h"
 
 #include <QJsonArray>
 #include <algorithm>
 #include <cmath>
 
 namespace athlos::lps {
+
+namespace {
+constexpr Translator tr{"athlos::lps"};
+}  // namespace
 
 struct LpsPositioningProcessor::Plan {
     TdoaPositioning::Params params;
@@ -94,7 +99,7 @@ bool LpsPositioningProcessor::geometryAllows3d(const BeaconLayout& layout) {
     return zMax - zMin >= 0.3 * extent;
 }
 
-Expected<LpsPositioningProcessor::Plan> LpsPositioningProcessor::prepare(const RunContext& context) const {
+Expected<LpsPositioningProcessor::Plan> LpsPositioningProcessor::makePlan(const RunContext& context) const {
     Plan plan;
     auto layout = loadBeacons(context, 1);
     if (!layout) return layout.error();
@@ -144,18 +149,17 @@ Expected<LpsPositioningProcessor::Plan> LpsPositioningProcessor::prepare(const R
             plan.track = std::move(*track);
         }
         if (plan.params.heading == TdoaPositioning::HeadingSource::Orientation) {
-            const Stream* stream = context.inputCount() > 2 ? context.stream(2) : nullptr;
-            if (!stream)
+            if (!context.stream(2))
                 return makeError(QStringLiteral("heading=orientation needs the orientation input (a third --input)"));
             const char* names[] = {"qw", "qx", "qy", "qz"};
             for (int c = 0; c < 4; ++c) {
-                plan.orientationColumns[c] = stream->info().columnIndex(QString::fromLatin1(names[c]));
+                plan.orientationColumns[c] = context.stream(2)->info().columnIndex(QString::fromLatin1(names[c]));
                 if (plan.orientationColumns[c] < 0)
-                    return makeError(QStringLiteral("orientation stream '%1' has no column %2").arg(context.inputPath(2), names[c]));
+                    return context.inputError(2, QStringLiteral("no column %1").arg(QString::fromLatin1(names[c])));
             }
-            auto data = stream->data();
-            if (!data) return data.error();
-            plan.orientation = *data;
+            auto orientation = context.samples(2);
+            if (!orientation) return orientation.error();
+            plan.orientation = orientation->data;
         }
     }
     auto epochs = loadEpochs(context, 0, plan.layout);
@@ -164,13 +168,10 @@ Expected<LpsPositioningProcessor::Plan> LpsPositioningProcessor::prepare(const R
     return plan;
 }
 
-Status LpsPositioningProcessor::validate(const RunContext& context) const {
-    auto plan = prepare(context);
-    return plan ? Status() : Status(plan.error());
-}
+Status LpsPositioningProcessor::prepare(const RunContext& context) const { return statusOf(makePlan(context)); }
 
 Expected<std::vector<ProcessorOutput>> LpsPositioningProcessor::run(const RunContext& context) const {
-    auto plan = prepare(context);
+    auto plan = makePlan(context);
     if (!plan) return plan.error();
     TdoaPositioning::HeadingFunction orientationHeading;
     if (plan->orientation) {

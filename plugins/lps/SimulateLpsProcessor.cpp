@@ -1,13 +1,18 @@
 #include "plugins/lps/SimulateLpsProcessor.h"
 
+#include "core/processing/OutputStreams.h"
+#include "core/processing/Translator.h"
 #include "plugins/lps/BeaconTable.h"
-#include "plugins/lps/ProcessorSupport.h"
 #include "plugins/lps/TdoaSimulator.h"
 #include "plugins/lps/TdoaStream.h"
 
 #include <cmath>
 
 namespace athlos::lps {
+
+namespace {
+constexpr Translator tr{"athlos::lps"};
+}  // namespace
 
 QString SimulateLpsProcessor::name() const { return tr("Simulate LPS venue and recording"); }
 
@@ -81,17 +86,17 @@ Expected<std::vector<ProcessorOutput>> SimulateLpsProcessor::run(const RunContex
     const auto recording = sim.measure(trajectory, surveyed);
     context.report(0.9, QStringLiteral("writing"));
 
-    std::vector<double> t;
-    std::vector<Vector3> positions;
-    for (const auto& s : recording.truth) {
-        t.push_back(s.t);
-        positions.push_back(s.position);
+    StreamData truth(recording.truth.size(), 3);
+    for (std::size_t k = 0; k < recording.truth.size(); ++k) {
+        truth.t[k] = recording.truth[k].t;
+        for (int c = 0; c < 3; ++c) truth.at(k, c) = recording.truth[k].position(c);
     }
     std::vector<ProcessorOutput> outputs;
     outputs.push_back({QString(), streamFromEpochs(recording.epochs, surveyed)});
     outputs.push_back({QStringLiteral("beacons"), tableFromLayout(surveyed)});
     outputs.push_back({QStringLiteral("guess"), tableFromLayout(guess, QStringLiteral("guess"))});
-    outputs.push_back({QStringLiteral("truth"), trajectoryStream(t, positions, QStringLiteral("trajectory"), QStringLiteral("truth"))});
+    outputs.push_back({QStringLiteral("truth"), outputStream(QStringLiteral("trajectory"), QStringLiteral("lps"),
+                                                             columnsOf({"x", "y", "z"}, {"m", "m", "m"}), std::move(truth))});
     context.report(1.0);
     return outputs;
 }
