@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <memory>
+#include <numbers>
 #include <random>
 
 using namespace athlos;
@@ -34,7 +35,7 @@ std::shared_ptr<const StreamData> samples()
         for (std::size_t i = 0; i < kSamples; ++i) {
             const double t = double(i) / kRate;
             d->t[i] = t;
-            d->at(i, 0) = std::sin(2 * M_PI * t) + 0.1 * std::sin(t / 600.0) + noise(rng);
+            d->at(i, 0) = std::sin(2 * std::numbers::pi * t) + 0.1 * std::sin(t / 600.0) + noise(rng);
         }
         for (std::size_t i = 12345; i < kSamples; i += 1'000'003) d->at(i, 0) += 8.0;
         return std::shared_ptr<const StreamData>(std::move(d));

@@ -8,7 +8,7 @@
 
 namespace athlos::estimation {
 
-template <class Model>
+template <EkfModel Model>
 class Ekf {
 public:
     static constexpr int N = Model::kStateDim;

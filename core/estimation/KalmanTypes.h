@@ -3,22 +3,14 @@
 // runner, noise estimation). Filters are templates over a motion/measurement Model with fixed
 // sizes, so that the inner loop works on stack matrices (Eigen fixed-size) without allocation.
 //
-// The Model concept (all members const; t = time at the end of the step in s, T = step in s):
-//   static constexpr int kStateDim, kMeasurementDim;
-//   StateVector  predict(const StateVector& x, double T, double t, StateMatrix* jacobian)
-//                F(x, T) (eq. 2.10); fills Φ = ∂F/∂x when jacobian != nullptr (EKF). One call
-//                for both because the Jacobian reuses the prediction's trigonometry and map queries.
-//   StateMatrix  processNoise(double T, double t)                          Q_k
-//   Measurement  measure(const StateVector& x, double t)                   h(x)
-//   MeasurementJacobian measurementJacobian(const StateVector& x, double t)  C = ∂h/∂x (EKF only)
-//   MeasurementMatrix   measurementNoise(double t)                         R
-//   Measurement  residual(const Measurement& y, const Measurement& yHat)  y − ŷ (wraps angles)
-//   StateVector  difference(const StateVector& a, const StateVector& b)   a − b (wraps angles)
-//   void         normalize(StateVector& x)                                 e.g. wrap the heading
-// ModelDefaults<N, M> supplies plain-subtraction residual/difference and a no-op normalize.
+// What a model must provide is the concept KalmanModel below (EkfModel adds the measurement
+// Jacobian); ModelDefaults<N, M> supplies the types, plain-subtraction residual/difference and a
+// no-op normalize, so a model usually writes predict, processNoise, measure, measurementNoise
+// (and measurementJacobian for the EKF).
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <cmath>
+#include <concepts>
 #include <limits>
 
 namespace athlos::estimation {
@@ -41,6 +33,37 @@ struct ModelDefaults {
     Measurement residual(const Measurement& y, const Measurement& yHat) const { return y - yHat; }
     StateVector difference(const StateVector& a, const StateVector& b) const { return a - b; }
     void normalize(StateVector&) const {}
+};
+
+// The model requirement of Ukf, SrUkf and RtsSmoother (all members const; t = time at the end of
+// the step in s, T = step in s):
+//   kStateDim, kMeasurementDim                   N and M (static constexpr int)
+//   predict(x, T, t, jacobian)                   F(x, T) (eq. 2.10); fills Φ = ∂F/∂x when jacobian !=
+//                                                nullptr (EKF). One call for both because the Jacobian
+//                                                reuses the prediction's trigonometry and map queries.
+//   processNoise(T, t)                           Q_k
+//   measure(x, t)                                h(x)
+//   measurementNoise(t)                          R
+//   residual(y, yHat)                            y − ŷ (wraps angles)
+//   difference(a, b)                             a − b of two states (wraps angles)
+//   normalize(x)                                 puts x back in its domain, e.g. wraps the heading
+template <class Model>
+concept KalmanModel = requires(const Model& model, Vector<Model::kStateDim>& x, const Vector<Model::kMeasurementDim>& y,
+                               Matrix<Model::kStateDim, Model::kStateDim>* jacobian, double T, double t) {
+    requires Model::kStateDim > 0 && Model::kMeasurementDim > 0;
+    { model.predict(x, T, t, jacobian) } -> std::convertible_to<Vector<Model::kStateDim>>;
+    { model.processNoise(T, t) } -> std::convertible_to<Matrix<Model::kStateDim, Model::kStateDim>>;
+    { model.measure(x, t) } -> std::convertible_to<Vector<Model::kMeasurementDim>>;
+    { model.measurementNoise(t) } -> std::convertible_to<Matrix<Model::kMeasurementDim, Model::kMeasurementDim>>;
+    { model.residual(y, y) } -> std::convertible_to<Vector<Model::kMeasurementDim>>;
+    { model.difference(x, x) } -> std::convertible_to<Vector<Model::kStateDim>>;
+    model.normalize(x);
+};
+
+// The EKF's requirement: a KalmanModel with the measurement Jacobian C = ∂h/∂x (M × N).
+template <class Model>
+concept EkfModel = KalmanModel<Model> && requires(const Model& model, const Vector<Model::kStateDim>& x, double t) {
+    { model.measurementJacobian(x, t) } -> std::convertible_to<Matrix<Model::kMeasurementDim, Model::kStateDim>>;
 };
 
 // Outcome of one measurement update (also reported when the update was gated out).

@@ -9,7 +9,7 @@
 
 namespace athlos::estimation {
 
-template <class Model>
+template <KalmanModel Model>
 class SrUkf {
 public:
     static constexpr int N = Model::kStateDim;

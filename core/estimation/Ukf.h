@@ -8,7 +8,7 @@
 
 namespace athlos::estimation {
 
-template <class Model>
+template <KalmanModel Model>
 class Ukf {
 public:
     static constexpr int N = Model::kStateDim;

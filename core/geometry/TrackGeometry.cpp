@@ -10,15 +10,10 @@ namespace athlos {
 
 namespace {
 constexpr double kPi = std::numbers::pi;
+using math::wrapAngle;
 
 double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 }  // namespace
-
-double TrackGeometry::wrapFar(double angle) {
-    if (!std::isfinite(angle)) return angle;
-    angle = std::remainder(angle, 2.0 * kPi);  // [−π, π]
-    return angle <= -kPi ? angle + 2.0 * kPi : angle;
-}
 
 TrackGeometry::TrackGeometry() : TrackGeometry(Kind::Oval, OvalParams{}, {}, QStringLiteral("iaaf-400m")) {}
 

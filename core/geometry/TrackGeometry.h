@@ -14,6 +14,7 @@
 // lateral offset (m) to the RIGHT of the running direction (outwards on a counter-clockwise oval).
 // Oval reference line = inner kerb; s = 0 at the finish line (end of the home straight, x = +L/2,
 // y = −r), so s runs: bend 1 (centre +L/2), back straight, bend 2 (centre −L/2), home straight.
+#include "core/math/Angles.h"
 #include "core/util/Expected.h"
 
 #include <Eigen/Core>
@@ -23,6 +24,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <vector>
 
 namespace athlos {
@@ -118,20 +120,11 @@ public:
     // Point at arc length s (wrapped on closed tracks, clamped on open ones) and offset d.
     TrackPoint pointAt(double s, double d) const;
 
-    // Wraps an angle to (−π, π]. Inline: filters call it every step.
-    static double wrapAngle(double angle) {
-        constexpr double pi = 3.14159265358979323846;
-        if (angle > pi) angle -= 2.0 * pi;
-        else if (angle <= -pi) angle += 2.0 * pi;
-        return angle > pi || angle <= -pi ? wrapFar(angle) : angle;
-    }
-
     // Pose transform.
     Eigen::Vector2d toLps(const Eigen::Vector2d& pTrack) const;
     Eigen::Vector2d toTrack(const Eigen::Vector2d& pLps) const;
 
 private:
-    static double wrapFar(double angle);
     inline TrackQuery fieldOval(const Eigen::Vector2d& p) const;
     TrackGeometry(Kind kind, OvalParams oval, PolylineParams poly, QString name);
     TrackQuery queryOvalLocal(const Eigen::Vector2d& q) const;
@@ -157,7 +150,8 @@ inline TrackQuery TrackGeometry::field(const Eigen::Vector2d& p) const {
 }
 
 inline TrackQuery TrackGeometry::fieldOval(const Eigen::Vector2d& p) const {
-    constexpr double pi = 3.14159265358979323846;
+    using math::wrapAngle;
+    constexpr double pi = std::numbers::pi;
     const Eigen::Vector2d q = rot_.transpose() * (p - Eigen::Vector2d(pose_.x, pose_.y));
     const double halfL = 0.5 * oval_.straightLength;
     TrackQuery f;

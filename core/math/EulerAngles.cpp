@@ -1,5 +1,7 @@
 #include "core/math/EulerAngles.h"
 
+#include "core/math/Angles.h"
+
 #include <cmath>
 #include <numbers>
 
@@ -54,7 +56,7 @@ Vec3 extrinsicAngles(const Quat& quat, int i, int j, int k0) {
         angles[2] *= sign;
         angles[1] -= std::numbers::pi / 2.0;
     }
-    for (int n = 0; n < 3; ++n) angles[n] = wrapPi(angles[n]);
+    for (int n = 0; n < 3; ++n) angles[n] = wrapAngle(angles[n]);
     return angles;
 }
 

@@ -1,7 +1,8 @@
 #include "core/math/OrientationError.h"
 
+#include "core/math/Angles.h"
+
 #include <cmath>
-#include <numbers>
 
 namespace athlos::math {
 
@@ -29,11 +30,10 @@ ErrorRms orientationErrorRms(std::span<const Quat> estimate, std::span<const Qua
         ++r.count;
     }
     if (r.count == 0) return r;
-    constexpr double deg = 180.0 / std::numbers::pi;
     const double n1 = static_cast<double>(r.count);
-    r.total = std::sqrt(st / n1) * deg;
-    r.heading = std::sqrt(sh / n1) * deg;
-    r.inclination = std::sqrt(si / n1) * deg;
+    r.total = std::sqrt(st / n1) / kDeg;
+    r.heading = std::sqrt(sh / n1) / kDeg;
+    r.inclination = std::sqrt(si / n1) / kDeg;
     return r;
 }
 

@@ -99,11 +99,4 @@ Quat quatFromAccMag(const Vec3& acc, const Vec3& mag) {
     return canonical(Quat(r)).normalized();
 }
 
-double wrapPi(double angle) {
-    constexpr double pi = std::numbers::pi;
-    angle = std::fmod(angle + pi, 2.0 * pi);
-    if (angle <= 0.0) angle += 2.0 * pi;
-    return angle - pi;
-}
-
 }  // namespace athlos::math

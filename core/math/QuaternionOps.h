@@ -59,7 +59,4 @@ Quat quatFromAccelerometer(const Vec3& acc);
 // north = +y). Falls back to quatFromAccelerometer when mag is (nearly) parallel to acc or zero.
 Quat quatFromAccMag(const Vec3& acc, const Vec3& mag);
 
-// Wraps an angle to (-π, π].
-double wrapPi(double angle);
-
 }  // namespace athlos::math

@@ -1,7 +1,8 @@
 #include "core/model/StreamData.h"
 
+#include "core/math/Statistics.h"
+
 #include <openssl/evp.h>
-#include <algorithm>
 
 namespace athlos {
 
@@ -17,9 +18,7 @@ double StreamData::medianInterval() const {
     if (t.size() < 2) return 0.0;
     std::vector<double> dt(t.size() - 1);
     for (std::size_t i = 1; i < t.size(); ++i) dt[i - 1] = t[i] - t[i - 1];
-    auto mid = dt.begin() + static_cast<long>(dt.size() / 2);
-    std::nth_element(dt.begin(), mid, dt.end());
-    return *mid;
+    return math::upperMedian(std::move(dt));
 }
 
 QByteArray StreamData::contentHash() const {

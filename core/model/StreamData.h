@@ -33,7 +33,7 @@ struct StreamData {
 
     // Index of the first sample whose time is not strictly after its predecessor, or -1.
     long long firstNonIncreasing() const;
-    // Median sampling interval (s); 0 for fewer than two samples.
+    // Median sampling interval (s; math::upperMedian of the steps); 0 for fewer than two samples.
     double medianInterval() const;
     // SHA-256 over t and values (little-endian float64), hex. Written with every stream so that
     // provenance can name exact inputs without reading samples back.

@@ -154,4 +154,13 @@ Expected<QVariantMap> validateParameters(const ParameterSpecs& specs, const QVar
     return result;
 }
 
+QStringList splitList(const QString& text) {
+    QStringList items;
+    for (const QString& item : text.split(QLatin1Char(','))) {
+        const QString trimmed = item.trimmed();
+        if (!trimmed.isEmpty()) items << trimmed;
+    }
+    return items;
+}
+
 }  // namespace athlos

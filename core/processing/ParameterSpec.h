@@ -44,4 +44,8 @@ using ParameterSpecs = QList<ParameterSpec>;
 // Validates a full parameter map against specs: unknown names are errors, defaults are filled in.
 Expected<QVariantMap> validateParameters(const ParameterSpecs& specs, const QVariantMap& given);
 
+// The items of a list parameter ("acc_x, acc_y,acc_z"): split at commas, blanks trimmed, empty
+// items dropped.
+QStringList splitList(const QString& text);
+
 }  // namespace athlos

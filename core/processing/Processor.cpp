@@ -4,9 +4,23 @@
 
 namespace athlos {
 
-RunContext::RunContext(const Project& project, std::vector<const Stream*> streams, std::vector<const Table*> tables,
-                       std::vector<QString> inputPaths, QVariantMap parameters, QString outputPath, Progress progress)
+Error InputSamples::error(const QString& message) const {
+    return makeError(QStringLiteral("input '%1' (%2): %3").arg(path, role, message));
+}
+
+Expected<double> InputSamples::samplingInterval() const {
+    if (data->rows() < 2)
+        return error(QStringLiteral("%1 sample(s); at least 2 are needed").arg(data->rows()));
+    const double ts = data->medianInterval();
+    if (!(ts > 0.0)) return error(QStringLiteral("no positive sampling interval"));
+    return ts;
+}
+
+RunContext::RunContext(const Project& project, QList<InputSpec> inputSpecs, std::vector<const Stream*> streams,
+                       std::vector<const Table*> tables, std::vector<QString> inputPaths, QVariantMap parameters,
+                       QString outputPath, Progress progress)
     : project_(project),
+      inputSpecs_(std::move(inputSpecs)),
       streams_(std::move(streams)),
       tables_(std::move(tables)),
       inputPaths_(std::move(inputPaths)),
@@ -20,6 +34,30 @@ const Stream* RunContext::stream(int index) const {
 
 const Table* RunContext::table(int index) const {
     return index >= 0 && index < int(tables_.size()) ? tables_[std::size_t(index)] : nullptr;
+}
+
+QString RunContext::inputRole(int index) const {
+    return index >= 0 && index < inputSpecs_.size() ? inputSpecs_[index].name : QStringLiteral("#%1").arg(index + 1);
+}
+
+Error RunContext::inputError(int index, const QString& message) const {
+    const QString path = index >= 0 && index < inputCount() ? inputPath(index) : QString();
+    if (path.isEmpty()) return makeError(QStringLiteral("input '%1': %2").arg(inputRole(index), message));
+    return makeError(QStringLiteral("input '%1' (%2): %3").arg(path, inputRole(index), message));
+}
+
+Expected<InputSamples> RunContext::samples(int index) const {
+    const Stream* s = stream(index);
+    if (!s) return makeError(QStringLiteral("input '%1' was not given").arg(inputRole(index)));
+    auto data = s->data();
+    if (!data) return inputError(index, QStringLiteral("cannot read its samples: %1").arg(data.message()));
+    return InputSamples{s, std::move(data).value(), inputPath(index), inputRole(index)};
+}
+
+Expected<const Table*> RunContext::requireTable(int index) const {
+    const Table* t = table(index);
+    if (!t) return makeError(QStringLiteral("input '%1' was not given").arg(inputRole(index)));
+    return t;
 }
 
 QJsonObject Processor::describe() const {

@@ -49,10 +49,27 @@ struct ProcessorOutput {
     std::variant<Stream, Table, Annotations> item;
 };
 
+// One input stream of a run with its samples loaded (RunContext::samples()).
+struct InputSamples {
+    const Stream* stream = nullptr;
+    std::shared_ptr<const StreamData> data;
+    QString path;  // "rec/item", as given to the run
+    QString role;  // InputSpec::name
+
+    const StreamInfo& info() const { return stream->info(); }
+    // An error about this input: "input 'rec/imu' (signal): <message>" (the runner prefixes the
+    // processor id), the form the runner uses for its own input checks.
+    Error error(const QString& message) const;
+    // The nominal sampling interval (median step, s), or an error naming the input when it has
+    // fewer than 2 samples or no positive step.
+    Expected<double> samplingInterval() const;
+};
+
 class RunContext {
 public:
-    RunContext(const Project& project, std::vector<const Stream*> streams, std::vector<const Table*> tables,
-               std::vector<QString> inputPaths, QVariantMap parameters, QString outputPath, Progress progress);
+    RunContext(const Project& project, QList<InputSpec> inputSpecs, std::vector<const Stream*> streams,
+               std::vector<const Table*> tables, std::vector<QString> inputPaths, QVariantMap parameters,
+               QString outputPath, Progress progress);
 
     const Project& project() const { return project_; }
     // Inputs in the order of Processor::inputs(); absent optional inputs are nullptr.
@@ -60,7 +77,18 @@ public:
     const Table* table(int index) const;
     const QString& inputPath(int index) const { return inputPaths_.at(index); }
     int inputCount() const { return static_cast<int>(inputPaths_.size()); }
+    // The role of input `index` (InputSpec::name), e.g. "signal".
+    QString inputRole(int index) const;
     const QString& outputPath() const { return outputPath_; }
+
+    // The samples of input stream `index` (loaded on first use, shared with other readers). The
+    // error names the input and the stream: "input 'rec/imu' (signal): cannot read its samples:
+    // <reason>" or "input 'signal' was not given"; the runner prefixes the processor id.
+    Expected<InputSamples> samples(int index) const;
+    // The table of input `index`, or the same kind of error when it was not given.
+    Expected<const Table*> requireTable(int index) const;
+    // An error about input `index` in the same form: "input 'rec/imu' (signal): <message>".
+    Error inputError(int index, const QString& message) const;
 
     const QVariantMap& parameters() const { return parameters_; }
     bool has(const QString& name) const { return parameters_.contains(name); }
@@ -75,6 +103,7 @@ public:
 
 private:
     const Project& project_;
+    QList<InputSpec> inputSpecs_;
     std::vector<const Stream*> streams_;
     std::vector<const Table*> tables_;
     std::vector<QString> inputPaths_;
@@ -95,9 +124,12 @@ public:
     virtual QList<InputSpec> inputs() const = 0;
     virtual QList<OutputSpec> outputs() const = 0;
 
-    // Cross-parameter and parameter-vs-data checks that need the inputs (e.g. cut-off below
-    // Nyquist). Called before run(); the default accepts.
-    virtual Status validate(const RunContext&) const { return {}; }
+    // Optional hook: the checks and preparation that need the inputs (e.g. cut-off below Nyquist,
+    // required columns present), shared by validate() and run(). A processor with a typed plan
+    // keeps it in a function of its own and returns statusOf(plan(context)) here. Default: accepts.
+    virtual Status prepare(const RunContext&) const { return {}; }
+    // Called by the runner before run(); the default is prepare().
+    virtual Status validate(const RunContext& context) const { return prepare(context); }
 
     virtual Expected<std::vector<ProcessorOutput>> run(const RunContext& context) const = 0;
 

@@ -123,7 +123,7 @@ Expected<RunOutcome> runProcessor(Project& project, const Processor& processor, 
     auto params = validateParameters(processor.parameters(), request.parameters);
     if (!params) return makeError(QStringLiteral("%1: %2").arg(pid, params.message()));
 
-    RunContext context(project, streams, tables, inputPaths, *params, request.output, progress);
+    RunContext context(project, specs, streams, tables, inputPaths, *params, request.output, progress);
     if (Status valid = processor.validate(context); !valid) return makeError(QStringLiteral("%1: %2").arg(pid, valid.message()));
 
     auto produced = processor.run(context);

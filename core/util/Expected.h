@@ -54,4 +54,10 @@ private:
 
 inline Error makeError(QString message) { return Error{std::move(message)}; }
 
+// The outcome of an Expected without its value.
+template <class T>
+Status statusOf(const Expected<T>& expected) {
+    return expected ? Status() : Status(expected.error());
+}
+
 }  // namespace athlos

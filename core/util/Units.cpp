@@ -1,5 +1,7 @@
 #include "core/util/Units.h"
 
+#include "core/math/Angles.h"
+
 #include <QHash>
 #include <cmath>
 #include <numbers>
@@ -15,7 +17,6 @@ struct UnitDef {
 };
 
 const QHash<QString, UnitDef>& unitTable() {
-    constexpr double kDeg = std::numbers::pi / 180.0;
     constexpr double kStandardGravity = 9.80665;
     static const QHash<QString, UnitDef> table{
         {"s", {"time", 1.0}},          {"ms", {"time", 1e-3}},       {"us", {"time", 1e-6}},
@@ -24,9 +25,9 @@ const QHash<QString, UnitDef>& unitTable() {
         {"km", {"length", 1e3}},       {"m/s", {"speed", 1.0}},      {"km/h", {"speed", 1.0 / 3.6}},
         {"mm/s", {"speed", 1e-3}},     {"cm/s", {"speed", 1e-2}},    {"m/s^2", {"acceleration", 1.0}},
         {"g", {"acceleration", kStandardGravity}},                   {"mg", {"acceleration", kStandardGravity * 1e-3}},
-        {"rad/s", {"angular rate", 1.0}},                            {"deg/s", {"angular rate", kDeg}},
+        {"rad/s", {"angular rate", 1.0}},                            {"deg/s", {"angular rate", math::kDeg}},
         {"rpm", {"angular rate", 2.0 * std::numbers::pi / 60.0}},    {"rad", {"angle", 1.0}},
-        {"deg", {"angle", kDeg}},      {"T", {"magnetic flux density", 1e6}},
+        {"deg", {"angle", math::kDeg}},      {"T", {"magnetic flux density", 1e6}},
         {"mT", {"magnetic flux density", 1e3}},                      {"uT", {"magnetic flux density", 1.0}},
         {"nT", {"magnetic flux density", 1e-3}},                     {"G", {"magnetic flux density", 100.0}},
         {"mG", {"magnetic flux density", 0.1}},                      {"1", {"ratio", 1.0}},

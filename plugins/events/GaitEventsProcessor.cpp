@@ -1,15 +1,15 @@
 #include "plugins/events/GaitEventsProcessor.h"
 
+#include "core/processing/Translator.h"
 #include "plugins/events/GaitEventDetector.h"
 
-#include <QCoreApplication>
 #include <cmath>
 #include <limits>
 
 namespace athlos::events {
 
 namespace {
-QString tr(const char* text) { return QCoreApplication::translate("athlos::events", text); }
+constexpr Translator tr{"athlos::events"};
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 struct Plan {
@@ -21,22 +21,21 @@ struct Plan {
     QString foot, label;
 };
 
-Expected<Plan> prepare(const RunContext& c) {
+Expected<Plan> makePlan(const RunContext& c) {
     Plan plan;
-    const QString path = c.inputPath(0);
     const Stream* stream = c.stream(0);
-    if (!stream) return makeError(QStringLiteral("input stream '%1' is missing").arg(path));
+    if (!stream) return makeError(QStringLiteral("input '%1' was not given").arg(c.inputRole(0)));
     const StreamInfo& info = stream->info();
     plan.gyr = info.columnIndex(QStringLiteral("gyr_x"));
     if (plan.gyr < 0 || info.columnIndex(QStringLiteral("gyr_y")) != plan.gyr + 1 ||
         info.columnIndex(QStringLiteral("gyr_z")) != plan.gyr + 2)
-        return makeError(QStringLiteral("stream '%1' needs adjacent columns gyr_x, gyr_y, gyr_z (it has: %2)")
-                             .arg(path, info.columnNames().join(QStringLiteral(", "))));
+        return c.inputError(0, QStringLiteral("needs adjacent columns gyr_x, gyr_y, gyr_z (it has: %1)")
+                                   .arg(info.columnNames().join(QStringLiteral(", "))));
     for (int k = 0; k < 3; ++k) {
         const QString unit = info.columns[std::size_t(plan.gyr + k)].unit;
         if (!unit.isEmpty() && unit != QLatin1String("rad/s"))
-            return makeError(QStringLiteral("stream '%1': column %2 is in '%3'; gait-events expects rad/s")
-                                 .arg(path, info.columns[std::size_t(plan.gyr + k)].name, unit));
+            return c.inputError(0, QStringLiteral("column %1 is in '%2'; gait-events expects rad/s")
+                                       .arg(info.columns[std::size_t(plan.gyr + k)].name, unit));
     }
     const QString axis = c.text(QStringLiteral("ml_axis"));
     plan.axis = axis == QLatin1String("x") ? 0 : axis == QLatin1String("z") ? 2 : 1;
@@ -50,13 +49,15 @@ Expected<Plan> prepare(const RunContext& c) {
     p.icWindow = c.number(QStringLiteral("ic_window"));
     if (p.maxStrideTime <= p.minStrideTime)
         return makeError(QStringLiteral("max_stride: %1 s must be longer than min_stride (%2 s)").arg(p.maxStrideTime).arg(p.minStrideTime));
-    auto data = stream->data();
-    if (!data) return makeError(QStringLiteral("cannot read input stream '%1': %2").arg(path, data.message()));
-    plan.data = *data;
-    if (plan.data->rows() < 2) return makeError(QStringLiteral("stream '%1' has fewer than 2 samples").arg(path));
-    const double ts = plan.data->medianInterval();
-    if (!(ts > 0.0) || 4.0 * ts > p.icWindow)
-        return makeError(QStringLiteral("ic_window: %1 s spans fewer than 4 samples of '%2' (interval %3 s)").arg(p.icWindow).arg(path).arg(ts));
+    auto input = c.samples(0);
+    if (!input) return input.error();
+    plan.data = input->data;
+    auto interval = input->samplingInterval();
+    if (!interval) return interval.error();
+    const double ts = *interval;
+    if (4.0 * ts > p.icWindow)
+        return makeError(QStringLiteral("ic_window: %1 s spans fewer than 4 samples of '%2' (interval %3 s)")
+                             .arg(p.icWindow).arg(input->path).arg(ts));
     plan.foot = GaitEventsProcessor::footOf(info);
     plan.label = c.text(QStringLiteral("label"));
     if (plan.label.isEmpty()) plan.label = plan.foot.isEmpty() ? QStringLiteral("stride") : QStringLiteral("stride ") + plan.foot;
@@ -115,13 +116,10 @@ QList<OutputSpec> GaitEventsProcessor::outputs() const {
             OutputSpec{QString(), false, QString(), tr("Strides (IC to next IC) as predicted annotations with confidence."), true}};
 }
 
-Status GaitEventsProcessor::validate(const RunContext& context) const {
-    auto plan = prepare(context);
-    return plan ? Status() : Status(plan.error());
-}
+Status GaitEventsProcessor::prepare(const RunContext& context) const { return statusOf(makePlan(context)); }
 
 Expected<std::vector<ProcessorOutput>> GaitEventsProcessor::run(const RunContext& context) const {
-    auto plan = prepare(context);
+    auto plan = makePlan(context);
     if (!plan) return plan.error();
     const StreamData& d = *plan->data;
     const double* gyr = d.values.data() + plan->gyr;

@@ -1,5 +1,7 @@
 #include "plugins/inertial/GnssImuEkf.h"
 
+#include "core/math/Angles.h"
+
 #include <Eigen/LU>
 
 namespace athlos::inertial {
@@ -118,7 +120,7 @@ void GnssImuEkf::tryAlign(const Vec3& vGnss, int blockEpochs) {
     P_.setZero();
     P_.diagonal().segment<3>(0).setConstant(p_.gnssSigmaHorizontal * p_.gnssSigmaHorizontal);
     P_.diagonal().segment<3>(3).setConstant(p_.gnssVelocitySigma * p_.gnssVelocitySigma);
-    P_.block<4, 4>(6, 6) = std::pow(5.0 * std::numbers::pi / 180.0, 2) * u * u.transpose() + 1e-6 * Eigen::Matrix4d::Identity();
+    P_.block<4, 4>(6, 6) = std::pow(5.0 * math::kDeg, 2) * u * u.transpose() + 1e-6 * Eigen::Matrix4d::Identity();
     aligned_ = true;
 }
 

@@ -1,14 +1,14 @@
 #include "plugins/inertial/ImuCalibrationProcessor.h"
 
+#include "core/processing/OutputStreams.h"
+#include "core/processing/Translator.h"
 #include "plugins/inertial/ImuCalibration.h"
-#include "plugins/inertial/ProcessorSupport.h"
-
-#include <QCoreApplication>
+#include "plugins/inertial/ImuColumns.h"
 
 namespace athlos::inertial {
 
 namespace {
-QString tr(const char* text) { return QCoreApplication::translate("athlos::inertial", text); }
+constexpr Translator tr{"athlos::inertial"};
 
 struct Calibration {
     Vec3 gyrOffset = Vec3::Zero();
@@ -101,12 +101,12 @@ QList<OutputSpec> ImuCalibrationProcessor::outputs() const {
 }
 
 Expected<std::vector<ProcessorOutput>> ImuCalibrationProcessor::run(const RunContext& c) const {
-    auto input = loadInput(c, 0);
+    auto input = c.samples(0);
     if (!input) return input.error();
     const StreamData& in = *input->data;
-    auto columns = imuColumns(input->stream->info(), c.inputPath(0), false);
+    auto columns = imuColumns(*input, false);
     if (!columns) return columns.error();
-    auto ts = samplingInterval(in, c.inputPath(0));
+    auto ts = input->samplingInterval();
     if (!ts) return ts.error();
     const auto stride = static_cast<std::size_t>(in.columns);
     const ImuBatch batch{in.values.data() + columns->gyr, in.values.data() + columns->acc,
@@ -198,12 +198,10 @@ Expected<std::vector<ProcessorOutput>> ImuCalibrationProcessor::run(const RunCon
             for (int i = 0; i < 3; ++i) row[columns->mag + i] = m[i];
         }
     }
-    StreamInfo info = input->stream->info();
-    info.provenance = {};
-    info.contentHash.clear();
-    info.attributes.insert(QStringLiteral("calibrated"), true);
+    Stream calibrated = derivedStream(*input->stream, std::move(out));
+    calibrated.info().attributes.insert(QStringLiteral("calibrated"), true);
     std::vector<ProcessorOutput> outputs;
-    outputs.push_back({QString(), Stream(std::move(info), std::move(out))});
+    outputs.push_back({QString(), std::move(calibrated)});
     outputs.push_back({QStringLiteral("calibration"), toTable(cal, attributes)});
     c.report(1.0);
     return outputs;

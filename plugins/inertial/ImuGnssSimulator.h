@@ -8,6 +8,7 @@
 // The ideal IMU is consistent with the truth by construction: the gyroscope sample k is the constant
 // body rate that takes q_k−1 to q_k (so strapdown of error-free data reproduces the truth exactly),
 // and the accelerometer measures f = Rᵀ(a + g e_z) at t_k.
+#include "core/math/Angles.h"
 #include "plugins/inertial/OrientationTypes.h"
 
 #include <cstdint>
@@ -27,10 +28,10 @@ struct SimulatorParams {
     // IMU-only filter can tell from tilt) would dominate the error.
     bool translation = true;
     // IMU errors
-    double gyrBias = 0.5 * std::numbers::pi / 180.0;  // rad/s, per-axis bias drawn in ±this
+    double gyrBias = 0.5 * math::kDeg;  // rad/s, per-axis bias drawn in ±this
     double gyrNoise = 0.003;       // rad/s per sample (σ)
     double gyrScale = 0.01;        // relative, per axis in ±this
-    double gyrRange = 1000.0 * std::numbers::pi / 180.0;  // rad/s, saturation
+    double gyrRange = 1000.0 * math::kDeg;  // rad/s, saturation
     double accBias = 0.1;          // m/s², per axis in ±this
     double accNoise = 0.05;        // m/s² per sample (σ)
     double accScale = 0.01;

@@ -5,6 +5,7 @@
 #include "plugins/inertial/JointAnglesProcessor.h"
 #include "plugins/inertial/OrientationProcessor.h"
 #include "plugins/inertial/SegmentCalibrationProcessor.h"
+#include "plugins/inertial/SimulateImuGnssProcessor.h"
 #include "plugins/inertial/SimulateLimbProcessor.h"
 
 namespace athlos::inertial {

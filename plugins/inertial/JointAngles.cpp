@@ -1,5 +1,6 @@
 #include "plugins/inertial/JointAngles.h"
 
+#include "core/math/Angles.h"
 #include "core/math/EulerAngles.h"
 
 #include <QRegularExpression>
@@ -130,7 +131,7 @@ double JointAngles::estimateHeadingOffset(std::span<const Quat> proximalSensor, 
         // A nearly vertical anterior axis has no meaningful heading (weight by horizontal length).
         const double wp = ap.head<2>().norm(), wd = ad.head<2>().norm();
         if (wp < 0.2 || wd < 0.2) continue;
-        const double delta = math::wrapPi(std::atan2(ap.y(), ap.x()) - std::atan2(ad.y(), ad.x()));
+        const double delta = math::wrapAngle(std::atan2(ap.y(), ap.x()) - std::atan2(ad.y(), ad.x()));
         sumSin += wp * wd * std::sin(delta);
         sumCos += wp * wd * std::cos(delta);
     }

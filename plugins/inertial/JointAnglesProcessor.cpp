@@ -1,35 +1,36 @@
 #include "plugins/inertial/JointAnglesProcessor.h"
 
+#include "core/processing/OutputStreams.h"
+#include "core/processing/RowRange.h"
+#include "core/processing/Translator.h"
 #include "plugins/inertial/JointAngles.h"
-#include "plugins/inertial/ProcessorSupport.h"
 #include "plugins/inertial/SegmentMounts.h"
 
-#include <QCoreApplication>
 #include <algorithm>
 
 namespace athlos::inertial {
 
 namespace {
-QString tr(const char* text) { return QCoreApplication::translate("athlos::inertial", text); }
+constexpr Translator tr{"athlos::inertial"};
 const QString kIdentity = QStringLiteral("1,0,0,0");
 
 struct Plan {
     JointAngles::Params params;
     bool alignHeading = true;
     double alignDuration = 2.0;
-    LoadedStream proximal, distal;
+    InputSamples proximal, distal;
     std::vector<math::Quat> qProximal, qDistal;  // distal already at the proximal's times
 };
 
-Expected<std::vector<math::Quat>> readQuaternions(const LoadedStream& s, const QString& path) {
-    const StreamInfo& info = s.stream->info();
+Expected<std::vector<math::Quat>> readQuaternions(const InputSamples& s) {
+    const StreamInfo& info = s.info();
     int c[4];
     int i = 0;
     for (const char* name : {"qw", "qx", "qy", "qz"}) {
         c[i] = info.columnIndex(QLatin1String(name));
         if (c[i] < 0)
-            return makeError(QStringLiteral("stream '%1' has no column '%2' (an orientation stream needs qw, qx, qy, qz; it has: %3)")
-                                 .arg(path, QLatin1String(name), info.columnNames().join(QStringLiteral(", "))));
+            return s.error(QStringLiteral("no column '%1' (an orientation stream needs qw, qx, qy, qz; it has: %2)")
+                               .arg(QLatin1String(name), info.columnNames().join(QStringLiteral(", "))));
         ++i;
     }
     const StreamData& d = *s.data;
@@ -41,7 +42,7 @@ Expected<std::vector<math::Quat>> readQuaternions(const LoadedStream& s, const Q
     return q;
 }
 
-Expected<Plan> prepare(const RunContext& c, bool load) {
+Expected<Plan> makePlan(const RunContext& c, bool load) {
     Plan plan;
     auto joint = parseJoint(c.has(QStringLiteral("joint")) ? c.text(QStringLiteral("joint")) : QStringLiteral("knee"));
     if (!joint) return joint.error();
@@ -77,15 +78,15 @@ Expected<Plan> prepare(const RunContext& c, bool load) {
     if (c.has(QStringLiteral("align_duration"))) plan.alignDuration = c.number(QStringLiteral("align_duration"));
     if (!load) return plan;
 
-    auto proximal = loadInput(c, 0);
+    auto proximal = c.samples(0);
     if (!proximal) return proximal.error();
-    auto distal = loadInput(c, 1);
+    auto distal = c.samples(1);
     if (!distal) return distal.error();
     plan.proximal = *proximal;
     plan.distal = *distal;
-    auto qp = readQuaternions(plan.proximal, c.inputPath(0));
+    auto qp = readQuaternions(plan.proximal);
     if (!qp) return qp.error();
-    auto qd = readQuaternions(plan.distal, c.inputPath(1));
+    auto qd = readQuaternions(plan.distal);
     if (!qd) return qd.error();
     const std::vector<double>& tp = plan.proximal.data->t;
     const std::vector<double>& td = plan.distal.data->t;
@@ -145,18 +146,15 @@ QList<OutputSpec> JointAnglesProcessor::outputs() const {
                        tr("flexion, abduction, rotation (rad), long_axis_angle, proximal_inclination, distal_inclination (rad).")}};
 }
 
-Status JointAnglesProcessor::validate(const RunContext& context) const {
-    auto plan = prepare(context, false);
-    return plan ? Status() : Status(plan.error());
-}
+// The checks need no samples: the parameters and the calibration table.
+Status JointAnglesProcessor::prepare(const RunContext& context) const { return statusOf(makePlan(context, false)); }
 
 Expected<std::vector<ProcessorOutput>> JointAnglesProcessor::run(const RunContext& context) const {
-    auto plan = prepare(context, true);
+    auto plan = makePlan(context, true);
     if (!plan) return plan.error();
     const std::vector<double>& t = plan->proximal.data->t;
     if (plan->alignHeading) {
-        const auto end = std::upper_bound(t.begin(), t.end(), t.front() + plan->alignDuration);
-        const auto n = static_cast<std::size_t>(std::max<std::ptrdiff_t>(1, end - t.begin()));
+        const std::size_t n = std::max<std::size_t>(1, rowsInTimeRange(t, t.front(), t.front() + plan->alignDuration).size());
         plan->params.headingOffset = JointAngles::estimateHeadingOffset(
             std::span(plan->qProximal).first(n), std::span(plan->qDistal).first(n), plan->params.proximalMount,
             plan->params.distalMount);
@@ -188,10 +186,11 @@ Expected<std::vector<ProcessorOutput>> JointAnglesProcessor::run(const RunContex
         {"proximal", context.inputPath(0)},
         {"distal", context.inputPath(1)}};
     std::vector<ProcessorOutput> outputs;
-    outputs.push_back({QString(), makeStream(QStringLiteral("joint-angles"), QStringLiteral("segment"),
-                                             {"flexion", "abduction", "rotation", "long_axis_angle", "proximal_inclination",
-                                              "distal_inclination"},
-                                             {"rad", "rad", "rad", "rad", "rad", "rad"}, std::move(out), attributes)});
+    outputs.push_back({QString(), outputStream(QStringLiteral("joint-angles"), QStringLiteral("segment"),
+                                               columnsOf({"flexion", "abduction", "rotation", "long_axis_angle",
+                                                          "proximal_inclination", "distal_inclination"},
+                                                         {"rad", "rad", "rad", "rad", "rad", "rad"}),
+                                               std::move(out), attributes)});
     return outputs;
 }
 

@@ -1,18 +1,20 @@
 #include "plugins/inertial/LimbSimulator.h"
 
+#include "core/math/Angles.h"
+
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <random>
 
 namespace athlos::inertial {
 
+using math::kDeg;
 using math::Quat;
 using math::Vec3;
 
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 // Quintic smoothstep on [0, 1] (zero first and second derivative at both ends, so accelerations
 // stay continuous when a phase starts or stops) and its derivative.
@@ -88,7 +90,7 @@ public:
         if (t > walkBegin && t < walkEnd) {
             pose.phase = 1;
             const double e = envelope(t);
-            const double cycles = (t - walkBegin) / p_.gaitPeriod, phi = kTwoPi * cycles;
+            const double cycles = (t - walkBegin) / p_.gaitPeriod, phi = 2.0 * std::numbers::pi * cycles;
             pose.hip.flexion = e * (10.0 + 22.0 * std::sin(phi)) * kDeg;
             pose.hip.abduction = e * 4.0 * std::sin(phi + 1.2) * kDeg;
             pose.hip.rotation = e * 5.0 * std::sin(phi + 2.1) * kDeg;

@@ -11,6 +11,7 @@
 // accelerometer measures f = Rᵀ(a + g e_z) with a the sensor's acceleration (second derivative of
 // its position, including the ω̇ × r + ω × (ω × r) terms of the lever arm) at t_k. Errors: a constant
 // bias per axis and white noise, drawn from the seed.
+#include "core/math/Angles.h"
 #include "plugins/inertial/JointAngles.h"
 
 #include <array>
@@ -36,7 +37,7 @@ struct LimbSimulatorParams {
     double squatDuration = 4.0;   // s each
     double initialHeading = 0.4;  // rad, anterior direction counter-clockwise from East
     // IMU errors (per axis: bias drawn uniformly in ±bias, white noise σ per sample)
-    double gyrBias = 0.3 * std::numbers::pi / 180.0;  // rad/s
+    double gyrBias = 0.3 * math::kDeg;  // rad/s
     double gyrNoise = 0.004;      // rad/s
     double accBias = 0.05;        // m/s²
     double accNoise = 0.04;       // m/s²

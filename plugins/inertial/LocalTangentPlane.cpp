@@ -1,7 +1,8 @@
 #include "plugins/inertial/LocalTangentPlane.h"
 
+#include "core/math/Angles.h"
+
 #include <cmath>
-#include <numbers>
 
 namespace athlos::inertial {
 
@@ -9,11 +10,10 @@ namespace {
 constexpr double kA = 6378137.0;                  // WGS84 semi-major axis (m)
 constexpr double kF = 1.0 / 298.257223563;        // flattening
 constexpr double kE2 = kF * (2.0 - kF);           // first eccentricity squared
-constexpr double kRad = std::numbers::pi / 180.0;
 }  // namespace
 
 Eigen::Vector3d LocalTangentPlane::geodeticToEcef(double latDeg, double lonDeg, double h) {
-    const double lat = latDeg * kRad, lon = lonDeg * kRad;
+    const double lat = latDeg * math::kDeg, lon = lonDeg * math::kDeg;
     const double n = kA / std::sqrt(1.0 - kE2 * std::sin(lat) * std::sin(lat));  // prime vertical radius
     return {(n + h) * std::cos(lat) * std::cos(lon), (n + h) * std::cos(lat) * std::sin(lon),
             (n * (1.0 - kE2) + h) * std::sin(lat)};
@@ -21,7 +21,7 @@ Eigen::Vector3d LocalTangentPlane::geodeticToEcef(double latDeg, double lonDeg, 
 
 LocalTangentPlane::LocalTangentPlane(double latDeg, double lonDeg, double height) {
     originEcef_ = geodeticToEcef(latDeg, lonDeg, height);
-    const double lat = latDeg * kRad, lon = lonDeg * kRad;
+    const double lat = latDeg * math::kDeg, lon = lonDeg * math::kDeg;
     const double sl = std::sin(lat), cl = std::cos(lat), so = std::sin(lon), co = std::cos(lon);
     ecefToEnu_ << -so, co, 0.0,
                   -sl * co, -sl * so, cl,
@@ -43,7 +43,7 @@ Eigen::Vector3d LocalTangentPlane::toGeodetic(const Eigen::Vector3d& enu) const 
         h = p / std::cos(lat) - n;
         lat = std::atan2(e.z(), p * (1.0 - kE2 * n / (n + h)));
     }
-    return {lat / kRad, lon / kRad, h};
+    return {lat / math::kDeg, lon / math::kDeg, h};
 }
 
 }  // namespace athlos::inertial

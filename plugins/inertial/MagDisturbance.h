@@ -6,6 +6,7 @@
 // field (τ = refTau). A new, consistent field (a candidate) replaces the reference after newTime of
 // motion (newFirstTime when there is no reference yet) — so a changed but homogeneous environment is
 // accepted, while a transient magnet near the sensor is not.
+#include "core/math/Angles.h"
 #include "plugins/inertial/LowPass2.h"
 #include "plugins/inertial/OrientationTypes.h"
 
@@ -19,10 +20,10 @@ public:
         double currentTau = 0.05;                           // s, smoothing of norm and dip
         double refTau = 20.0;                               // s, tracking of the reference
         double thNorm = 0.1;                                // relative norm deviation
-        double thDip = 10.0 * std::numbers::pi / 180.0;     // rad
+        double thDip = 10.0 * math::kDeg;                   // rad
         double newTime = 20.0;                              // s
         double newFirstTime = 5.0;                          // s
-        double newMinGyr = 20.0 * std::numbers::pi / 180.0; // rad/s, motion needed to accept a new field
+        double newMinGyr = 20.0 * math::kDeg;               // rad/s, motion needed to accept a new field
         double minUndisturbedTime = 0.5;                    // s
     };
 

@@ -17,6 +17,7 @@
 //    inclination corrections expressed as angular rates (horizontal axes; the vertical one only
 //    decays), eqs. 20–27.
 // All time constants are in seconds, so the same parameters work at any sampling rate.
+#include "core/math/Angles.h"
 #include "plugins/inertial/LowPass2.h"
 #include "plugins/inertial/MagDisturbance.h"
 #include "plugins/inertial/OrientationTypes.h"
@@ -26,19 +27,18 @@ namespace athlos::inertial {
 
 class OrientationFilter {
 public:
-    static constexpr double kDeg = std::numbers::pi / 180.0;
     struct Params {
         double tauAcc = 3.0;                     // s
         double tauMag = 9.0;                     // s
         bool restBiasEstimation = true;
         bool motionBiasEstimation = true;
         bool magDisturbanceRejection = true;
-        double biasSigmaInit = 0.5 * kDeg;       // rad/s, initial bias uncertainty
+        double biasSigmaInit = 0.5 * math::kDeg; // rad/s, initial bias uncertainty
         double biasForgettingTime = 100.0;       // s, time for the uncertainty to grow back by 0.1 °/s
-        double biasClip = 2.0 * kDeg;            // rad/s, largest bias the filter accepts
-        double biasSigmaMotion = 0.1 * kDeg;     // rad/s, motion-update measurement noise
+        double biasClip = 2.0 * math::kDeg;      // rad/s, largest bias the filter accepts
+        double biasSigmaMotion = 0.1 * math::kDeg; // rad/s, motion-update measurement noise
         double biasVerticalForgettingFactor = 1e-4;
-        double biasSigmaRest = 0.03 * kDeg;      // rad/s, rest-update measurement noise
+        double biasSigmaRest = 0.03 * math::kDeg; // rad/s, rest-update measurement noise
         RestDetector::Params rest;
         MagDisturbance::Params mag;
         double magMaxRejectionTime = 60.0;       // s, longest ride-out of a disturbance

@@ -1,35 +1,36 @@
 #include "plugins/inertial/OrientationProcessor.h"
 
+#include "core/math/Angles.h"
+#include "core/processing/OutputStreams.h"
+#include "core/processing/Translator.h"
+#include "plugins/inertial/ImuColumns.h"
 #include "plugins/inertial/OrientationEstimation.h"
-#include "plugins/inertial/ProcessorSupport.h"
 
-#include <QCoreApplication>
+#include <limits>
 
 namespace athlos::inertial {
 
 namespace {
-QString tr(const char* text) { return QCoreApplication::translate("athlos::inertial", text); }
-constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr Translator tr{"athlos::inertial"};
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 struct Plan {
-    LoadedStream input;
+    InputSamples input;
     ImuColumns columns;
     OrientationOptions options;
     double ts = 0.0;
 };
 
-Expected<Plan> prepare(const RunContext& c) {
+Expected<Plan> makePlan(const RunContext& c) {
     Plan plan;
-    auto input = loadInput(c, 0);
+    auto input = c.samples(0);
     if (!input) return input.error();
     plan.input = *input;
     const QString mode = c.has(QStringLiteral("mode")) ? c.text(QStringLiteral("mode")) : QStringLiteral("auto");
-    const StreamInfo& info = plan.input.stream->info();
-    auto columns = imuColumns(info, c.inputPath(0), mode == QLatin1String("9d"));
+    auto columns = imuColumns(plan.input, mode == QLatin1String("9d"));
     if (!columns) return columns.error();
     plan.columns = *columns;
-    auto ts = samplingInterval(*plan.input.data, c.inputPath(0));
+    auto ts = plan.input.samplingInterval();
     if (!ts) return ts.error();
     plan.ts = *ts;
     auto algorithm = parseOrientationAlgorithm(c.has(QStringLiteral("algorithm")) ? c.text(QStringLiteral("algorithm"))
@@ -85,7 +86,7 @@ ParameterSpecs OrientationProcessor::parameters() const {
                               tr("vqf: time constant of the magnetometer (heading) correction.")),
         ParameterSpec::boolean(QStringLiteral("bias_estimation"), true, tr("vqf: estimate the gyroscope bias (at rest and in motion).")),
         ParameterSpec::boolean(QStringLiteral("mag_rejection"), true, tr("vqf: detect and ride out magnetic disturbances.")),
-        ParameterSpec::number(QStringLiteral("rest_th_gyr"), 2.0 * kDeg, 0.0, kInf, QStringLiteral("rad/s"),
+        ParameterSpec::number(QStringLiteral("rest_th_gyr"), 2.0 * math::kDeg, 0.0, kInf, QStringLiteral("rad/s"),
                               tr("vqf: rest detection threshold on the gyroscope deviation.")),
         ParameterSpec::number(QStringLiteral("rest_th_acc"), 0.5, 0.0, kInf, QStringLiteral("m/s^2"),
                               tr("vqf: rest detection threshold on the accelerometer deviation.")),
@@ -108,13 +109,10 @@ QList<OutputSpec> OrientationProcessor::outputs() const {
                        tr("qw, qx, qy, qz (sensor to ENU), bias_x..z (rad/s), rest and mag_disturbed flags (0/1).")}};
 }
 
-Status OrientationProcessor::validate(const RunContext& context) const {
-    auto plan = prepare(context);
-    return plan ? Status() : Status(plan.error());
-}
+Status OrientationProcessor::prepare(const RunContext& context) const { return statusOf(makePlan(context)); }
 
 Expected<std::vector<ProcessorOutput>> OrientationProcessor::run(const RunContext& context) const {
-    auto plan = prepare(context);
+    auto plan = makePlan(context);
     if (!plan) return plan.error();
     const StreamData& in = *plan->input.data;
     const auto stride = static_cast<std::size_t>(in.columns);
@@ -140,10 +138,10 @@ Expected<std::vector<ProcessorOutput>> OrientationProcessor::run(const RunContex
                            {"mode", plan->options.useMagnetometer ? QStringLiteral("9d") : QStringLiteral("6d")},
                            {"sampling_rate", 1.0 / plan->ts}};
     std::vector<ProcessorOutput> outputs;
-    outputs.push_back({QString(), makeStream(QStringLiteral("orientation"), QStringLiteral("ENU"),
-                                             {"qw", "qx", "qy", "qz", "bias_x", "bias_y", "bias_z", "rest", "mag_disturbed"},
-                                             {"1", "1", "1", "1", "rad/s", "rad/s", "rad/s", "1", "1"}, std::move(out),
-                                             attributes)});
+    outputs.push_back({QString(), outputStream(QStringLiteral("orientation"), QStringLiteral("ENU"),
+                                               columnsOf({"qw", "qx", "qy", "qz", "bias_x", "bias_y", "bias_z", "rest", "mag_disturbed"},
+                                                         {"1", "1", "1", "1", "rad/s", "rad/s", "rad/s", "1", "1"}),
+                                               std::move(out), attributes)});
     return outputs;
 }
 

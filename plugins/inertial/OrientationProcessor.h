@@ -15,7 +15,7 @@ public:
     ParameterSpecs parameters() const override;
     QList<InputSpec> inputs() const override;
     QList<OutputSpec> outputs() const override;
-    Status validate(const RunContext& context) const override;
+    Status prepare(const RunContext& context) const override;
     Expected<std::vector<ProcessorOutput>> run(const RunContext& context) const override;
 };
 

@@ -4,6 +4,7 @@
 // the low-pass gyro stays below biasClip (a large constant rate is motion, not bias), and every
 // accelerometer sample stays within thAcc of its low-pass value. The low-pass gyro at rest is the
 // bias measurement.
+#include "core/math/Angles.h"
 #include "plugins/inertial/LowPass2.h"
 #include "plugins/inertial/OrientationTypes.h"
 
@@ -14,9 +15,9 @@ public:
     struct Params {
         double minTime = 1.5;                                  // s
         double filterTau = 0.5;                                // s
-        double thGyr = 2.0 * std::numbers::pi / 180.0;         // rad/s
+        double thGyr = 2.0 * math::kDeg;                       // rad/s
         double thAcc = 0.5;                                    // m/s²
-        double biasClip = 2.0 * std::numbers::pi / 180.0;      // rad/s
+        double biasClip = 2.0 * math::kDeg;                    // rad/s
     };
 
     RestDetector() = default;

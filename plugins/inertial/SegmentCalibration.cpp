@@ -1,5 +1,7 @@
 #include "plugins/inertial/SegmentCalibration.h"
 
+#include "core/math/Angles.h"
+
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
@@ -43,7 +45,7 @@ Expected<SegmentCalibration::Result> SegmentCalibration::calibrate(std::span<con
     }
     if (std::abs(turned) < params_.decisionAngle)
         return makeError(QStringLiteral("the segment turned less than %1° about the movement axis; the sign of the axis is "
-                                        "undetermined").arg(params_.decisionAngle * 180.0 / std::numbers::pi, 0, 'f', 0));
+                                        "undetermined").arg(params_.decisionAngle / math::kDeg, 0, 'f', 0));
     if (turned * params_.firstRotation < 0.0) axis = -axis;
 
     r.orthogonality = std::asin(std::clamp(std::abs(axis.dot(r.superior)), 0.0, 1.0));

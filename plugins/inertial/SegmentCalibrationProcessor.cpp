@@ -1,10 +1,11 @@
 #include "plugins/inertial/SegmentCalibrationProcessor.h"
 
-#include "plugins/inertial/ProcessorSupport.h"
+#include "core/processing/RowRange.h"
+#include "core/processing/Translator.h"
+#include "plugins/inertial/ImuColumns.h"
 #include "plugins/inertial/SegmentCalibration.h"
 #include "plugins/inertial/SegmentMounts.h"
 
-#include <QCoreApplication>
 #include <QRegularExpression>
 #include <cmath>
 #include <numbers>
@@ -12,7 +13,7 @@
 namespace athlos::inertial {
 
 namespace {
-QString tr(const char* text) { return QCoreApplication::translate("athlos::inertial", text); }
+constexpr Translator tr{"athlos::inertial"};
 
 // Sign of each segment's first turn about its right-pointing Z axis when a squat starts.
 Expected<double> firstRotation(const QString& segment) {
@@ -76,7 +77,7 @@ QList<OutputSpec> SegmentCalibrationProcessor::outputs() const {
     return {OutputSpec{kSegmentCalibrationKind, true, QString(), tr("segment, qw, qx, qy, qz (segment to sensor), axis_share, orthogonality (rad).")}};
 }
 
-Status SegmentCalibrationProcessor::validate(const RunContext& c) const {
+Status SegmentCalibrationProcessor::prepare(const RunContext& c) const {
     if (auto names = segmentNames(c); !names) return names.error();
     if (auto w = window(c, "static_begin", "static_end"); !w) return w.error();
     if (auto w = window(c, "movement_begin", "movement_end"); !w) return w.error();
@@ -96,20 +97,20 @@ Expected<std::vector<ProcessorOutput>> SegmentCalibrationProcessor::run(const Ru
     TableColumn ortho{QStringLiteral("orthogonality"), QStringLiteral("rad"), false, {}, {}};
     for (int i = 0; i < c.inputCount(); ++i) {
         if (!c.stream(i)) continue;
-        auto in = loadInput(c, i);
+        auto in = c.samples(i);
         if (!in) return in.error();
-        auto cols = imuColumns(in->stream->info(), c.inputPath(i), false);
+        auto cols = imuColumns(*in, false);
         if (!cols) return cols.error();
-        auto ts = samplingInterval(*in->data, c.inputPath(i));
+        auto ts = in->samplingInterval();
         if (!ts) return ts.error();
         const StreamData& d = *in->data;
         std::vector<math::Vec3> acc, gyr;
-        for (std::size_t k = 0; k < d.rows(); ++k) {
-            if (d.t[k] >= still->begin && d.t[k] <= still->end)
-                acc.emplace_back(d.at(k, cols->acc), d.at(k, cols->acc + 1), d.at(k, cols->acc + 2));
-            if (d.t[k] >= moving->begin && d.t[k] <= moving->end)
-                gyr.emplace_back(d.at(k, cols->gyr), d.at(k, cols->gyr + 1), d.at(k, cols->gyr + 2));
-        }
+        const RowRange standing = rowsInTimeRange(d.t, still->begin, still->end);
+        for (std::size_t k = standing.begin; k < standing.end; ++k)
+            acc.emplace_back(d.at(k, cols->acc), d.at(k, cols->acc + 1), d.at(k, cols->acc + 2));
+        const RowRange movement = rowsInTimeRange(d.t, moving->begin, moving->end);
+        for (std::size_t k = movement.begin; k < movement.end; ++k)
+            gyr.emplace_back(d.at(k, cols->gyr), d.at(k, cols->gyr + 1), d.at(k, cols->gyr + 2));
         SegmentCalibration::Params p;
         p.firstRotation = *firstRotation(names->at(i));
         auto result = SegmentCalibration(p).calibrate(acc, gyr, *ts);

@@ -1,15 +1,14 @@
 #include "plugins/inertial/SimulateLimbProcessor.h"
 
+#include "core/processing/OutputStreams.h"
+#include "core/processing/Translator.h"
 #include "plugins/inertial/LimbSimulator.h"
-#include "plugins/inertial/ProcessorSupport.h"
 #include "plugins/inertial/SegmentMounts.h"
-
-#include <QCoreApplication>
 
 namespace athlos::inertial {
 
 namespace {
-QString tr(const char* text) { return QCoreApplication::translate("athlos::inertial", text); }
+constexpr Translator tr{"athlos::inertial"};
 
 const QStringList kSegments{QStringLiteral("pelvis"), QStringLiteral("thigh"), QStringLiteral("shank")};
 
@@ -24,8 +23,10 @@ Stream imuStream(const LimbSimulation& sim, int s, QJsonObject attributes) {
         }
     attributes.insert(QStringLiteral("segment"), kSegments[s]);
     attributes.insert(QStringLiteral("true_mount"), formatQuaternion(seg.mount));
-    return makeStream(QStringLiteral("imu"), QStringLiteral("sensor"), {"acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z"},
-                      {"m/s^2", "m/s^2", "m/s^2", "rad/s", "rad/s", "rad/s"}, std::move(d), std::move(attributes));
+    return outputStream(QStringLiteral("imu"), QStringLiteral("sensor"),
+                        columnsOf({"acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z"},
+                                  {"m/s^2", "m/s^2", "m/s^2", "rad/s", "rad/s", "rad/s"}),
+                        std::move(d), std::move(attributes));
 }
 
 Stream angleStream(const LimbSimulation& sim, const std::vector<AnatomicalAngles>& angles, Joint joint, Side side,
@@ -40,8 +41,9 @@ Stream angleStream(const LimbSimulation& sim, const std::vector<AnatomicalAngles
     attributes.insert(QStringLiteral("joint"), jointName(joint));
     attributes.insert(QStringLiteral("side"), sideName(side));
     attributes.insert(QStringLiteral("reference"), true);
-    return makeStream(QStringLiteral("joint-angles"), QStringLiteral("segment"), {"flexion", "abduction", "rotation"},
-                      {"rad", "rad", "rad"}, std::move(d), std::move(attributes));
+    return outputStream(QStringLiteral("joint-angles"), QStringLiteral("segment"),
+                        columnsOf({"flexion", "abduction", "rotation"}, {"rad", "rad", "rad"}), std::move(d),
+                        std::move(attributes));
 }
 }  // namespace
 
@@ -125,8 +127,8 @@ Expected<std::vector<ProcessorOutput>> SimulateLimbProcessor::run(const RunConte
     out.push_back({QString(), imuStream(sim, 1, attrs)});
     out.push_back({QStringLiteral("shank"), imuStream(sim, 2, attrs)});
     out.push_back({QStringLiteral("pelvis"), imuStream(sim, 0, attrs)});
-    out.push_back({QStringLiteral("segments"), makeStream(QStringLiteral("segment-orientation"), QStringLiteral("ENU"), names, units,
-                                                          std::move(segments), attrs)});
+    out.push_back({QStringLiteral("segments"), outputStream(QStringLiteral("segment-orientation"), QStringLiteral("ENU"),
+                                                            columnsOf(names, units), std::move(segments), attrs)});
     out.push_back({QStringLiteral("knee-reference"), angleStream(sim, sim.knee, Joint::Knee, p.side, attrs)});
     out.push_back({QStringLiteral("hip-reference"), angleStream(sim, sim.hip, Joint::Hip, p.side, attrs)});
     out.push_back({QStringLiteral("mounts"),

@@ -43,7 +43,7 @@ TagFix BeaconSelection::solveIrlsWeighted(FixInput& input, TdoaSolver& solver, c
         inMask.clear();
         for (int i = 0; i < input.size(); ++i)
             if (mask[size_t(i)] > 0.0) inMask.push_back(e[size_t(i)]);
-        const double centre = median(inMask);
+        const double centre = math::median(inMask);
         const double scale = std::max(1.4826 * medianAbsoluteDeviation(inMask), params_.irlsMinScale);
         const double cut = params_.irlsK * scale;
         previous = input.weights;
@@ -195,7 +195,7 @@ std::optional<Vector3> FixHistory::median(double t) const {
     std::vector<double> c(fixes_.size());
     for (int axis = 0; axis < 3; ++axis) {
         for (std::size_t k = 0; k < fixes_.size(); ++k) c[k] = fixes_[k].position(axis);
-        m(axis) = lps::median(c);
+        m(axis) = math::median(c);
     }
     return m;
 }

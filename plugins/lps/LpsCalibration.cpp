@@ -218,7 +218,7 @@ Expected<LpsCalibration::Start> LpsCalibration::adjust(const std::vector<TdoaEpo
     if (params_.outlierTest == OutlierTest::Grubbs) {
         outlier = grubbsOutliers(residuals, params_.alpha, int(residuals.size() / 5));
     } else {
-        const double centre = median(residuals);
+        const double centre = math::median(residuals);
         const double cut = params_.madK * 1.4826 * medianAbsoluteDeviation(residuals);
         for (double e : residuals) outlier.push_back(std::abs(e - centre) > cut);
     }

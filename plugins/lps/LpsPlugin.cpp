@@ -1,15 +1,15 @@
 #include "plugins/lps/LpsPlugin.h"
 
-#include "plugins/lps/AlignProcessor.h"
-#include "plugins/lps/CalibrationProcessor.h"
-#include "plugins/lps/PositioningProcessor.h"
-#include "plugins/lps/SimulateProcessor.h"
+#include "plugins/lps/LpsAlignProcessor.h"
+#include "plugins/lps/LpsCalibrationProcessor.h"
+#include "plugins/lps/LpsPositioningProcessor.h"
+#include "plugins/lps/SimulateLpsProcessor.h"
 
 namespace athlos::lps {
 
 std::vector<std::shared_ptr<const Processor>> LpsPlugin::processors() const {
-    return {std::make_shared<PositioningProcessor>(), std::make_shared<CalibrationProcessor>(),
-            std::make_shared<AlignProcessor>(), std::make_shared<SimulateProcessor>()};
+    return {std::make_shared<LpsPositioningProcessor>(), std::make_shared<LpsCalibrationProcessor>(),
+            std::make_shared<LpsAlignProcessor>(), std::make_shared<SimulateLpsProcessor>()};
 }
 
 }  // namespace athlos::lps

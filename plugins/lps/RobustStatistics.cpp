@@ -2,24 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace athlos::lps {
 
-double median(std::vector<double> values) {
-    if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
-    const auto mid = values.size() / 2;
-    std::nth_element(values.begin(), values.begin() + long(mid), values.end());
-    const double upper = values[mid];
-    if (values.size() % 2) return upper;
-    return 0.5 * (upper + *std::max_element(values.begin(), values.begin() + long(mid)));
-}
-
 double medianAbsoluteDeviation(const std::vector<double>& values) {
-    const double m = median(values);
+    const double m = math::median(values);
     std::vector<double> dev(values.size());
     for (std::size_t i = 0; i < values.size(); ++i) dev[i] = std::abs(values[i] - m);
-    return median(std::move(dev));
+    return math::median(std::move(dev));
 }
 
 double normalQuantile(double p) {

@@ -1,10 +1,12 @@
 #pragma once
-// Median, median absolute deviation and the Grubbs outlier test (thesis §3.1.2 step 4, [Grub 69]).
+// Median absolute deviation and the Grubbs outlier test (thesis §3.1.2 step 4, [Grub 69]); the median
+// itself is math::median (core/math/Statistics.h).
+#include "core/math/Statistics.h"
+
 #include <vector>
 
 namespace athlos::lps {
 
-double median(std::vector<double> values);  // NaN for an empty set
 // Unscaled MAD = median |x − median(x)|; multiply by 1.4826 for a Gaussian σ estimate.
 double medianAbsoluteDeviation(const std::vector<double>& values);
 

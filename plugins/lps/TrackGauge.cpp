@@ -49,7 +49,7 @@ TrackGaugeFit fitTrackGauge(const std::vector<Vector3>& points, const Vector3& p
 
     double theta = 0.0, d = 0.0;
     evaluate(theta, 0.0);
-    d = median(e);  // e = d_track here
+    d = math::median(e);  // e = d_track here
     bool regular = true;
     for (int it = 0; it < 100; ++it) {
         evaluate(theta, d);

@@ -1,8 +1,9 @@
 #include "plugins/positioning/Ctra.h"
 
-#include "core/geometry/TrackGeometry.h"
+#include "core/math/Angles.h"
 
 #include <cmath>
+#include <numbers>
 
 namespace athlos::positioning {
 
@@ -73,15 +74,15 @@ Matrix<6, 6> ctraProcessNoise(const CtraNoise& n, double T) {
 
 Vector<6> ctraDifference(const Vector<6>& a, const Vector<6>& b) {
     Vector<6> d = a - b;
-    d[kPhi] = TrackGeometry::wrapAngle(d[kPhi]);
+    d[kPhi] = math::wrapAngle(d[kPhi]);
     return d;
 }
 
-void ctraNormalize(Vector<6>& x) { x[kPhi] = TrackGeometry::wrapAngle(x[kPhi]); }
+void ctraNormalize(Vector<6>& x) { x[kPhi] = math::wrapAngle(x[kPhi]); }
 
 Kinematics CtraModel::kinematics(const StateVector& x) {
     if (x[kV] >= 0.0) return {x[kPx], x[kPy], x[kV], x[kPhi], x[kOmega], x[kA]};
-    return {x[kPx], x[kPy], -x[kV], TrackGeometry::wrapAngle(x[kPhi] + M_PI), x[kOmega], -x[kA]};
+    return {x[kPx], x[kPy], -x[kV], math::wrapAngle(x[kPhi] + std::numbers::pi), x[kOmega], -x[kA]};
 }
 
 CtraModel::StateVector CtraModel::predict(const StateVector& x, double T, double t, StateMatrix* jacobian) const {

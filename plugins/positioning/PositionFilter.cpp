@@ -2,6 +2,7 @@
 
 #include "core/estimation/Ekf.h"
 #include "core/estimation/SrUkf.h"
+#include "core/math/Statistics.h"
 #include "plugins/positioning/ConstantVelocity.h"
 #include "plugins/positioning/TrackGapBridge.h"
 #include "plugins/positioning/TrackModels.h"
@@ -16,20 +17,15 @@ using namespace estimation;
 
 namespace {
 
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    const auto mid = v.begin() + v.size() / 2;
-    std::nth_element(v.begin(), mid, v.end());
-    return *mid;
-}
-
+// Upper medians (math::upperMedian): the initialisation and noise guess were tuned with them.
+// The window is never empty (window() returns at least one sample of a non-empty input).
 Eigen::Vector2d medianPosition(const PositionSamples& in, std::size_t begin, std::size_t end) {
     std::vector<double> xs, ys;
     for (std::size_t i = begin; i < end && i < in.p.size(); ++i) {
         xs.push_back(in.p[i].x());
         ys.push_back(in.p[i].y());
     }
-    return {median(xs), median(ys)};
+    return {math::upperMedian(xs), math::upperMedian(ys)};
 }
 
 // Index range of the samples in [t0, t1) (at least `minimum` samples when available).
@@ -285,7 +281,7 @@ double PositionFilter::roughMeasurementVariance(const PositionSamples& in) {
         dy.push_back(std::abs(d.y()));
     }
     if (dx.empty()) return 0.01;
-    const double sx = 1.4826 * median(dx) / std::sqrt(6.0), sy = 1.4826 * median(dy) / std::sqrt(6.0);
+    const double sx = 1.4826 * math::upperMedian(dx) / std::sqrt(6.0), sy = 1.4826 * math::upperMedian(dy) / std::sqrt(6.0);
     return std::max(0.5 * (sx * sx + sy * sy), 1e-4);
 }
 
@@ -297,7 +293,7 @@ double PositionFilter::detectStart(const PositionSamples& in) {
     for (std::size_t k = 0; k + 5 <= in.p.size(); ++k) {
         std::vector<double> dist;
         for (std::size_t j = k; j < k + 5; ++j) dist.push_back((in.p[j] - p0).norm());
-        if (median(dist) > 2.0) return in.t[k];
+        if (math::upperMedian(dist) > 2.0) return in.t[k];
     }
     return in.t.front();
 }

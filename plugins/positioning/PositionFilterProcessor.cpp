@@ -1,14 +1,17 @@
 #include "plugins/positioning/PositionFilterProcessor.h"
 
-#include <QCoreApplication>
+#include "core/math/Angles.h"
+#include "core/processing/Translator.h"
+
 #include <QJsonObject>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace athlos::positioning {
 
 namespace {
-QString tr(const char* text) { return QCoreApplication::translate("athlos::positioning", text); }
+constexpr Translator tr{"athlos::positioning"};
 const double kInf = std::numeric_limits<double>::infinity();
 
 ParameterSpec optionalNumber(const QString& name, double min, double max, const QString& unit, const QString& help) {
@@ -20,14 +23,13 @@ ParameterSpec optionalNumber(const QString& name, double min, double max, const 
 
 Expected<PositionSamples> loadPositions(const RunContext& context) {
     const Stream* stream = context.stream(0);
-    const QString path = context.inputCount() > 0 ? context.inputPath(0) : QString();
-    if (!stream) return makeError(QStringLiteral("input stream '%1' is missing").arg(path));
+    if (!stream) return makeError(QStringLiteral("input '%1' was not given").arg(context.inputRole(0)));
     const int cx = stream->info().columnIndex(QStringLiteral("x")), cy = stream->info().columnIndex(QStringLiteral("y"));
-    if (cx < 0 || cy < 0) return makeError(QStringLiteral("input stream '%1' needs columns x and y").arg(path));
-    auto data = stream->data();
-    if (!data) return makeError(QStringLiteral("cannot read input stream '%1': %2").arg(path, data.message()));
+    if (cx < 0 || cy < 0) return context.inputError(0, QStringLiteral("needs columns x and y"));
+    auto input = context.samples(0);
+    if (!input) return input.error();
     PositionSamples samples;
-    const StreamData& d = **data;
+    const StreamData& d = *input->data;
     for (std::size_t k = 0; k < d.rows(); ++k) {
         const double x = d.at(k, cx), y = d.at(k, cy);
         if (!std::isfinite(x) || !std::isfinite(y)) continue;  // missing fixes are gaps, not zeros
@@ -35,9 +37,7 @@ Expected<PositionSamples> loadPositions(const RunContext& context) {
         samples.p.emplace_back(x, y);
     }
     if (samples.t.size() < 10)
-        return makeError(QStringLiteral("input stream '%1' has %2 valid samples; position-filter needs at least 10")
-                             .arg(path)
-                             .arg(samples.t.size()));
+        return input->error(QStringLiteral("%1 valid samples; position-filter needs at least 10").arg(samples.t.size()));
     return samples;
 }
 }  // namespace
@@ -183,7 +183,7 @@ Expected<PositionFilter::Params> PositionFilterProcessor::readParams(const RunCo
     return p;
 }
 
-Status PositionFilterProcessor::validate(const RunContext& context) const {
+Status PositionFilterProcessor::prepare(const RunContext& context) const {
     auto params = readParams(context);
     if (!params) return params.error();
     auto samples = loadPositions(context);
@@ -249,7 +249,7 @@ Expected<std::vector<ProcessorOutput>> PositionFilterProcessor::run(const RunCon
         out.at(k, 0) = s.x;
         out.at(k, 1) = s.y;
         out.at(k, 2) = std::abs(s.speed);
-        out.at(k, 3) = reverse ? TrackGeometry::wrapAngle(s.heading + M_PI) : s.heading;
+        out.at(k, 3) = reverse ? math::wrapAngle(s.heading + std::numbers::pi) : s.heading;
         out.at(k, 4) = s.turnRate;
         out.at(k, 5) = s.accel;
         double flag = 0.0;

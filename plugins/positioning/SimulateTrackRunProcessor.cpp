@@ -1,14 +1,14 @@
 #include "plugins/positioning/SimulateTrackRunProcessor.h"
 
+#include "core/processing/Translator.h"
 #include "plugins/positioning/TrackRunSimulator.h"
 
-#include <QCoreApplication>
 #include <limits>
 
 namespace athlos::positioning {
 
 namespace {
-QString tr(const char* text) { return QCoreApplication::translate("athlos::positioning", text); }
+constexpr Translator tr{"athlos::positioning"};
 const double kInf = std::numeric_limits<double>::infinity();
 }  // namespace
 

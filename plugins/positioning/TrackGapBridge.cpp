@@ -1,7 +1,10 @@
 #include "plugins/positioning/TrackGapBridge.h"
 
+#include "core/math/Angles.h"
+
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace athlos::positioning {
 
@@ -41,7 +44,7 @@ bool TrackGapBridge::bridge(PositionFilterResult& r, std::size_t a, std::size_t 
     const TrackQuery qa = track.query({A.x, A.y}), qb = track.query({B.x, B.y});
     auto onTrack = [&](const TrackQuery& q) { return q.d >= field_.lowest() && q.d <= field_.highest(); };
     if (!onTrack(qa) || !onTrack(qb)) return false;
-    const double sign = std::abs(TrackGeometry::wrapAngle(A.heading - qa.heading)) > M_PI / 2 ? -1.0 : 1.0;
+    const double sign = std::abs(math::wrapAngle(A.heading - qa.heading)) > std::numbers::pi / 2 ? -1.0 : 1.0;
     const double T = r.t[b] - r.t[a];
     // End rates in arc length of the reference line (s per second).
     double m0 = std::max(A.speed, 0.0) / stretch(qa.s, qa.d);
@@ -77,7 +80,7 @@ bool TrackGapBridge::bridge(PositionFilterResult& r, std::size_t a, std::size_t 
         K.y = p.position.y();
         K.speed = sDot * g;
         K.accel = sDdot * g;
-        K.heading = sign > 0 ? p.heading : TrackGeometry::wrapAngle(p.heading + M_PI);
+        K.heading = sign > 0 ? p.heading : math::wrapAngle(p.heading + std::numbers::pi);
         K.turnRate = sign * K.speed * p.curvature;
     }
     return true;

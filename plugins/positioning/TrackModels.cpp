@@ -1,6 +1,9 @@
 #include "plugins/positioning/TrackModels.h"
 
+#include "core/math/Angles.h"
+
 #include <cmath>
+#include <numbers>
 
 namespace athlos::positioning {
 
@@ -21,8 +24,8 @@ TrackConstraintField::TrackConstraintField(const TrackConstraintParams& params) 
     centre_[0] = track_->toLps({halfStraight_, 0.0});
     centre_[1] = track_->toLps({-halfStraight_, 0.0});
     for (int back = 0; back < 2; ++back) {
-        straightHeading_[back] = TrackGeometry::wrapAngle((back ? M_PI : 0.0) + pose.rotation);
-        reversedHeading_[back] = TrackGeometry::wrapAngle(straightHeading_[back] + M_PI);
+        straightHeading_[back] = math::wrapAngle((back ? std::numbers::pi : 0.0) + pose.rotation);
+        reversedHeading_[back] = math::wrapAngle(straightHeading_[back] + std::numbers::pi);
     }
 }
 
@@ -33,8 +36,8 @@ TrackConstraint trackConstraint(const TrackConstraintField& field, const Eigen::
     if (q.d < field.lowest() || q.d > field.highest()) return c;
     c.active = true;
     // Running against the track's direction: heading + π and the turn changes sign.
-    const bool reverse = std::abs(TrackGeometry::wrapAngle(heading - q.heading)) > M_PI / 2;
-    c.heading = reverse ? TrackGeometry::wrapAngle(q.heading + M_PI) : q.heading;
+    const bool reverse = std::abs(math::wrapAngle(heading - q.heading)) > std::numbers::pi / 2;
+    c.heading = reverse ? math::wrapAngle(q.heading + std::numbers::pi) : q.heading;
     c.curvature = reverse ? -q.curvature : q.curvature;
     c.headingGradient = q.headingGradient;
     c.curvatureGradient = reverse ? Eigen::Vector2d(-q.curvatureGradient) : q.curvatureGradient;
@@ -81,7 +84,7 @@ PseudoTrackModel::Measurement PseudoTrackModel::measure(const StateVector& x, do
     h.head<2>() = x.head<2>();
     const TrackConstraint c = trackConstraint(field_, x.head<2>(), x[kPhi]);
     if (c.active) {
-        h[2] = TrackGeometry::wrapAngle(x[kPhi] - c.heading);
+        h[2] = math::wrapAngle(x[kPhi] - c.heading);
         h[3] = x[kOmega] - x[kV] * c.curvature;
     }
     if (t > params_.cvAfter) h[4] = x[kA];

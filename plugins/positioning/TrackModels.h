@@ -11,11 +11,13 @@
 // Both fall back to plain CTRA away from the track (a warm-up in the infield) and follow the track in
 // either running direction (the sign is taken from the state's heading).
 #include "core/geometry/TrackGeometry.h"
+#include "core/math/Angles.h"
 #include "plugins/positioning/Ctra.h"
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <numbers>
 
 namespace athlos::positioning {
 
@@ -71,7 +73,7 @@ TrackConstraint trackConstraint(const TrackConstraintField& field, const Eigen::
 EIGEN_ALWAYS_INLINE TrackConstraint TrackConstraintField::at(const Eigen::Vector2d& p, double heading, double predictedHeading,
                                                              const Eigen::Vector2d& predictedDirection) const {
     if (!oval_) return trackConstraint(*this, p, heading);
-    constexpr double pi = 3.14159265358979323846;
+    constexpr double pi = std::numbers::pi;
     TrackConstraint c;
     const Eigen::Vector2d r = p - origin_;
     const double along = axis_.dot(r);
@@ -81,7 +83,7 @@ EIGEN_ALWAYS_INLINE TrackConstraint TrackConstraintField::at(const Eigen::Vector
         const double d = std::abs(across) - kerbRadius_;
         if (d < lowest_ || d > highest_) return c;
         const int back = across >= 0.0 ? 1 : 0;
-        const bool reverse = std::abs(TrackGeometry::wrapAngle(heading - straightHeading_[back])) > pi / 2;
+        const bool reverse = std::abs(math::wrapAngle(heading - straightHeading_[back])) > pi / 2;
         c.active = true;
         c.heading = reverse ? reversedHeading_[back] : straightHeading_[back];
         return c;
@@ -104,12 +106,12 @@ EIGEN_ALWAYS_INLINE TrackConstraint TrackConstraintField::at(const Eigen::Vector
     bool reverse = false;
     if (u.dot(tangent) > 0.0 && std::abs(s) <= 0.05 && std::abs(predictedHeading - heading) < 1.0) {
         const double s2 = s * s;
-        c.heading = TrackGeometry::wrapAngle(
+        c.heading = math::wrapAngle(
             predictedHeading + s * ((1.0 + s2 * (1.0 / 6)) + s2 * s2 * (3.0 / 40 + s2 * (5.0 / 112))));
     } else {
         const double tangentHeading = std::atan2(tangent.y(), tangent.x());
-        reverse = std::abs(TrackGeometry::wrapAngle(heading - tangentHeading)) > pi / 2;
-        c.heading = reverse ? TrackGeometry::wrapAngle(tangentHeading + pi) : tangentHeading;
+        reverse = std::abs(math::wrapAngle(heading - tangentHeading)) > pi / 2;
+        c.heading = reverse ? math::wrapAngle(tangentHeading + pi) : tangentHeading;
     }
     c.curvature = reverse ? -invRho : invRho;
     c.headingGradient = tangent * invRho2;
@@ -176,7 +178,7 @@ public:
     }
     Measurement residual(const Measurement& y, const Measurement& yHat) const {
         Measurement z = y - yHat;
-        z[2] = TrackGeometry::wrapAngle(z[2]);
+        z[2] = math::wrapAngle(z[2]);
         return z;
     }
     StateVector difference(const StateVector& a, const StateVector& b) const { return ctraDifference(a, b); }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <random>
 
 namespace athlos::positioning {
@@ -11,7 +12,7 @@ namespace {
 // Smooth 0 → 1 transition (lane changes take a couple of seconds, without lateral jerk jumps).
 double smoothStep(double u) {
     u = std::clamp(u, 0.0, 1.0);
-    return 0.5 - 0.5 * std::cos(M_PI * u);
+    return 0.5 - 0.5 * std::cos(std::numbers::pi * u);
 }
 
 struct LaneChange {

@@ -1,12 +1,16 @@
 #include "plugins/signal/ButterworthProcessor.h"
 
+#include "core/processing/OutputStreams.h"
+#include "core/processing/Translator.h"
 #include "plugins/signal/ColumnGroups.h"
-#include "plugins/signal/ProcessorSupport.h"
 
-#include <QCoreApplication>
 #include <cmath>
 
 namespace athlos::signal {
+
+namespace {
+constexpr Translator tr{"athlos::signal"};
+}  // namespace
 
 struct ButterworthProcessor::Plan {
     InputSamples input;
@@ -15,17 +19,16 @@ struct ButterworthProcessor::Plan {
     std::vector<int> columns;
 };
 
-QString ButterworthProcessor::name() const { return QCoreApplication::translate("athlos::signal", "Butterworth filter"); }
+QString ButterworthProcessor::name() const { return tr("Butterworth filter"); }
 
 QString ButterworthProcessor::description() const {
-    return QCoreApplication::translate("athlos::signal",
+    return tr(
         "Low-pass, high-pass, band-pass or band-stop Butterworth filter of selected columns, zero-phase "
         "(forward-backward) by default. Needs uniform sampling (run resample first). Quaternion and flag "
         "columns pass through unchanged; NaN-free runs are filtered separately.");
 }
 
 ParameterSpecs ButterworthProcessor::parameters() const {
-    auto tr = [](const char* text) { return QCoreApplication::translate("athlos::signal", text); };
     ParameterSpec cutoff = ParameterSpec::number(QStringLiteral("cutoff"), 0.0, 0.0,
         std::numeric_limits<double>::infinity(), QStringLiteral("Hz"),
         tr("Cut-off frequency (-3 dB of one pass); the lower edge for bandpass/bandstop. Must be below "
@@ -54,16 +57,16 @@ ParameterSpecs ButterworthProcessor::parameters() const {
 
 QList<InputSpec> ButterworthProcessor::inputs() const {
     return {InputSpec{QStringLiteral("signal"), {}, false, false,
-                      QCoreApplication::translate("athlos::signal", "Uniformly sampled stream of any kind.")}};
+                      tr("Uniformly sampled stream of any kind.")}};
 }
 
 QList<OutputSpec> ButterworthProcessor::outputs() const {
     // Empty kind: the output has the kind of the input.
     return {OutputSpec{QString(), false, QString(),
-                       QCoreApplication::translate("athlos::signal", "Filtered stream: same kind, frame and columns.")}};
+                       tr("Filtered stream: same kind, frame and columns.")}};
 }
 
-Expected<ButterworthProcessor::Plan> ButterworthProcessor::prepare(const RunContext& context) const {
+Expected<ButterworthProcessor::Plan> ButterworthProcessor::makePlan(const RunContext& context) const {
     Plan plan;
     auto type = Butterworth::parseType(context.has(QStringLiteral("type")) ? context.text(QStringLiteral("type"))
                                                                            : QStringLiteral("lowpass"));
@@ -80,17 +83,16 @@ Expected<ButterworthProcessor::Plan> ButterworthProcessor::prepare(const RunCont
     plan.params.cutoffHigh = hasHigh ? context.number(QStringLiteral("cutoff_high")) : 0.0;
     plan.zeroPhase = !context.has(QStringLiteral("zero_phase")) || context.flag(QStringLiteral("zero_phase"));
 
-    auto input = loadInput(context);
+    auto input = context.samples(0);
     if (!input) return input.error();
     plan.input = *input;
     const StreamData& data = *plan.input.data;
-    const QString path = context.inputPath(0);
-    if (data.rows() < 2)
-        return makeError(QStringLiteral("stream '%1' has %2 sample(s); filtering needs at least 2").arg(path).arg(data.rows()));
+    const QString& path = plan.input.path;
 
     // The filter is designed for one sampling rate; with jitter its cut-off would wander.
-    const double interval = data.medianInterval();
-    if (!(interval > 0.0)) return makeError(QStringLiteral("stream '%1' has no positive sampling interval").arg(path));
+    auto medianInterval = plan.input.samplingInterval();
+    if (!medianInterval) return medianInterval.error();
+    const double interval = *medianInterval;
     for (std::size_t i = 1; i < data.rows(); ++i) {
         const double dt = data.t[i] - data.t[i - 1];
         if (!(std::abs(dt - interval) <= kUniformTolerance * interval))
@@ -134,13 +136,10 @@ Expected<ButterworthProcessor::Plan> ButterworthProcessor::prepare(const RunCont
     return plan;
 }
 
-Status ButterworthProcessor::validate(const RunContext& context) const {
-    auto plan = prepare(context);
-    return plan ? Status() : Status(plan.error());
-}
+Status ButterworthProcessor::prepare(const RunContext& context) const { return statusOf(makePlan(context)); }
 
 Expected<std::vector<ProcessorOutput>> ButterworthProcessor::run(const RunContext& context) const {
-    auto plan = prepare(context);
+    auto plan = makePlan(context);
     if (!plan) return plan.error();
     const Butterworth filter(plan->params);
     StreamData data = *plan->input.data;

@@ -1,23 +1,26 @@
 #include "plugins/signal/ResampleProcessor.h"
 
-#include "plugins/signal/ProcessorSupport.h"
+#include "core/processing/OutputStreams.h"
+#include "core/processing/Translator.h"
 
-#include <QCoreApplication>
 #include <limits>
 
 namespace athlos::signal {
 
-QString ResampleProcessor::name() const { return QCoreApplication::translate("athlos::signal", "Resample"); }
+namespace {
+constexpr Translator tr{"athlos::signal"};
+}  // namespace
+
+QString ResampleProcessor::name() const { return tr("Resample"); }
 
 QString ResampleProcessor::description() const {
-    return QCoreApplication::translate("athlos::signal",
+    return tr(
         "Resamples a stream onto a uniform time grid: linear, nearest or cubic interpolation of ordinary "
         "columns, SLERP of quaternions (qw,qx,qy,qz, any prefix), nearest neighbour for flag columns; "
         "optionally NaN inside input gaps longer than max_gap.");
 }
 
 ParameterSpecs ResampleProcessor::parameters() const {
-    auto tr = [](const char* text) { return QCoreApplication::translate("athlos::signal", text); };
     const double inf = std::numeric_limits<double>::infinity();
     ParameterSpec rate = ParameterSpec::number(QStringLiteral("rate"), 0.0, 0.0, inf, QStringLiteral("Hz"),
                                                tr("Output sampling rate (> 0)."));
@@ -37,13 +40,13 @@ ParameterSpecs ResampleProcessor::parameters() const {
 
 QList<InputSpec> ResampleProcessor::inputs() const {
     return {InputSpec{QStringLiteral("signal"), {}, false, false,
-                      QCoreApplication::translate("athlos::signal", "Stream of any kind, possibly non-uniform.")}};
+                      tr("Stream of any kind, possibly non-uniform.")}};
 }
 
 QList<OutputSpec> ResampleProcessor::outputs() const {
     // Empty kind: the output has the kind of the input.
     return {OutputSpec{QString(), false, QString(),
-                       QCoreApplication::translate("athlos::signal",
+                       tr(
                                                    "Uniformly sampled stream: same kind, frame and columns.")}};
 }
 
@@ -60,21 +63,20 @@ Expected<Resampler::Params> ResampleProcessor::readParams(const RunContext& cont
     return params;
 }
 
-Status ResampleProcessor::validate(const RunContext& context) const {
+Status ResampleProcessor::prepare(const RunContext& context) const {
     auto params = readParams(context);
     if (!params) return params.error();
     if (Status ok = Resampler::checkParams(*params); !ok) return ok;
-    auto input = loadInput(context);
+    auto input = context.samples(0);
     if (!input) return input.error();
-    if (Status ok = Resampler::check(*params, input->data->t); !ok)
-        return makeError(QStringLiteral("stream '%1': %2").arg(context.inputPath(0), ok.message()));
+    if (Status ok = Resampler::check(*params, input->data->t); !ok) return input->error(ok.message());
     return {};
 }
 
 Expected<std::vector<ProcessorOutput>> ResampleProcessor::run(const RunContext& context) const {
-    if (Status ok = validate(context); !ok) return ok.error();
+    if (Status ok = prepare(context); !ok) return ok.error();
     const Resampler::Params params = *readParams(context);
-    const InputSamples input = *loadInput(context);
+    const InputSamples input = *context.samples(0);
     const StreamData& in = *input.data;
     const QStringList names = input.stream->info().columnNames();
     const ColumnGroups groups = ColumnGroups::detect(names);

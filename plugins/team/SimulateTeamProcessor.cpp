@@ -1,14 +1,14 @@
 #include "plugins/team/SimulateTeamProcessor.h"
 
+#include "core/processing/Translator.h"
 #include "plugins/team/TeamSimulator.h"
 
-#include <QCoreApplication>
 #include <limits>
 
 namespace athlos::team {
 
 namespace {
-QString tr(const char* text) { return QCoreApplication::translate("athlos::team", text); }
+constexpr Translator tr{"athlos::team"};
 }  // namespace
 
 QString SimulateTeamProcessor::name() const { return tr("Simulate team match"); }

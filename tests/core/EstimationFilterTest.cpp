@@ -9,6 +9,7 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 #include <cmath>
+#include <numbers>
 #include <random>
 
 using namespace athlos::estimation;
@@ -75,15 +76,21 @@ struct TurnRangeBearing : ModelDefaults<5, 2> {
     MeasurementMatrix measurementNoise(double) const { return Vector<2>(0.25, 0.01).asDiagonal(); }
     Measurement residual(const Measurement& a, const Measurement& b) const {
         Measurement d = a - b;
-        d[1] = std::remainder(d[1], 2 * M_PI);
+        d[1] = std::remainder(d[1], 2 * std::numbers::pi);
         return d;
     }
     StateVector difference(const StateVector& a, const StateVector& b) const {
         StateVector d = a - b;
-        d[3] = std::remainder(d[3], 2 * M_PI);
+        d[3] = std::remainder(d[3], 2 * std::numbers::pi);
         return d;
     }
 };
+
+// The models above meet the filters' requirements (KalmanTypes.h); the unscented-only model has no
+// measurement Jacobian, so the EKF does not accept it.
+static_assert(EkfModel<Sprinter> && EkfModel<Cv2d>);
+static_assert(KalmanModel<TurnRangeBearing> && !EkfModel<TurnRangeBearing>);
+static_assert(!KalmanModel<ModelDefaults<2, 1>>);  // the defaults alone are no model
 
 struct Simulated {
     std::vector<double> t;

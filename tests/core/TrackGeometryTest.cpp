@@ -1,16 +1,18 @@
 // Track geometry: World Athletics 400 m oval, 200 m indoor, polylines, pose, JSON, gradients.
 #include "core/geometry/TrackGeometry.h"
+#include "core/math/Angles.h"
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 #include <cmath>
+#include <numbers>
 
 using athlos::TrackGeometry;
 using athlos::TrackPose;
 using Eigen::Vector2d;
 
 namespace {
-double angleDiff(double a, double b) { return std::abs(TrackGeometry::wrapAngle(a - b)); }
+double angleDiff(double a, double b) { return std::abs(athlos::math::wrapAngle(a - b)); }
 }  // namespace
 
 TEST(TrackGeometry, Iaaf400mLapLengthsAndLanes) {
@@ -18,25 +20,25 @@ TEST(TrackGeometry, Iaaf400mLapLengthsAndLanes) {
     EXPECT_DOUBLE_EQ(t.laneOffset(1), 0.30);
     EXPECT_NEAR(t.laneOffset(2), 1.22 + 0.20, 1e-12);
     EXPECT_NEAR(t.laneLength(1), 400.0, 0.005);  // 2·84.39 + 2π·36.80
-    EXPECT_NEAR(t.laneLength(2) - t.laneLength(1), 2 * M_PI * (1.42 - 0.30), 1e-9);
-    EXPECT_NEAR(t.referenceLength(), 2 * 84.39 + 2 * M_PI * 36.5, 1e-9);
+    EXPECT_NEAR(t.laneLength(2) - t.laneLength(1), 2 * std::numbers::pi * (1.42 - 0.30), 1e-9);
+    EXPECT_NEAR(t.referenceLength(), 2 * 84.39 + 2 * std::numbers::pi * 36.5, 1e-9);
     EXPECT_NEAR(TrackGeometry::indoor200m().laneLength(1), 200.0, 1e-9);
 }
 
 TEST(TrackGeometry, HeadingOnStraightsAndBends) {
     const TrackGeometry t = TrackGeometry::iaaf400m();
     EXPECT_NEAR(t.headingAt({0, -36.8}), 0.0, 1e-12);  // home straight towards +x
-    EXPECT_NEAR(angleDiff(t.headingAt({10, 36.8}), M_PI), 0.0, 1e-12);  // back straight
+    EXPECT_NEAR(angleDiff(t.headingAt({10, 36.8}), std::numbers::pi), 0.0, 1e-12);  // back straight
     EXPECT_DOUBLE_EQ(t.curvatureAt({0, -36.8}), 0.0);
     // Bend 1 (centre (42.195, 0)): tangent of a counter-clockwise circle, curvature 1/ρ.
     for (double a : {-1.2, -0.3, 0.0, 0.7, 1.5}) {
         const Vector2d p = Vector2d(42.195, 0) + 37.0 * Vector2d(std::cos(a), std::sin(a));
-        EXPECT_NEAR(angleDiff(t.headingAt(p), a + M_PI / 2), 0.0, 1e-12);
+        EXPECT_NEAR(angleDiff(t.headingAt(p), a + std::numbers::pi / 2), 0.0, 1e-12);
         EXPECT_NEAR(t.curvatureAt(p), 1.0 / 37.0, 1e-12);
         EXPECT_NEAR(t.query(p).d, 0.5, 1e-12);
     }
     const Vector2d p2 = Vector2d(-42.195, 0) + 38.0 * Vector2d(std::cos(2.5), std::sin(2.5));
-    EXPECT_NEAR(angleDiff(t.headingAt(p2), 2.5 + M_PI / 2), 0.0, 1e-12);
+    EXPECT_NEAR(angleDiff(t.headingAt(p2), 2.5 + std::numbers::pi / 2), 0.0, 1e-12);
 }
 
 TEST(TrackGeometry, ArcLengthRoundTripAndPose) {
@@ -67,7 +69,7 @@ TEST(TrackGeometry, GradientsMatchNumericDifferentiation) {
         const auto q = t.field(p);
         for (int i = 0; i < 2; ++i) {
             const Vector2d e = Vector2d::Unit(i) * h;
-            const double dh = TrackGeometry::wrapAngle(t.headingAt(p + e) - t.headingAt(p - e)) / (2 * h);
+            const double dh = athlos::math::wrapAngle(t.headingAt(p + e) - t.headingAt(p - e)) / (2 * h);
             const double dk = (t.curvatureAt(p + e) - t.curvatureAt(p - e)) / (2 * h);
             EXPECT_NEAR(q.headingGradient[i], dh, 1e-6);
             EXPECT_NEAR(q.curvatureGradient[i], dk, 1e-8);
@@ -83,9 +85,9 @@ TEST(TrackGeometry, PolylineNearestSegmentHeading) {
     const TrackGeometry t = TrackGeometry::polyline(p, QStringLiteral("square"));
     EXPECT_NEAR(t.referenceLength(), 300.0, 1e-12);
     EXPECT_NEAR(t.headingAt({50, 1}), 0.0, 1e-12);
-    EXPECT_NEAR(t.headingAt({99, 25}), M_PI / 2, 1e-12);
-    EXPECT_NEAR(angleDiff(t.headingAt({50, 49}), M_PI), 0.0, 1e-12);
-    EXPECT_NEAR(t.headingAt({1, 25}), -M_PI / 2, 1e-12);
+    EXPECT_NEAR(t.headingAt({99, 25}), std::numbers::pi / 2, 1e-12);
+    EXPECT_NEAR(angleDiff(t.headingAt({50, 49}), std::numbers::pi), 0.0, 1e-12);
+    EXPECT_NEAR(t.headingAt({1, 25}), -std::numbers::pi / 2, 1e-12);
     const auto q = t.query({50, -2});
     EXPECT_NEAR(q.s, 50.0, 1e-12);
     EXPECT_NEAR(q.d, 2.0, 1e-12);  // right of the running direction
@@ -107,7 +109,7 @@ TEST(TrackGeometry, JsonRoundTripAndResolve) {
     const auto poly = TrackGeometry::fromJson(TrackGeometry::polyline(p, QStringLiteral("road")).toJson());
     ASSERT_TRUE(poly.ok());
     EXPECT_EQ(poly->kind(), TrackGeometry::Kind::Polyline);
-    EXPECT_NEAR(poly->headingAt({15, 6}), M_PI / 4, 1e-12);
+    EXPECT_NEAR(poly->headingAt({15, 6}), std::numbers::pi / 4, 1e-12);
 
     std::map<QString, QJsonObject> project{{QStringLiteral("velodrome"), poly->toJson()}};
     EXPECT_TRUE(TrackGeometry::resolve(project, QStringLiteral("velodrome")).ok());

@@ -5,7 +5,7 @@
 
 #include "core/io/Importer.h"
 #include "core/processing/ProcessorRunner.h"
-#include "plugins/events/GaitEvaluation.h"
+#include "tools/eval/GaitEvaluation.h"
 
 #include <QDir>
 #include <QTemporaryDir>

@@ -1,7 +1,7 @@
 // Validation of the gait event detector on real data: gaitmap's foot IMU example (left and right
 // foot, 102.4 Hz) against the strides segmented from motion capture (start = initial contact).
 // Figures and the reproducing command: docs/validation/gait-events.md.
-#include "plugins/events/GaitEvaluation.h"
+#include "tools/eval/GaitEvaluation.h"
 
 #include <QDir>
 #include <algorithm>

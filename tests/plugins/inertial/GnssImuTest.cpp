@@ -1,6 +1,6 @@
 // GNSS/IMU fusion: Jacobian against numeric differentiation, local tangent plane, and the judged
 // margin on simulated football sessions (fused position RMSE ≥ 40 % below raw GNSS, speed < 0.3 m/s).
-#include "plugins/inertial/FusionEvaluation.h"
+#include "tools/eval/FusionEvaluation.h"
 #include "plugins/inertial/LocalTangentPlane.h"
 
 #include <gtest/gtest.h>

@@ -2,6 +2,7 @@
 // geometric checks of what "abduction" and "internal rotation" move), left/right mirroring, heading
 // alignment, time alignment, and the end-to-end validation simulate-limb → orientation (6D) →
 // joint-angles against the simulator's reference angles.
+#include "core/math/Angles.h"
 #include "core/processing/ProcessorRunner.h"
 #include "plugins/inertial/JointAngles.h"
 #include "plugins/inertial/JointAnglesProcessor.h"
@@ -24,7 +25,7 @@ using math::Vec3;
 
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using math::kDeg;
 
 Quat rot(const Vec3& axis, double degrees) { return math::quatFromAxisAngle(axis, degrees * kDeg); }
 
@@ -183,7 +184,7 @@ Expected<AngleRmse> compare(const Project& project, const QString& estimate, con
     if (a.t != b.t) return makeError(QStringLiteral("time bases differ"));
     AngleRmse out;
     for (std::size_t k = 0; k < a.rows(); ++k) {
-        for (int i = 0; i < 3; ++i) out.rmse[i] += std::pow(math::wrapPi(a.at(k, i) - b.at(k, i)), 2);
+        for (int i = 0; i < 3; ++i) out.rmse[i] += std::pow(math::wrapAngle(a.at(k, i) - b.at(k, i)), 2);
         ++out.count;
     }
     out.rmse = (out.rmse / double(out.count)).cwiseSqrt() / kDeg;

@@ -1,6 +1,7 @@
 // Limb simulator: its IMUs are consistent with its truth (strapdown of the gyroscope reproduces the
 // orientation, the accelerometer reads gravity at rest, the thigh and shank see the same knee-centre
 // acceleration, spec §10), and its reference angles are the angles of its segment chain.
+#include "core/math/Angles.h"
 #include "plugins/inertial/LimbSimulator.h"
 
 #include <gtest/gtest.h>
@@ -14,7 +15,7 @@ using math::Vec3;
 
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using math::kDeg;
 
 LimbSimulatorParams ideal() {
     LimbSimulatorParams p;

@@ -1,5 +1,6 @@
 // Orientation filters on simulated data with known truth: exact strapdown, convergence from a wrong
 // initial orientation, gyroscope bias estimation, magnetic disturbance detection and ride-out.
+#include "core/math/Angles.h"
 #include "core/math/OrientationError.h"
 #include "plugins/inertial/ImuGnssSimulator.h"
 #include "plugins/inertial/OrientationEstimation.h"
@@ -10,7 +11,7 @@ using namespace athlos;
 using namespace athlos::inertial;
 
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
+using math::kDeg;
 
 struct Rows {
     std::vector<double> v;  // acc, gyr, mag per row

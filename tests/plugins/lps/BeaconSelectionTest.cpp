@@ -4,6 +4,7 @@
 #include "plugins/lps/GainPattern.h"
 
 #include <gtest/gtest.h>
+#include <numbers>
 
 using namespace athlos::lps;
 
@@ -44,7 +45,7 @@ TEST_P(SelectionRemovesNlos, PlantedNlosReadingGetsNoWeight) {
     BeaconSelection::Params p;
     p.method = GetParam();
     const BeaconSelection selection(p);
-    BeaconSelection::View view{m, M_PI};  // running west: the east beacon is behind the body
+    BeaconSelection::View view{m, std::numbers::pi};  // running west: the east beacon is behind the body
     const TagFix fix = selection.solve(input, solver, nullptr, &view);
     ASSERT_TRUE(fix.valid);
     EXPECT_EQ(input.weights[3], 0.0);
@@ -150,7 +151,7 @@ TEST(BeaconSelection, FreeSpaceLossFollowsEquation39) {
 TEST(GainPattern, DefaultIsAFrontLobe) {
     const GainPattern g;
     EXPECT_NEAR(g.gainDb(0.0), 0.0, 1e-9);
-    EXPECT_NEAR(g.gainDb(M_PI), -30.0, 0.01);
+    EXPECT_NEAR(g.gainDb(std::numbers::pi), -30.0, 0.01);
     EXPECT_NEAR(g.gain(0.3), g.gain(-0.3), 1e-12);
     EXPECT_GT(g.gain(0.5), g.gain(1.5));
 }
@@ -158,9 +159,9 @@ TEST(GainPattern, DefaultIsAFrontLobe) {
 TEST(GainPattern, ParsedTableIsMirroredAndInterpolated) {
     auto g = GainPattern::parse("0:1, 90:0.5, 180:0.01");
     ASSERT_TRUE(g.ok()) << g.message().toStdString();
-    EXPECT_NEAR(g->gain(M_PI / 4), 0.75, 1e-9);
-    EXPECT_NEAR(g->gain(-M_PI / 4), 0.75, 1e-9);  // mirrored
-    EXPECT_NEAR(g->gain(M_PI), 0.01, 1e-9);
+    EXPECT_NEAR(g->gain(std::numbers::pi / 4), 0.75, 1e-9);
+    EXPECT_NEAR(g->gain(-std::numbers::pi / 4), 0.75, 1e-9);  // mirrored
+    EXPECT_NEAR(g->gain(std::numbers::pi), 0.01, 1e-9);
     EXPECT_FALSE(GainPattern::parse("0:1, 90:-2").ok());
     EXPECT_FALSE(GainPattern::parse("nonsense").ok());
 }

@@ -11,8 +11,8 @@ using namespace athlos;
 using namespace athlos::lps;
 
 TEST(RobustStatistics, MedianMadAndQuantiles) {
-    EXPECT_DOUBLE_EQ(median({3, 1, 2}), 2.0);
-    EXPECT_DOUBLE_EQ(median({4, 1, 3, 2}), 2.5);
+    EXPECT_DOUBLE_EQ(math::median({3, 1, 2}), 2.0);
+    EXPECT_DOUBLE_EQ(math::median({4, 1, 3, 2}), 2.5);
     EXPECT_DOUBLE_EQ(medianAbsoluteDeviation({1, 2, 3, 4, 100}), 1.0);
     EXPECT_NEAR(normalQuantile(0.975), 1.959964, 1e-5);
     EXPECT_NEAR(studentTQuantile(0.025, 20), 2.085963, 2e-3);

@@ -3,11 +3,11 @@
 #include "LpsTestSupport.h"
 
 #include "core/processing/ProcessorRunner.h"
-#include "plugins/lps/AlignProcessor.h"
 #include "plugins/lps/BeaconTable.h"
-#include "plugins/lps/CalibrationProcessor.h"
-#include "plugins/lps/PositioningProcessor.h"
-#include "plugins/lps/SimulateProcessor.h"
+#include "plugins/lps/LpsAlignProcessor.h"
+#include "plugins/lps/LpsCalibrationProcessor.h"
+#include "plugins/lps/LpsPositioningProcessor.h"
+#include "plugins/lps/SimulateLpsProcessor.h"
 
 #include <QTemporaryDir>
 #include <gtest/gtest.h>
@@ -19,20 +19,20 @@ using namespace athlos::lps::testsupport;
 TEST(LpsProcessors, CalibrateThenPositionAsTheJudgeDoes) {
     QTemporaryDir dir;
     auto project = Project::create(dir.filePath("p.athlos"));
-    const SimulateProcessor simulate;
+    const SimulateLpsProcessor simulate;
     ASSERT_TRUE(run(*project, simulate, {}, "walk/tdoa", {{"scenario", "walk"}, {"venue_seed", 5}, {"seed", 1}}));
     ASSERT_TRUE(run(*project, simulate, {}, "test/tdoa", {{"scenario", "run"}, {"venue_seed", 5}, {"seed", 2}, {"lane", 3}}));
     ASSERT_NE(project->table("walk/tdoa-guess"), nullptr);
     ASSERT_NE(project->stream("test/tdoa-truth"), nullptr);
 
-    const CalibrationProcessor calibrate;
+    const LpsCalibrationProcessor calibrate;
     Status s = run(*project, calibrate, {"walk/tdoa", "walk/tdoa-guess"}, "walk/beacons");
     ASSERT_TRUE(s) << s.message().toStdString();
     const Table* report = project->table("walk/beacons-report");
     ASSERT_NE(report, nullptr);
     EXPECT_LT(report->attributes.value("nrmsr_calibrated").toDouble(), report->attributes.value("nrmsr_initial").toDouble());
 
-    const PositioningProcessor positioning;
+    const LpsPositioningProcessor positioning;
     ASSERT_TRUE(run(*project, positioning, {"test/tdoa", "walk/beacons"}, "test/lps-cal", {{"tag_height", "1.2"}}));
     ASSERT_TRUE(run(*project, positioning, {"test/tdoa", "test/tdoa-beacons"}, "test/lps-ref", {{"tag_height", "1.2"}}));
     const Stream* cal = project->stream("test/lps-cal");
@@ -48,9 +48,9 @@ TEST(LpsProcessors, CalibrateThenPositionAsTheJudgeDoes) {
 TEST(LpsProcessors, ParameterAndInputErrorsNameTheProblem) {
     QTemporaryDir dir;
     auto project = Project::create(dir.filePath("p.athlos"));
-    const SimulateProcessor simulate;
+    const SimulateLpsProcessor simulate;
     ASSERT_TRUE(run(*project, simulate, {}, "w/tdoa", {{"laps", "0.1"}}));
-    const PositioningProcessor positioning;
+    const LpsPositioningProcessor positioning;
     Status bad = run(*project, positioning, {"w/tdoa", "w/tdoa-beacons"}, "w/lps", {{"selection", "magic"}});
     ASSERT_FALSE(bad);
     EXPECT_TRUE(bad.message().contains("selection"));
@@ -62,7 +62,7 @@ TEST(LpsProcessors, ParameterAndInputErrorsNameTheProblem) {
               {{"selection", "field-of-view"}, {"heading", "orientation"}});
     ASSERT_FALSE(bad);
     EXPECT_TRUE(bad.message().contains("orientation"));
-    const AlignProcessor align;
+    const LpsAlignProcessor align;
     bad = run(*project, align, {"w/tdoa-beacons"}, "w/aligned", {{"marks", "1,2,0>0,0,0"}});
     ASSERT_FALSE(bad);
     EXPECT_TRUE(bad.message().contains("marks"));
@@ -71,9 +71,9 @@ TEST(LpsProcessors, ParameterAndInputErrorsNameTheProblem) {
 TEST(LpsProcessors, AlignMovesMarksAndReferenceNode) {
     QTemporaryDir dir;
     auto project = Project::create(dir.filePath("p.athlos"));
-    ASSERT_TRUE(run(*project, SimulateProcessor(), {}, "w/tdoa", {{"laps", "0.1"}}));
+    ASSERT_TRUE(run(*project, SimulateLpsProcessor(), {}, "w/tdoa", {{"laps", "0.1"}}));
     // Shift by (+10, −5) and turn a quarter: (0,0,0)→(10,−5,0), (10,0,0)→(10,5,0).
-    ASSERT_TRUE(run(*project, AlignProcessor(), {"w/tdoa-beacons"}, "w/aligned", {{"marks", "0,0,0>10,-5,0; 10,0,0>10,5,0"}}));
+    ASSERT_TRUE(run(*project, LpsAlignProcessor(), {"w/tdoa-beacons"}, "w/aligned", {{"marks", "0,0,0>10,-5,0; 10,0,0>10,5,0"}}));
     auto moved = layoutFromTable(*project->table("w/aligned"), "w/aligned");
     auto original = layoutFromTable(*project->table("w/tdoa-beacons"), "w/tdoa-beacons");
     ASSERT_TRUE(moved.ok() && original.ok());
@@ -85,10 +85,10 @@ TEST(LpsProcessors, AlignMovesMarksAndReferenceNode) {
 TEST(LpsProcessors, PositioningHonoursCancellation) {
     QTemporaryDir dir;
     auto project = Project::create(dir.filePath("p.athlos"));
-    ASSERT_TRUE(run(*project, SimulateProcessor(), {}, "r/tdoa", {{"scenario", "run"}}));
+    ASSERT_TRUE(run(*project, SimulateLpsProcessor(), {}, "r/tdoa", {{"scenario", "run"}}));
     CancelToken token;
     token.cancel();
-    Status s = run(*project, PositioningProcessor(), {"r/tdoa", "r/tdoa-beacons"}, "r/lps", {}, Progress({}, token));
+    Status s = run(*project, LpsPositioningProcessor(), {"r/tdoa", "r/tdoa-beacons"}, "r/lps", {}, Progress({}, token));
     ASSERT_FALSE(s);
     EXPECT_EQ(project->stream("r/lps"), nullptr);
 }

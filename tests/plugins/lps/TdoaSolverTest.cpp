@@ -3,6 +3,7 @@
 #include "plugins/lps/TdoaSolver.h"
 
 #include <gtest/gtest.h>
+#include <numbers>
 
 using namespace athlos::lps;
 
@@ -11,7 +12,7 @@ namespace {
 BeaconLayout ring(int n, double radius = 60.0) {
     BeaconLayout layout;
     for (int i = 0; i < n; ++i) {
-        const double a = 2 * M_PI * i / n + 0.1 * i;
+        const double a = 2 * std::numbers::pi * i / n + 0.1 * i;
         layout.ids << QString::number(i + 1);
         layout.positions.emplace_back(radius * std::cos(a) * 1.4, radius * std::sin(a), 3.0 + 5.0 * ((i * 37) % 11) / 10.0);
     }

@@ -4,17 +4,17 @@
 #include "LpsTestSupport.h"
 
 #include "core/processing/ProcessorRunner.h"
-#include "plugins/lps/CalibrationProcessor.h"
 #include "plugins/lps/FrameAlignment.h"
 #include "plugins/lps/LpsCalibration.h"
-#include "plugins/lps/PositioningProcessor.h"
-#include "plugins/lps/SimulateProcessor.h"
+#include "plugins/lps/LpsCalibrationProcessor.h"
+#include "plugins/lps/LpsPositioningProcessor.h"
+#include "plugins/lps/SimulateLpsProcessor.h"
 #include "plugins/lps/TdoaSimulator.h"
 #include "plugins/lps/TrackGauge.h"
 
 #include <QTemporaryDir>
 #include <gtest/gtest.h>
-
+#include <numbers>
 #include <random>
 
 using namespace athlos;
@@ -46,7 +46,7 @@ std::vector<TrajectorySample> randomWalk(int steps, std::uint64_t seed) {
         walk.push_back({double(k), p, heading});
         heading += 0.6 * n(rng);
         p += 1.4 * Vector3(std::cos(heading), std::sin(heading), 0.0);
-        if (std::abs(p.x()) > 70.0) { p.x() = std::copysign(70.0, p.x()); heading = M_PI - heading; }
+        if (std::abs(p.x()) > 70.0) { p.x() = std::copysign(70.0, p.x()); heading = std::numbers::pi - heading; }
         if (std::abs(p.y()) > 30.0) { p.y() = std::copysign(30.0, p.y()); heading = -heading; }
     }
     return walk;
@@ -167,9 +167,9 @@ TEST(LpsCalibrationGauge, WrongTrackPoseFallsBack) {
 // tag_height 1.2) on several venues: calibrated RMSE ≤ surveyed RMSE + 0.10 m with the default
 // gauge=auto. With gauge=guess at least one of these venues fails (venue 3: +0.2 m).
 TEST(LpsCalibrationGauge, JudgedFlowPassesOnSeveralVenues) {
-    const SimulateProcessor simulate;
-    const CalibrationProcessor calibrate;
-    const PositioningProcessor positioning;
+    const SimulateLpsProcessor simulate;
+    const LpsCalibrationProcessor calibrate;
+    const LpsPositioningProcessor positioning;
     int guessFailures = 0;
     for (const int venue : {1, 2, 3, 4, 5}) {
         QTemporaryDir dir;

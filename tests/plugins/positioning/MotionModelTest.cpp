@@ -1,11 +1,13 @@
 // Motion models: CTRA small-ω limit, Jacobians vs numeric differentiation for every model,
 // augmented prediction follows the track geometry.
+#include "core/math/Angles.h"
 #include "plugins/positioning/ConstantVelocity.h"
 #include "plugins/positioning/Ctra.h"
 #include "plugins/positioning/TrackModels.h"
 
 #include <gtest/gtest.h>
 #include <cmath>
+#include <numbers>
 
 using namespace athlos;
 using namespace athlos::positioning;
@@ -55,7 +57,7 @@ TEST(Ctra, SmallOmegaLimitIsContinuous) {
     EXPECT_NEAR(s.delta.x(), (10.0 + 2.0) * std::cos(0.4), 1e-12);
     EXPECT_NEAR(s.delta.y(), (10.0 + 2.0) * std::sin(0.4), 1e-12);
     // A quarter circle of radius r = v/ω = 4 starting along +x ends at (4, 4).
-    const auto q = ctraIncrement(2.0, 0.0, 0.0, 0.5, M_PI);
+    const auto q = ctraIncrement(2.0, 0.0, 0.0, 0.5, std::numbers::pi);
     EXPECT_NEAR(q.delta.x(), 4.0, 1e-12);
     EXPECT_NEAR(q.delta.y(), 4.0, 1e-12);
 }
@@ -83,13 +85,13 @@ TEST(Ctra, KinematicsReportTheDirectionOfTravel) {
     x << 1.0, 2.0, -7.5, 0.4, -0.74, 0.19;
     const Kinematics k = CtraModel::kinematics(x);
     EXPECT_DOUBLE_EQ(k.speed, 7.5);
-    EXPECT_NEAR(k.heading, -0.74 + M_PI, 1e-15);
+    EXPECT_NEAR(k.heading, -0.74 + std::numbers::pi, 1e-15);
     EXPECT_DOUBLE_EQ(k.accel, -0.4);
     EXPECT_DOUBLE_EQ(k.turnRate, 0.19);
     // The same position one step later either way: the mirrored state moves along the reported heading.
     const CtraModel m;
     Vector<6> forward;
-    forward << 1.0, 2.0, 7.5, -0.4, -0.74 + M_PI, 0.19;
+    forward << 1.0, 2.0, 7.5, -0.4, -0.74 + std::numbers::pi, 0.19;
     EXPECT_LT((m.predict(x, 0.1, 0.0).head<2>() - m.predict(forward, 0.1, 0.0).head<2>()).norm(), 1e-12);
     x[kV] = 3.0;
     EXPECT_DOUBLE_EQ(CtraModel::kinematics(x).heading, -0.74);
@@ -110,10 +112,10 @@ TEST(AugmentedTrackModel, FollowsTrackAndJacobianMatches) {
     const AugmentedTrackModel m(p);
     // Bend 1, a bit off the tangent: the predicted heading is the track's, ω = v / r.
     Vector<6> x;
-    x << 42.195 + 37.0 * std::cos(0.3), 37.0 * std::sin(0.3), 7.0, 0.5, 0.3 + M_PI / 2 + 0.05, 0.1;
+    x << 42.195 + 37.0 * std::cos(0.3), 37.0 * std::sin(0.3), 7.0, 0.5, 0.3 + std::numbers::pi / 2 + 0.05, 0.1;
     const auto y = m.predict(x, 0.05, 1.0, nullptr);
     const double rho = (y.head<2>() - Eigen::Vector2d(42.195, 0)).norm();
-    EXPECT_NEAR(TrackGeometry::wrapAngle(y[kPhi] - std::atan2(y[kPy], y[kPx] - 42.195) - M_PI / 2), 0.0, 1e-12);
+    EXPECT_NEAR(math::wrapAngle(y[kPhi] - std::atan2(y[kPy], y[kPx] - 42.195) - std::numbers::pi / 2), 0.0, 1e-12);
     EXPECT_NEAR(y[kOmega], 7.0 / rho, 1e-12);
     expectJacobian(m, x, 0.05, 1.0);
     expectJacobian(m, x, 0.05, 6.0);  // constant-velocity phase
@@ -127,7 +129,7 @@ TEST(AugmentedTrackModel, FollowsTrackAndJacobianMatches) {
     expectJacobian(m, x, 0.1, 6.0);
     // Running the wrong way round: heading π on the home straight.
     x << 0.0, -37.5, 7.0, 0.0, 3.0, 0.0;
-    EXPECT_NEAR(std::abs(m.predict(x, 0.1, 0.0, nullptr)[kPhi]), M_PI, 1e-12);
+    EXPECT_NEAR(std::abs(m.predict(x, 0.1, 0.0, nullptr)[kPhi]), std::numbers::pi, 1e-12);
     // Far off the track (infield): generic CTRA.
     x << 0.0, 0.0, 3.0, 0.0, 1.0, 0.2;
     EXPECT_NEAR(m.predict(x, 0.1, 0.0, nullptr)[kPhi], 1.02, 1e-12);
@@ -150,9 +152,9 @@ TEST(TrackConstraintField, FastQueryMatchesGeneralQuery) {
         for (const double offset : {-5.0, 0.3, 4.0, 9.5, 14.0}) {
             const TrackPoint pt = track->pointAt(s, offset);
             const TrackQuery q = track->query(pt.position);
-            for (const double delta : {0.0, 0.03, -0.0499, 0.08, 0.4, -1.2, M_PI}) {
+            for (const double delta : {0.0, 0.03, -0.0499, 0.08, 0.4, -1.2, std::numbers::pi}) {
                 for (const double turn : {0.0, 0.02, -1.5}) {
-                    const double predicted = TrackGeometry::wrapAngle(q.heading + delta);
+                    const double predicted = math::wrapAngle(q.heading + delta);
                     const double before = predicted - turn;  // heading before the step, ωT = turn
                     const Eigen::Vector2d direction(std::cos(predicted), std::sin(predicted));
                     const TrackConstraint fast = field.at(pt.position, before, predicted, direction);
@@ -163,10 +165,10 @@ TEST(TrackConstraintField, FastQueryMatchesGeneralQuery) {
                         continue;
                     }
                     EXPECT_EQ(fast.varies, general.varies);
-                    EXPECT_LT(std::abs(TrackGeometry::wrapAngle(fast.heading - general.heading)), 1e-12)
+                    EXPECT_LT(std::abs(math::wrapAngle(fast.heading - general.heading)), 1e-12)
                         << "s " << s << " d " << offset << " delta " << delta << " turn " << turn;
-                    EXPECT_GT(fast.heading, -M_PI);
-                    EXPECT_LE(fast.heading, M_PI);
+                    EXPECT_GT(fast.heading, -std::numbers::pi);
+                    EXPECT_LE(fast.heading, std::numbers::pi);
                     EXPECT_NEAR(fast.curvature, general.curvature, 1e-15);
                     EXPECT_LT((fast.headingGradient - general.headingGradient).norm(), 1e-15);
                     EXPECT_LT((fast.curvatureGradient - general.curvatureGradient).norm(), 1e-15);
@@ -192,7 +194,7 @@ TEST(PseudoTrackModel, MeasurementJacobianMatchesNumeric) {
     p.cvAfter = 1.0;
     const PseudoTrackModel m(p);
     Vector<6> x;
-    x << 42.195 + 38.0 * std::cos(-0.8), 38.0 * std::sin(-0.8), 6.0, 0.2, -0.8 + M_PI / 2 + 0.02, 0.15;
+    x << 42.195 + 38.0 * std::cos(-0.8), 38.0 * std::sin(-0.8), 6.0, 0.2, -0.8 + std::numbers::pi / 2 + 0.02, 0.15;
     const auto H = m.measurementJacobian(x, 2.0);
     for (int j = 0; j < 6; ++j) {
         auto xp = x, xm = x;

@@ -2,11 +2,13 @@
 // geometry itself (pointAt): constant speed in a lane (to cm), more than a lap unseen (whole laps
 // chosen by speed), running the wrong way round, an acceleration through the gap (bounded error),
 // and the cases it must leave alone (short gaps, ends off the track, the filter's own samples).
+#include "core/math/Angles.h"
 #include "plugins/positioning/TrackGapBridge.h"
 
 #include <gtest/gtest.h>
 #include <cmath>
 #include <functional>
+#include <numbers>
 
 using namespace athlos;
 using namespace athlos::positioning;
@@ -35,7 +37,7 @@ Scenario scenario(const TrackGeometry& track, double duration, double gapBegin, 
         const TrackPoint p = track.pointAt(s(t), d);
         const double speed = (track.pointAt(s(t + h), d).position - track.pointAt(s(t - h), d).position).norm() / (2 * h);
         Kinematics truth{p.position.x(), p.position.y(), speed,
-                         sign > 0 ? p.heading : TrackGeometry::wrapAngle(p.heading + M_PI), sign * speed * p.curvature, 0.0};
+                         sign > 0 ? p.heading : math::wrapAngle(p.heading + std::numbers::pi), sign * speed * p.curvature, 0.0};
         sc.truth.push_back(truth);
         sc.result.t.push_back(t);
         const bool inGap = t > gapBegin + 1e-9 && t < gapEnd - 1e-9;
@@ -88,7 +90,7 @@ TEST(TrackGapBridge, ConstantSpeedInALaneIsReproducedToCentimetres) {
     for (std::size_t k = 0; k < sc.result.t.size(); ++k) {
         if (sc.result.t[k] <= 8.0 || sc.result.t[k] >= 20.0) continue;
         EXPECT_NEAR(sc.result.states[k].speed, v, 0.05);
-        EXPECT_LT(std::abs(TrackGeometry::wrapAngle(sc.result.states[k].heading - sc.truth[k].heading)), 2e-3);
+        EXPECT_LT(std::abs(math::wrapAngle(sc.result.states[k].heading - sc.truth[k].heading)), 2e-3);
         EXPECT_NEAR(sc.result.states[k].turnRate, sc.truth[k].turnRate, 0.01);
     }
 }
@@ -106,7 +108,7 @@ TEST(TrackGapBridge, MoreThanALapUnseenAndRunningTheWrongWay) {
     EXPECT_LT(gapError(reverse, 6.0, 18.0), 0.5);
     for (std::size_t k = 0; k < reverse.result.t.size(); ++k)
         if (reverse.result.t[k] > 6.0 && reverse.result.t[k] < 18.0) {
-            EXPECT_LT(std::abs(TrackGeometry::wrapAngle(reverse.result.states[k].heading - reverse.truth[k].heading)), 1e-2);
+            EXPECT_LT(std::abs(math::wrapAngle(reverse.result.states[k].heading - reverse.truth[k].heading)), 1e-2);
         }
 }
 

@@ -10,7 +10,7 @@
 
 namespace athlos::lps {
 
-class PositioningProcessor : public Processor {
+class LpsPositioningProcessor : public Processor {
 public:
     QString id() const override { return QStringLiteral("lps-positioning"); }
     QString name() const override;
@@ -19,7 +19,7 @@ public:
     ParameterSpecs parameters() const override;
     QList<InputSpec> inputs() const override;
     QList<OutputSpec> outputs() const override;
-    Status validate(const RunContext& context) const override;
+    Status prepare(const RunContext& context) const override;
     Expected<std::vector<ProcessorOutput>> run(const RunContext& context) const override;
 
     // Planar unless the beacons' height span is at least 30 % of their horizontal extent.
@@ -27,7 +27,7 @@ public:
 
 private:
     struct Plan;
-    Expected<Plan> prepare(const RunContext& context) const;
+    Expected<Plan> makePlan(const RunContext& context) const;
 };
 
 }  // namespace athlos::lps

@@ -11,7 +11,7 @@
 
 namespace athlos::lps {
 
-class CalibrationProcessor : public Processor {
+class LpsCalibrationProcessor : public Processor {
 public:
     QString id() const override { return QStringLiteral("lps-calibration"); }
     QString name() const override;

@@ -1,6 +1,7 @@
-#include "plugins/lps/PositioningProcessor.h"
+#include "plugins/lps/LpsPositioningProcessor.h"
 
-#include "plugins/lps/ProcessorSupport.h"
+#include "core/processing/Translator.h"
+#include "plugins/lps/LpsInputs.h"
 
 #include <QJsonArray>
 #include <algorithm>
@@ -8,7 +9,11 @@
 
 namespace athlos::lps {
 
-struct PositioningProcessor::Plan {
+namespace {
+constexpr Translator tr{"athlos::lps"};
+}  // namespace
+
+struct LpsPositioningProcessor::Plan {
     TdoaPositioning::Params params;
     BeaconLayout layout;
     TrackGeometry track;
@@ -17,15 +22,15 @@ struct PositioningProcessor::Plan {
     int orientationColumns[4] = {-1, -1, -1, -1};
 };
 
-QString PositioningProcessor::name() const { return tr("LPS positioning (TDoA)"); }
+QString LpsPositioningProcessor::name() const { return tr("LPS positioning (TDoA)"); }
 
-QString PositioningProcessor::description() const {
+QString LpsPositioningProcessor::description() const {
     return tr("Tag positions and clock offsets from TDoA readings and a beacon table, one fix per instant "
               "(2D at tag_height or 3D), with beacon selection against NLOS: all, IRLS (bisquare, 2.5·MAD), "
               "largest-residual rejection or the field of view of the body-worn tag.");
 }
 
-ParameterSpecs PositioningProcessor::parameters() const {
+ParameterSpecs LpsPositioningProcessor::parameters() const {
     const double inf = std::numeric_limits<double>::infinity();
     return {
         ParameterSpec::choice(QStringLiteral("dimension"), {QStringLiteral("auto"), QStringLiteral("2d"), QStringLiteral("3d")},
@@ -70,7 +75,7 @@ ParameterSpecs PositioningProcessor::parameters() const {
     };
 }
 
-QList<InputSpec> PositioningProcessor::inputs() const {
+QList<InputSpec> LpsPositioningProcessor::inputs() const {
     return {InputSpec{QStringLiteral("tdoa"), {QStringLiteral("lps-tdoa")}, false, false,
                       tr("TDoA readings t, beacon, dt (s), several rows per instant.")},
             InputSpec{QStringLiteral("beacons"), {QStringLiteral("beacons")}, true, false,
@@ -79,12 +84,12 @@ QList<InputSpec> PositioningProcessor::inputs() const {
                       tr("Optional orientation (qw, qx, qy, qz) for heading=orientation.")}};
 }
 
-QList<OutputSpec> PositioningProcessor::outputs() const {
+QList<OutputSpec> LpsPositioningProcessor::outputs() const {
     return {OutputSpec{QStringLiteral("lps-position"), false, QString(),
                        tr("t, x, y, z (m), offset (s), rms_residual (m), n_beacons per fix.")}};
 }
 
-bool PositioningProcessor::geometryAllows3d(const BeaconLayout& layout) {
+bool LpsPositioningProcessor::geometryAllows3d(const BeaconLayout& layout) {
     double zMin = INFINITY, zMax = -INFINITY, extent = 0.0;
     for (const auto& a : layout.positions) {
         zMin = std::min(zMin, a.z());
@@ -94,7 +99,7 @@ bool PositioningProcessor::geometryAllows3d(const BeaconLayout& layout) {
     return zMax - zMin >= 0.3 * extent;
 }
 
-Expected<PositioningProcessor::Plan> PositioningProcessor::prepare(const RunContext& context) const {
+Expected<LpsPositioningProcessor::Plan> LpsPositioningProcessor::makePlan(const RunContext& context) const {
     Plan plan;
     auto layout = loadBeacons(context, 1);
     if (!layout) return layout.error();
@@ -144,18 +149,17 @@ Expected<PositioningProcessor::Plan> PositioningProcessor::prepare(const RunCont
             plan.track = std::move(*track);
         }
         if (plan.params.heading == TdoaPositioning::HeadingSource::Orientation) {
-            const Stream* stream = context.inputCount() > 2 ? context.stream(2) : nullptr;
-            if (!stream)
+            if (!context.stream(2))
                 return makeError(QStringLiteral("heading=orientation needs the orientation input (a third --input)"));
             const char* names[] = {"qw", "qx", "qy", "qz"};
             for (int c = 0; c < 4; ++c) {
-                plan.orientationColumns[c] = stream->info().columnIndex(QString::fromLatin1(names[c]));
+                plan.orientationColumns[c] = context.stream(2)->info().columnIndex(QString::fromLatin1(names[c]));
                 if (plan.orientationColumns[c] < 0)
-                    return makeError(QStringLiteral("orientation stream '%1' has no column %2").arg(context.inputPath(2), names[c]));
+                    return context.inputError(2, QStringLiteral("no column %1").arg(QString::fromLatin1(names[c])));
             }
-            auto data = stream->data();
-            if (!data) return data.error();
-            plan.orientation = *data;
+            auto orientation = context.samples(2);
+            if (!orientation) return orientation.error();
+            plan.orientation = orientation->data;
         }
     }
     auto epochs = loadEpochs(context, 0, plan.layout);
@@ -164,13 +168,10 @@ Expected<PositioningProcessor::Plan> PositioningProcessor::prepare(const RunCont
     return plan;
 }
 
-Status PositioningProcessor::validate(const RunContext& context) const {
-    auto plan = prepare(context);
-    return plan ? Status() : Status(plan.error());
-}
+Status LpsPositioningProcessor::prepare(const RunContext& context) const { return statusOf(makePlan(context)); }
 
-Expected<std::vector<ProcessorOutput>> PositioningProcessor::run(const RunContext& context) const {
-    auto plan = prepare(context);
+Expected<std::vector<ProcessorOutput>> LpsPositioningProcessor::run(const RunContext& context) const {
+    auto plan = makePlan(context);
     if (!plan) return plan.error();
     TdoaPositioning::HeadingFunction orientationHeading;
     if (plan->orientation) {

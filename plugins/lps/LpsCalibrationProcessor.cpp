@@ -1,14 +1,17 @@
-#include "plugins/lps/CalibrationProcessor.h"
+#include "plugins/lps/LpsCalibrationProcessor.h"
 
+#include "core/processing/Translator.h"
 #include "plugins/lps/BeaconTable.h"
 #include "plugins/lps/LpsCalibration.h"
-#include "plugins/lps/ProcessorSupport.h"
+#include "plugins/lps/LpsInputs.h"
 
 #include <cmath>
 
 namespace athlos::lps {
 
 namespace {
+constexpr Translator tr{"athlos::lps"};
+
 ParameterSpec optionalNumber(const QString& name, const QString& unit, const QString& help, double min = -1e9,
                              double max = 1e9) {
     ParameterSpec spec = ParameterSpec::number(name, 0.0, min, max, unit, help);
@@ -18,9 +21,9 @@ ParameterSpec optionalNumber(const QString& name, const QString& unit, const QSt
 }
 }  // namespace
 
-QString CalibrationProcessor::name() const { return tr("LPS beacon calibration"); }
+QString LpsCalibrationProcessor::name() const { return tr("LPS beacon calibration"); }
 
-QString CalibrationProcessor::description() const {
+QString LpsCalibrationProcessor::description() const {
     return tr("Automatic calibration of a TDoA LPS from a walk at constant height and rough initial beacon positions: "
               "outlier removal, ~200 well-spread fixes, joint least squares over beacons, tag positions and offsets "
               "(minimising nRMSR), multi-start when residuals stay high. The rotation about the reference node's "
@@ -28,7 +31,7 @@ QString CalibrationProcessor::description() const {
               "(gauge=auto|track, thesis step 6 \"rotate the frame to venue marks\") or from the initial guess.");
 }
 
-ParameterSpecs CalibrationProcessor::parameters() const {
+ParameterSpecs LpsCalibrationProcessor::parameters() const {
     return {
         optionalNumber(QStringLiteral("walk_height"), QStringLiteral("m"),
                        tr("Height of the tag during the walk in the LPS frame; absent = estimated (one unknown for the "
@@ -79,7 +82,7 @@ ParameterSpecs CalibrationProcessor::parameters() const {
     };
 }
 
-QList<InputSpec> CalibrationProcessor::inputs() const {
+QList<InputSpec> LpsCalibrationProcessor::inputs() const {
     return {InputSpec{QStringLiteral("tdoa"), {QStringLiteral("lps-tdoa")}, false, false,
                       tr("TDoA readings of the calibration walk (tag at constant height, whole area).")},
             InputSpec{QStringLiteral("beacons"), {QStringLiteral("beacons")}, true, false,
@@ -88,13 +91,13 @@ QList<InputSpec> CalibrationProcessor::inputs() const {
                       tr("Optional surveyed beacon table: adds nRMSR_ref and η to the report.")}};
 }
 
-QList<OutputSpec> CalibrationProcessor::outputs() const {
+QList<OutputSpec> LpsCalibrationProcessor::outputs() const {
     return {OutputSpec{QStringLiteral("beacons"), true, QString(), tr("Calibrated beacon table id, x, y, z (m).")},
             OutputSpec{QStringLiteral("report"), true, QStringLiteral("report"),
                        tr("Per beacon: rms_residual (m), readings, shift (m); attributes: nRMSR before/after, η, walk height.")}};
 }
 
-Expected<std::vector<ProcessorOutput>> CalibrationProcessor::run(const RunContext& context) const {
+Expected<std::vector<ProcessorOutput>> LpsCalibrationProcessor::run(const RunContext& context) const {
     auto initial = loadBeacons(context, 1);
     if (!initial) return initial.error();
     std::optional<BeaconLayout> reference;

@@ -3,7 +3,7 @@
 // (imu_sample_ic_stride.csv) and scores the initial contacts against the motion-capture strides
 // (stride_borders_sample_ic_stride.csv): detection rate, false detections inside the reference
 // bouts, IC timing error mean ± SD. Then reports what it finds on the stair files (no reference).
-#include "plugins/events/GaitEvaluation.h"
+#include "tools/eval/GaitEvaluation.h"
 
 #include <QCoreApplication>
 #include <QDir>

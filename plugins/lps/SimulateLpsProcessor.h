@@ -9,7 +9,7 @@
 
 namespace athlos::lps {
 
-class SimulateProcessor : public Processor {
+class SimulateLpsProcessor : public Processor {
 public:
     QString id() const override { return QStringLiteral("simulate-lps"); }
     QString name() const override;

@@ -3,7 +3,7 @@
 // saturation; 10 Hz GNSS with 2.5 m noise and a slowly correlated error), fused with GnssImuEkf.
 // Prints the shape of seed 004's Tables 1–2 (distance and speed error per 2 m zone of the 10 m
 // sprints: mean ± SD [5 %, 95 %]) for the fused track and for GNSS alone, and overall RMSEs.
-#include "plugins/inertial/FusionEvaluation.h"
+#include "tools/eval/FusionEvaluation.h"
 
 #include <algorithm>
 #include <cmath>

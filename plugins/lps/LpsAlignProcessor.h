@@ -9,7 +9,7 @@
 
 namespace athlos::lps {
 
-class AlignProcessor : public Processor {
+class LpsAlignProcessor : public Processor {
 public:
     QString id() const override { return QStringLiteral("lps-align"); }
     QString name() const override;
@@ -18,7 +18,7 @@ public:
     ParameterSpecs parameters() const override;
     QList<InputSpec> inputs() const override;
     QList<OutputSpec> outputs() const override;
-    Status validate(const RunContext& context) const override;
+    Status prepare(const RunContext& context) const override;
     Expected<std::vector<ProcessorOutput>> run(const RunContext& context) const override;
 
     // "x,y,z>X,Y,Z; …" → (from, to) pairs; errors name the offending mark.

@@ -1,7 +1,8 @@
-#include "plugins/lps/SimulateProcessor.h"
+#include "plugins/lps/SimulateLpsProcessor.h"
 
+#include "core/processing/OutputStreams.h"
+#include "core/processing/Translator.h"
 #include "plugins/lps/BeaconTable.h"
-#include "plugins/lps/ProcessorSupport.h"
 #include "plugins/lps/TdoaSimulator.h"
 #include "plugins/lps/TdoaStream.h"
 
@@ -9,15 +10,19 @@
 
 namespace athlos::lps {
 
-QString SimulateProcessor::name() const { return tr("Simulate LPS venue and recording"); }
+namespace {
+constexpr Translator tr{"athlos::lps"};
+}  // namespace
 
-QString SimulateProcessor::description() const {
+QString SimulateLpsProcessor::name() const { return tr("Simulate LPS venue and recording"); }
+
+QString SimulateLpsProcessor::description() const {
     return tr("Simulated TDoA venue around a 400 m track and a calibration walk or a run on it: 7 µs offset, 0.1 m noise, "
               "1 % positive outliers of 20 m, optional body-shadowing NLOS; plus surveyed and perturbed beacon tables "
               "and the true trajectory.");
 }
 
-ParameterSpecs SimulateProcessor::parameters() const {
+ParameterSpecs SimulateLpsProcessor::parameters() const {
     const int maxInt = std::numeric_limits<int>::max();
     return {
         ParameterSpec::choice(QStringLiteral("scenario"), {QStringLiteral("walk"), QStringLiteral("run")}, QStringLiteral("walk"),
@@ -43,14 +48,14 @@ ParameterSpecs SimulateProcessor::parameters() const {
     };
 }
 
-QList<OutputSpec> SimulateProcessor::outputs() const {
+QList<OutputSpec> SimulateLpsProcessor::outputs() const {
     return {OutputSpec{QStringLiteral("lps-tdoa"), false, QString(), tr("TDoA readings t, beacon, dt (s).")},
             OutputSpec{QStringLiteral("beacons"), true, QStringLiteral("beacons"), tr("Surveyed beacon table.")},
             OutputSpec{QStringLiteral("beacons"), true, QStringLiteral("guess"), tr("Perturbed initial beacon table.")},
             OutputSpec{QStringLiteral("trajectory"), false, QStringLiteral("truth"), tr("True tag trajectory t, x, y, z (m).")}};
 }
 
-Expected<std::vector<ProcessorOutput>> SimulateProcessor::run(const RunContext& context) const {
+Expected<std::vector<ProcessorOutput>> SimulateLpsProcessor::run(const RunContext& context) const {
     const bool walk = context.text(QStringLiteral("scenario")) == QLatin1String("walk");
     const double speed = context.number(QStringLiteral("speed")) > 0 ? context.number(QStringLiteral("speed")) : (walk ? 1.4 : 6.0);
     const double rate = context.number(QStringLiteral("rate")) > 0 ? context.number(QStringLiteral("rate")) : (walk ? 1.0 : 10.0);
@@ -81,17 +86,17 @@ Expected<std::vector<ProcessorOutput>> SimulateProcessor::run(const RunContext& 
     const auto recording = sim.measure(trajectory, surveyed);
     context.report(0.9, QStringLiteral("writing"));
 
-    std::vector<double> t;
-    std::vector<Vector3> positions;
-    for (const auto& s : recording.truth) {
-        t.push_back(s.t);
-        positions.push_back(s.position);
+    StreamData truth(recording.truth.size(), 3);
+    for (std::size_t k = 0; k < recording.truth.size(); ++k) {
+        truth.t[k] = recording.truth[k].t;
+        for (int c = 0; c < 3; ++c) truth.at(k, c) = recording.truth[k].position(c);
     }
     std::vector<ProcessorOutput> outputs;
     outputs.push_back({QString(), streamFromEpochs(recording.epochs, surveyed)});
     outputs.push_back({QStringLiteral("beacons"), tableFromLayout(surveyed)});
     outputs.push_back({QStringLiteral("guess"), tableFromLayout(guess, QStringLiteral("guess"))});
-    outputs.push_back({QStringLiteral("truth"), trajectoryStream(t, positions, QStringLiteral("trajectory"), QStringLiteral("truth"))});
+    outputs.push_back({QStringLiteral("truth"), outputStream(QStringLiteral("trajectory"), QStringLiteral("lps"),
+                                                             columnsOf({"x", "y", "z"}, {"m", "m", "m"}), std::move(truth))});
     context.report(1.0);
     return outputs;
 }

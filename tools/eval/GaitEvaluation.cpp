@@ -1,4 +1,4 @@
-#include "plugins/events/GaitEvaluation.h"
+#include "tools/eval/GaitEvaluation.h"
 
 #include "core/io/Importer.h"
 #include "plugins/events/GaitEventsProcessor.h"

@@ -1,4 +1,4 @@
-#include "plugins/inertial/FusionEvaluation.h"
+#include "tools/eval/FusionEvaluation.h"
 
 #include "plugins/inertial/GnssImuFusion.h"
 

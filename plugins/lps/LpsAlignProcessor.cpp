@@ -1,20 +1,25 @@
-#include "plugins/lps/AlignProcessor.h"
+#include "plugins/lps/LpsAlignProcessor.h"
 
+#include "core/processing/Translator.h"
 #include "plugins/lps/BeaconTable.h"
-#include "plugins/lps/ProcessorSupport.h"
+#include "plugins/lps/LpsInputs.h"
 
 #include <QJsonArray>
 
 namespace athlos::lps {
 
-QString AlignProcessor::name() const { return tr("LPS frame alignment"); }
+namespace {
+constexpr Translator tr{"athlos::lps"};
+}  // namespace
 
-QString AlignProcessor::description() const {
+QString LpsAlignProcessor::name() const { return tr("LPS frame alignment"); }
+
+QString LpsAlignProcessor::description() const {
     return tr("Rotates and translates a beacon table so that venue marks (e.g. the finish line and a point down the "
               "home straight) land at the given coordinates.");
 }
 
-ParameterSpecs AlignProcessor::parameters() const {
+ParameterSpecs LpsAlignProcessor::parameters() const {
     return {ParameterSpec::text(QStringLiteral("marks"), QString(),
                                 tr("Marks 'x,y,z>X,Y,Z; …': LPS coordinates > desired coordinates (m); "
                                    "or give a marks table as second input.")),
@@ -22,18 +27,18 @@ ParameterSpecs AlignProcessor::parameters() const {
                                   tr("yaw: rotation about the vertical only (≥ 2 marks); full: 3D rotation (≥ 3 marks)."))};
 }
 
-QList<InputSpec> AlignProcessor::inputs() const {
+QList<InputSpec> LpsAlignProcessor::inputs() const {
     return {InputSpec{QStringLiteral("beacons"), {QStringLiteral("beacons")}, true, false, tr("Beacon table to move.")},
             InputSpec{QStringLiteral("marks"), {}, true, true,
                       tr("Optional table x, y, z, target_x, target_y, target_z (m), one row per mark.")}};
 }
 
-QList<OutputSpec> AlignProcessor::outputs() const {
+QList<OutputSpec> LpsAlignProcessor::outputs() const {
     return {OutputSpec{QStringLiteral("beacons"), true, QString(),
                        tr("Moved beacon table; a 'ref' row holds the moved reference node.")}};
 }
 
-Expected<std::pair<std::vector<Vector3>, std::vector<Vector3>>> AlignProcessor::parseMarks(const QString& text) {
+Expected<std::pair<std::vector<Vector3>, std::vector<Vector3>>> LpsAlignProcessor::parseMarks(const QString& text) {
     std::pair<std::vector<Vector3>, std::vector<Vector3>> marks;
     auto point = [](const QString& s, Vector3& p) {
         const QStringList parts = s.split(QLatin1Char(','));
@@ -60,7 +65,7 @@ Expected<std::pair<std::vector<Vector3>, std::vector<Vector3>>> AlignProcessor::
 namespace {
 
 Expected<std::pair<std::vector<Vector3>, std::vector<Vector3>>> collectMarks(const RunContext& context) {
-    auto marks = AlignProcessor::parseMarks(context.text(QStringLiteral("marks")));
+    auto marks = LpsAlignProcessor::parseMarks(context.text(QStringLiteral("marks")));
     if (!marks) return marks;
     if (const Table* table = context.inputCount() > 1 ? context.table(1) : nullptr) {
         const char* names[] = {"x", "y", "z", "target_x", "target_y", "target_z"};
@@ -81,7 +86,7 @@ Expected<std::pair<std::vector<Vector3>, std::vector<Vector3>>> collectMarks(con
 
 }  // namespace
 
-Status AlignProcessor::validate(const RunContext& context) const {
+Status LpsAlignProcessor::prepare(const RunContext& context) const {
     auto marks = collectMarks(context);
     if (!marks) return marks.error();
     const bool full = context.text(QStringLiteral("mode")) == QLatin1String("full");
@@ -91,7 +96,7 @@ Status AlignProcessor::validate(const RunContext& context) const {
     return {};
 }
 
-Expected<std::vector<ProcessorOutput>> AlignProcessor::run(const RunContext& context) const {
+Expected<std::vector<ProcessorOutput>> LpsAlignProcessor::run(const RunContext& context) const {
     auto layout = loadBeacons(context, 0);
     if (!layout) return layout.error();
     auto marks = collectMarks(context);
