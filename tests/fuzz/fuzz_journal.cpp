@@ -8,14 +8,13 @@ using namespace athlos;
 
 namespace {
 
-// The project the journal applies to: one recording with two annotations and two classes. Never
-// saved; only its path matters (the journal is <path>.journal).
+// The project the journal applies to: the base state of the seed journal (make_seeds.cpp), one
+// recording "rec" without annotations and the class "tackle", so the seed's edits all apply.
+// Never saved; only its path matters (the journal is <path>.journal).
 std::unique_ptr<Project> makeProject(const QString& path) {
     auto project = Project::create(path, QStringLiteral("football"));
-    Recording& rec = project->ensureRecording(QStringLiteral("rec"));
-    rec.annotations.push_back(Annotation{QStringLiteral("tackle"), 1.0, 2.5, QStringLiteral("coach"), 1.0, QStringLiteral("manual")});
-    rec.annotations.push_back(Annotation{QStringLiteral("pass"), 4.0, 4.0, QStringLiteral("gait-events"), 0.7, QStringLiteral("gait-events")});
-    project->annotationClasses() << QStringLiteral("tackle") << QStringLiteral("pass");
+    project->ensureRecording(QStringLiteral("rec"));
+    project->annotationClasses() << QStringLiteral("tackle");
     return project;
 }
 
