@@ -6,10 +6,14 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${ATHLOS_ASAN_BUILD_DIR:-build-asan}
 labels='unit|cli|fuzz'
+# cli.position_filter runs the robust Kalman filters over whole simulated races: over 10 min
+# under ASan at -O1, for code without parsing. Left out of the CI budget (docs/FUZZING.md).
+exclude=${ATHLOS_SANITIZE_EXCLUDE-'cli\.position_filter'}
 targets=()
 if [ "${1:-}" = --families ]; then
   shift
   labels='' # every label the build has (no GUI tests in it)
+  exclude=''
   targets=(all)
 fi
 start=$(date +%s)
@@ -17,5 +21,5 @@ bash scripts/build-asan.sh "${targets[@]}"
 built=$(date +%s)
 source scripts/sanitizer-env.sh
 export QT_QPA_PLATFORM=offscreen
-ctest --test-dir "$BUILD_DIR" --output-on-failure -j"$(nproc)" ${labels:+-L "$labels"} "$@"
+ctest --test-dir "$BUILD_DIR" --output-on-failure -j"$(nproc)" ${labels:+-L "$labels"} ${exclude:+-E "$exclude"} "$@"
 echo "sanitize: build $((built - start)) s, tests $(($(date +%s) - built)) s"
