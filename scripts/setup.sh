@@ -19,6 +19,8 @@ if [ ${#missing[@]} -gt 0 ]; then
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
+# scripts/sanitize.sh needs the packages but builds elsewhere.
+[ -n "${ATHLOS_SETUP_PACKAGES_ONLY:-}" ] && exit 0
 
 BUILD_DIR=${ATHLOS_BUILD_DIR:-build}
 # ccache: paths relative to the checkout and no working-directory hash, so a fresh clone (CI) or a
