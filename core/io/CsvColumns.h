@@ -1,0 +1,62 @@
+#pragma once
+// CSV import, part 1 of 3: column mapping and kind inference. The header row is planned into one
+// ColumnPlan per file column (role, stored name and unit, conversion to SI) after ImportOptions'
+// column mapping; the kind is inferred from the (mapped) column names when none is given.
+// Parts 2 and 3: CsvRecords.h (record parsing), TimeOrder.h (time-order repair); CsvImporter.cpp
+// puts them together.
+#include "core/io/CsvReader.h"
+#include "core/io/Importer.h"
+#include "core/model/StreamKinds.h"
+
+#include <QString>
+#include <QStringList>
+#include <string_view>
+#include <vector>
+
+namespace athlos {
+
+// The SI unit a mapped column of no kind rule is stored in ("deg" → "rad"; magnetic fields in uT as
+// everywhere), or empty for an unknown unit.
+QString siUnitOf(const QString& unit);
+// The kind the column names suggest (see CsvImporter.h), or empty.
+QString inferCsvKind(const QStringList& names);
+// Names of the header cells after options' mapping (skipped columns left out, the time column as 't').
+QStringList mappedColumnNames(const QStringList& headerCells, const ImportOptions& options);
+
+namespace csv {
+
+// "file:line:column (column 'name')", the prefix of every cell message.
+QString where(const QString& file, long long line, int column, const QString& name);
+// The shortest text that reads back as v.
+QString shortest(double v);
+// A cell's text in quotes for messages, cut after 40 characters.
+QString quoted(std::string_view text);
+
+enum class Role { Time, Number, Id, Text, Skip };
+
+struct ColumnPlan {
+    QString name;
+    QString source;        // name in the header (before mapping), for messages
+    QString unit;          // unit stored with the column
+    QString sourceUnit;    // unit in the header, if one was given
+    Role role = Role::Number;
+    bool convert = false;  // scale/offset differ from identity (kept apart so -0.0 survives)
+    double scale = 1.0;
+    double offset = 0.0;
+};
+
+struct Header {
+    std::vector<ColumnPlan> columns;
+    long long line = 0;
+    int timeColumn = -1;
+};
+
+// The known kind of that name, or of that default stream name ("lps", "tdoa"); nullptr if unknown.
+const StreamKind* lookupKind(const QString& kind);
+
+// Reads the header row and plans every column. table: a table kind (no time column).
+Expected<Header> planHeader(CsvReader& reader, const QString& file, const ImportOptions& options,
+                            const QString& kindName, const StreamKind* kind, bool table);
+
+}  // namespace csv
+}  // namespace athlos
