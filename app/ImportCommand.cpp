@@ -4,10 +4,12 @@
 #include "TerminalProgress.h"
 
 #include "core/io/Importer.h"
+#include "core/io/TimeFormats.h"
 #include "core/model/Project.h"
 #include "core/model/StreamKinds.h"
 
 #include <QFileInfo>
+#include <QRegularExpression>
 #include <cstdio>
 
 namespace athlos::cli {
@@ -16,7 +18,7 @@ int cmdImport(const QStringList& args) {
     QStringList formats;
     for (const auto& importer : importers()) formats << importer->format();
     CommandParser p(QStringLiteral("import <project> <file> --as <rec>[/<stream>] [--format F] [--kind K] "
-                                   "[--column SRC=CHANNEL[:UNIT]]... [--skip COL]... [--time-column COL[:UNIT]]"),
+                                   "[--column SRC=CHANNEL[:UNIT]]... [--skip COL]... [--time-column COL[:FORMAT]] [--date D] [--start T]"),
                     QStringLiteral("Import a recording into a project. Nothing is written unless the whole import "
                                    "succeeds; errors name the file, line and column."));
     p.addPositional(QStringLiteral("project"), QStringLiteral("The .athlos file (create it with athlos new)."));
@@ -38,8 +40,13 @@ int cmdImport(const QStringList& args) {
                                 "SRC=:UNIT keeps the name."),
                  QStringLiteral("SRC=CHANNEL[:UNIT]")});
     p.addOption({QStringLiteral("skip"), QStringLiteral("CSV: leave column COL out; repeatable."), QStringLiteral("COL")});
-    p.addOption({QStringLiteral("time-column"), QStringLiteral("CSV: the column with the time stamps (default t, in s)."),
-                 QStringLiteral("COL[:UNIT]")});
+    p.addOption({QStringLiteral("time-column"),
+                 QStringLiteral("CSV: the column with the time stamps (default t, in s) and their format: ") + timeFormatNames() + QStringLiteral("."),
+                 QStringLiteral("COL[:FORMAT]")});
+    p.addOption({QStringLiteral("date"), QStringLiteral("The date of clock times (hh:mm:ss) when the file has none."),
+                 QStringLiteral("YYYY-MM-DD")});
+    p.addOption({QStringLiteral("start"), QStringLiteral("UTC date-time of t = 0 for relative times (ISO 8601)."),
+                 QStringLiteral("datetime")});
     p.addOption({QStringLiteral("athlete"), QStringLiteral("Athlete name, stored in the recording's metadata."),
                  QStringLiteral("name")});
     if (auto code = p.parse(args, 2, 2)) return *code;
@@ -74,10 +81,21 @@ int cmdImport(const QStringList& args) {
         options.columns.push_back({column.trimmed(), {}, {}, true});
     if (p.parser().isSet(QStringLiteral("time-column"))) {
         const QString spec = p.parser().value(QStringLiteral("time-column"));
-        const qsizetype colon = spec.lastIndexOf(QLatin1Char(':'));
-        options.timeColumn = (colon < 0 ? spec : spec.left(colon)).trimmed();
-        options.timeUnit = colon < 0 ? QString() : spec.mid(colon + 1).trimmed();
-        if (options.timeColumn.isEmpty()) return fail(QStringLiteral("--time-column '%1': expected COL[:UNIT]").arg(spec), Usage);
+        const auto split = splitTimeColumnSpec(spec);
+        if (!split) return fail(QStringLiteral("--time-column '%1': %2").arg(spec, split.message()), Usage);
+        options.timeColumn = split->first;
+        options.timeUnit = split->second;
+        if (options.timeColumn.isEmpty()) return fail(QStringLiteral("--time-column '%1': expected COL[:FORMAT]").arg(spec), Usage);
+    }
+    if (p.parser().isSet(QStringLiteral("date"))) {
+        options.date = p.parser().value(QStringLiteral("date")).trimmed();
+        if (!QRegularExpression(QStringLiteral("^\\d{4}-\\d{2}-\\d{2}$")).match(options.date).hasMatch())
+            return fail(QStringLiteral("--date '%1': expected YYYY-MM-DD").arg(options.date), Usage);
+    }
+    if (p.parser().isSet(QStringLiteral("start"))) {
+        options.start = p.parser().value(QStringLiteral("start")).trimmed();
+        if (const auto start = parseUtc(options.start); !start)
+            return fail(QStringLiteral("--start: %1").arg(start.message()), Usage);
     }
     if (const QString athlete = p.parser().value(QStringLiteral("athlete")).trimmed(); !athlete.isEmpty())
         options.metadata.insert(QStringLiteral("athlete"), athlete);

@@ -41,9 +41,9 @@ Status checkMapping(const ImportOptions& options, const QStringList& sources, co
             return makeError(QStringLiteral("time column '%1' is also marked to skip").arg(options.timeColumn));
     }
     if (!options.timeUnit.isEmpty()) {
-        const auto c = conversionTo(options.timeUnit, QStringLiteral("s"));
-        if (!c)
-            return makeError(QStringLiteral("time unit: %1").arg(c.message()));
+        const auto format = parseTimeFormat(options.timeUnit);
+        if (!format)
+            return makeError(QStringLiteral("time column '%1': %2").arg(options.timeColumn, format.message()));
     }
     return {};
 }
@@ -118,7 +118,7 @@ Expected<Header> planHeader(CsvReader& reader, const QString& file, const Import
         if (isTime) {
             col.name = QStringLiteral("t");
             if (!options.timeUnit.isEmpty())
-                unit = canonicalUnit(options.timeUnit);
+                unit = options.timeUnit.trimmed();
         } else if (!table && !options.timeColumn.isEmpty() && col.name == QLatin1String("t")) {
             return makeError(QStringLiteral("%1: the name 't' is taken by the time column '%2'").arg(at, options.timeColumn));
         }
@@ -128,12 +128,24 @@ Expected<Header> planHeader(CsvReader& reader, const QString& file, const Import
         names << col.name;
         nameColumn.push_back(i + 1);
 
-        QString target;
         if (isTime) {
             col.role = Role::Time;
             header.timeColumn = i;
-            target = QStringLiteral("s");
-        } else if (!table && kindName == QLatin1String("lps-tdoa") && col.name == QLatin1String("beacon")) {
+            const auto format = parseTimeFormat(unit);
+            if (!format)
+                return makeError(QStringLiteral("%1: %2").arg(at, format.message()));
+            header.timeFormat = *format;
+            col.unit = QStringLiteral("s");
+            if (!format->absolute() && format->scale != 1.0) {
+                col.convert = true;
+                col.scale = format->scale;
+                col.sourceUnit = format->name;
+            }
+            header.columns.push_back(col);
+            continue;
+        }
+        QString target;
+        if (!table && kindName == QLatin1String("lps-tdoa") && col.name == QLatin1String("beacon")) {
             col.role = Role::Id;
         } else if (table && (col.name == QLatin1String("id") || col.name == QLatin1String("name") ||
                              col.name == QLatin1String("label"))) {
@@ -161,6 +173,25 @@ Expected<Header> planHeader(CsvReader& reader, const QString& file, const Import
         header.columns.push_back(col);
     }
 
+    if (!options.date.isEmpty()) {
+        const QByteArray date = options.date.trimmed().toUtf8();
+        if (!parseIsoDate(std::string_view(date.constData(), size_t(date.size())), header.dateDays))
+            return makeError(QStringLiteral("date '%1': expected YYYY-MM-DD").arg(options.date));
+        header.haveDate = true;
+    }
+    if (header.timeFormat.kind == TimeKind::Clock && !header.haveDate) {
+        // Clock times take their date from a date column of the file.
+        for (size_t i = 0; i < header.columns.size(); ++i) {
+            ColumnPlan& col = header.columns[i];
+            if (col.role == Role::Number && col.name.compare(QLatin1String("date"), Qt::CaseInsensitive) == 0 &&
+                col.unit.isEmpty()) {
+                col.role = Role::Date;
+                header.dateColumn = int(i);
+                names.removeAll(col.name);
+                break;
+            }
+        }
+    }
     const QString known = names.join(QStringLiteral(", "));
     if (!table && header.timeColumn < 0)
         return makeError(QStringLiteral("%1:%2: no 't' column (time in seconds); columns: %3").arg(file).arg(header.line).arg(known));

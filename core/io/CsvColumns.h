@@ -6,6 +6,7 @@
 // puts them together.
 #include "core/io/CsvReader.h"
 #include "core/io/Importer.h"
+#include "core/io/TimeFormats.h"
 #include "core/model/StreamKinds.h"
 
 #include <QString>
@@ -32,7 +33,10 @@ QString shortest(double v);
 // A cell's text in quotes for messages, cut after 40 characters.
 QString quoted(std::string_view text);
 
-enum class Role { Time, Number, Id, Text, Skip };
+enum class Role { Time, Number, Id, Text, Skip, Date };  // Date: the date of clock times
+
+// A column stored in the stream (not the time, a skipped column or the date of clock times).
+inline bool isDataRole(Role role) { return role != Role::Time && role != Role::Skip && role != Role::Date; }
 
 struct ColumnPlan {
     QString name;
@@ -49,6 +53,10 @@ struct Header {
     std::vector<ColumnPlan> columns;
     long long line = 0;
     int timeColumn = -1;
+    TimeFormat timeFormat;   // of the time column
+    int dateColumn = -1;     // clock times: the column with their date, if any
+    bool haveDate = false;   // clock times: ImportOptions::date given
+    qint64 dateDays = 0;     // its days since 1970-01-01
 };
 
 // The known kind of that name, or of that default stream name ("lps", "tdoa"); nullptr if unknown.

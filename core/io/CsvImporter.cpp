@@ -25,7 +25,7 @@ Expected<Stream> tdoaStream(const StreamData& rows, const TimeOrigin& origin, co
     int beacon = -1, dt = -1, dtFileColumn = 0, c = 0;
     for (size_t i = 0; i < header.columns.size(); ++i) {
         const auto& col = header.columns[i];
-        if (col.role == Role::Time || col.role == Role::Skip)
+        if (!isDataRole(col.role))
             continue;
         if (col.name == QLatin1String("beacon"))
             beacon = c;
@@ -43,6 +43,39 @@ Expected<Stream> tdoaStream(const StreamData& rows, const TimeOrigin& origin, co
     return tdoaStreamFromSamples(samples, origin.file);
 }
 
+// The absolute start and time format of a parsed stream (TimeFormats.h); t starts at 0 for absolute
+// formats. Warnings for assumptions (no zone, no date) and an implausible sampling rate.
+Expected<QJsonObject> timeAttributesOf(StreamData& data, const Header& header, const ParsedTime& time,
+                                       const ImportOptions& options, const TimeOrigin& origin, QStringList& warnings) {
+    const TimeFormat& format = header.timeFormat;
+    TimeBase base = time.base;
+    const QString what = QStringLiteral("%1 (column '%2')").arg(origin.file, origin.columnName);
+    if (format.absolute()) {
+        startAtZero(data.t, base);
+        if (!options.start.isEmpty())
+            warnings << QStringLiteral("%1: the times are absolute (%2); the start option is ignored").arg(what, format.name);
+    } else if (!options.start.isEmpty()) {
+        const auto start = parseUtc(options.start);
+        if (!start)
+            return makeError(QStringLiteral("start: %1").arg(start.message()));
+        base.known = true;
+        base.t0Ns = *start;
+    }
+    if (time.missingZone)
+        warnings << QStringLiteral("%1: date-times without a zone (Z or +hh:mm) are taken as UTC").arg(what);
+    if (base.timeOfDayOnly)
+        warnings << QStringLiteral("%1: clock times without a date; the start is known as a time of day (%2) only "
+                                   "(give the date: --date YYYY-MM-DD)")
+                        .arg(what, formatTimeOfDay(base.t0Ns));
+    if (const QString w = samplingRateWarning(data.t, format.name, what); !w.isEmpty())
+        warnings << w;
+    QJsonObject attributes;
+    writeTimeAttributes(attributes, base, format.name);
+    if (format.kind == TimeKind::Uptime)
+        attributes.insert(QStringLiteral("time_base"), QStringLiteral("device uptime"));
+    return attributes;
+}
+
 Expected<ImportResult> readStream(CsvReader& reader, const MappedFile& mapped, const QString& file,
                                   const ImportOptions& options, const QString& kindName, const StreamKind* kind,
                                   const Progress& progress) {
@@ -53,20 +86,24 @@ Expected<ImportResult> readStream(CsvReader& reader, const MappedFile& mapped, c
     TimeOrigin origin{file, header->timeColumn + 1,
                       options.timeColumn.isEmpty() ? QStringLiteral("t") : options.timeColumn, {}};
     std::vector<std::string> ids;
-    if (Status s = parseStreamRecords(reader, mapped, file, *header, progress, data, origin.lines, ids); !s)
+    ParsedTime time;
+    if (Status s = parseStreamRecords(reader, mapped, file, *header, progress, data, origin.lines, ids, time); !s)
         return s.error();
 
     ImportResult result;
     const bool tdoa = kindName == QLatin1String("lps-tdoa");
     if (Status s = repairTimeOrder(data, origin, options.timeRepair, tdoa, result.warnings); !s)
         return s.error();
+    auto timeAttributes = timeAttributesOf(data, *header, time, options, origin, result.warnings);
+    if (!timeAttributes)
+        return timeAttributes.error();
 
     QJsonObject sourceUnits;
     Columns columns;
     for (const auto& col : header->columns) {
         if (col.convert)
             sourceUnits.insert(col.name, col.sourceUnit);
-        if (col.role != Role::Time && col.role != Role::Skip)
+        if (isDataRole(col.role))
             columns.push_back({col.name, col.unit});
     }
     if (tdoa) {
@@ -76,6 +113,8 @@ Expected<ImportResult> readStream(CsvReader& reader, const MappedFile& mapped, c
         stream->info().name = kind->defaultName;
         if (!sourceUnits.isEmpty())
             stream->info().attributes.insert(QStringLiteral("source_units"), sourceUnits);
+        for (auto it = timeAttributes->begin(); it != timeAttributes->end(); ++it)
+            stream->info().attributes.insert(it.key(), it.value());
         result.items.push_back({kind->defaultName, std::move(*stream)});
         return result;
     }
@@ -87,6 +126,8 @@ Expected<ImportResult> readStream(CsvReader& reader, const MappedFile& mapped, c
     info.columns = std::move(columns);
     if (!sourceUnits.isEmpty())
         info.attributes.insert(QStringLiteral("source_units"), sourceUnits);
+    for (auto it = timeAttributes->begin(); it != timeAttributes->end(); ++it)
+        info.attributes.insert(it.key(), it.value());
     if (kindName == QLatin1String("gnss") && info.columnIndex(QStringLiteral("lat")) < 0)
         info.frame = QStringLiteral("ENU");
 

@@ -17,7 +17,7 @@ public:
                  const Progress& progress)
         : reader_(reader), mapped_(mapped), file_(file), header_(header), progress_(progress) {}
 
-    Status run(StreamData& data, std::vector<long long>& lines, std::vector<std::string>& ids);
+    Status run(StreamData& data, std::vector<long long>& lines, std::vector<std::string>& ids, ParsedTime& time);
 
 private:
     Error cellError(const ColumnPlan& col, const QString& what) const {
@@ -38,11 +38,18 @@ private:
     const Progress& progress_;
 };
 
-Status StreamParser::run(StreamData& data, std::vector<long long>& lines, std::vector<std::string>& ids) {
+Status StreamParser::run(StreamData& data, std::vector<long long>& lines, std::vector<std::string>& ids,
+                         ParsedTime& time) {
     const int columns = int(header_.columns.size());
-    data.columns = int(std::count_if(header_.columns.begin(), header_.columns.end(), [](const ColumnPlan& col) {
-        return col.role != Role::Time && col.role != Role::Skip;
-    }));
+    data.columns = int(std::count_if(header_.columns.begin(), header_.columns.end(),
+                                     [](const ColumnPlan& col) { return isDataRole(col.role); }));
+    const TimeFormat& format = header_.timeFormat;
+    const bool absolute = format.absolute();
+    const bool clock = format.kind == TimeKind::Clock;
+    constexpr qint64 kHalfDay = kNsPerDay / 2;
+    constexpr qint64 kExcelUnixEpoch = 25569;  // serial day of 1970-01-01
+    qint64 recordNs = 0, recordDays = 0, previousTod = -1, dayOffset = 0, base = 0;
+    bool haveBase = false;
     std::unordered_map<std::string, int> idIndex;
     std::string text;
     const qint64 dataStart = reader_.offset();
@@ -55,6 +62,43 @@ Status StreamParser::run(StreamData& data, std::vector<long long>& lines, std::v
             if (col.role == Role::Skip) {
                 if (!reader_.text(text))
                     return fieldCountError();
+                continue;
+            }
+            if (col.role == Role::Date) {
+                if (!reader_.text(text))
+                    return fieldCountError();
+                if (!parseIsoDate(text, recordDays))
+                    return cellError(col, QStringLiteral("%1 is not a date YYYY-MM-DD").arg(csv::quoted(text)));
+                continue;
+            }
+            if (col.role == Role::Time && absolute) {
+                if (!reader_.text(text))
+                    return fieldCountError();
+                if (text.empty())
+                    return cellError(col, QStringLiteral("empty time"));
+                bool ok = false, zone = true;
+                switch (format.kind) {
+                case TimeKind::Unix:
+                    ok = parseScaledInstant(text, format.scale * 1e9, recordNs);
+                    break;
+                case TimeKind::Excel:
+                    ok = parseScaledInstant(text, double(kNsPerDay), recordNs);
+                    recordNs -= kExcelUnixEpoch * kNsPerDay;
+                    break;
+                case TimeKind::Iso:
+                    ok = parseIsoDateTime(text, recordNs, zone);
+                    time.missingZone = time.missingZone || !zone;
+                    break;
+                default:
+                    ok = parseClockTime(text, recordNs);
+                    break;
+                }
+                if (!ok) {
+                    static const char* const kExpected[] = {"", "", "a number", "an ISO 8601 date-time (2024-05-01T13:45:01.25Z)",
+                                                            "a clock time hh:mm:ss[.fff]", "a number"};
+                    return cellError(col, QStringLiteral("%1 is not %2 (time format '%3')")
+                                              .arg(csv::quoted(text), QLatin1String(kExpected[int(format.kind)]), format.name));
+                }
                 continue;
             }
             if (col.role == Role::Id) {
@@ -92,6 +136,24 @@ Status StreamParser::run(StreamData& data, std::vector<long long>& lines, std::v
         }
         if (!reader_.finishRecord())
             return fieldCountError();
+        if (absolute) {
+            qint64 ns = recordNs;
+            if (clock) {
+                if (header_.dateColumn >= 0) {
+                    ns += recordDays * kNsPerDay;
+                } else {
+                    if (previousTod >= 0 && recordNs < previousTod - kHalfDay)
+                        ++dayOffset;  // past midnight
+                    previousTod = recordNs;
+                    ns += (dayOffset + (header_.haveDate ? header_.dateDays : 0)) * kNsPerDay;
+                }
+            }
+            if (!haveBase) {
+                base = ns;
+                haveBase = true;
+            }
+            data.t.push_back(double(ns - base) * 1e-9);
+        }
         lines.push_back(reader_.line());
 
         if (++records == 256) {  // reserve once the line length is known instead of growing by doubling
@@ -111,6 +173,11 @@ Status StreamParser::run(StreamData& data, std::vector<long long>& lines, std::v
     }
     if (records == 0)
         return makeError(QStringLiteral("%1: no data rows after the header (line %2)").arg(file_).arg(header_.line));
+    if (absolute) {
+        time.base.t0Ns = base;
+        time.base.timeOfDayOnly = clock && header_.dateColumn < 0 && !header_.haveDate;
+        time.base.known = !time.base.timeOfDayOnly;
+    }
     return {};
 }
 
@@ -118,8 +185,8 @@ Status StreamParser::run(StreamData& data, std::vector<long long>& lines, std::v
 
 Status parseStreamRecords(CsvReader& reader, const MappedFile& mapped, const QString& file, const Header& header,
                           const Progress& progress, StreamData& data, std::vector<long long>& lines,
-                          std::vector<std::string>& ids) {
-    return StreamParser(reader, mapped, file, header, progress).run(data, lines, ids);
+                          std::vector<std::string>& ids, ParsedTime& time) {
+    return StreamParser(reader, mapped, file, header, progress).run(data, lines, ids, time);
 }
 
 Status parseTableRecords(CsvReader& reader, const QString& file, const Header& header, Table& table) {
@@ -138,7 +205,7 @@ Status parseTableRecords(CsvReader& reader, const QString& file, const Header& h
         for (int c = 0; c < columns; ++c) {
             const ColumnPlan& col = header.columns[c];
             const auto at = [&] { return where(file, reader.line(), c + 1, col.source); };  // for messages only
-            if (col.role == Role::Skip) {
+            if (col.role == Role::Skip || col.role == Role::Date) {
                 if (!reader.text(text))
                     return makeError(QStringLiteral("%1:%2:%3: line has %4 fields, the header has %5")
                                          .arg(file).arg(reader.line()).arg(c + 1).arg(reader.fieldsOnLine()).arg(columns));

@@ -13,12 +13,18 @@
 
 namespace athlos::csv {
 
+// What the time column said about absolute time.
+struct ParsedTime {
+    TimeBase base;             // t = 0 is the first record's time for absolute formats
+    bool missingZone = false;  // ISO date-times without Z or an offset (taken as UTC)
+};
+
 // Parses the data records of a time series into data (t and the non-skipped columns in order); the
 // line of each record goes to lines; Id columns store an index into ids (text as in the file).
 // mapped is the file the reader reads (for progress and reservation).
 Status parseStreamRecords(CsvReader& reader, const MappedFile& mapped, const QString& file, const Header& header,
                           const Progress& progress, StreamData& data, std::vector<long long>& lines,
-                          std::vector<std::string>& ids);
+                          std::vector<std::string>& ids, ParsedTime& time);
 
 // Parses the data records of a table into table's columns (one per non-skipped file column).
 Status parseTableRecords(CsvReader& reader, const QString& file, const Header& header, Table& table);

@@ -35,7 +35,10 @@ struct ImportOptions {
     // csv: mapping of source columns; columns not listed keep their header name and unit.
     std::vector<ColumnMapping> columns;
     QString timeColumn;                      // csv: source column holding time ("" = the column 't')
-    QString timeUnit;                        // csv: unit of that column ("" = from its header, else s)
+    QString timeUnit;                        // csv: unit or time format of that column ("" = from its header,
+                                             // else s); see core/io/TimeFormats.h (ms, unix_ns, iso, hh:mm:ss, excel…)
+    QString date;                            // YYYY-MM-DD: the date of clock times (hh:mm:ss) without one
+    QString start;                           // ISO 8601: the UTC instant of t = 0 for relative times
     QJsonObject metadata;                    // merged into the target recording's metadata (athlete, ...)
 };
 

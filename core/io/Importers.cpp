@@ -56,6 +56,10 @@ Provenance importProvenance(const Importer& importer, const QString& file, const
         p.parameters.insert(QStringLiteral("time_column"), options.timeColumn);
     if (!options.timeUnit.isEmpty())
         p.parameters.insert(QStringLiteral("time_unit"), options.timeUnit);
+    if (!options.date.isEmpty())
+        p.parameters.insert(QStringLiteral("date"), options.date);
+    if (!options.start.isEmpty())
+        p.parameters.insert(QStringLiteral("start"), options.start);
     p.sourceFile = QFileInfo(file).absoluteFilePath();
     p.appVersion = appVersion();
     p.time = QDateTime::currentDateTimeUtc();

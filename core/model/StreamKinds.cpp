@@ -31,7 +31,7 @@ const std::vector<StreamKind>& streamKinds() {
          "column per beacon (core/io/TdoaLayout.h)."},
         {"gnss", "gnss", "WGS84", false,
          {{"lat", "deg"}, {"lon", "deg"}, {"alt", m}, {"vn", mps}, {"ve", mps}, {"vd", mps},
-          {"x", m}, {"y", m}, {"z", m}, {"vx", mps}, {"vy", mps}, {"vz", mps}, {"hdop", one}, {"sats", one}},
+          {"x", m}, {"y", m}, {"z", m}, {"vx", mps}, {"vy", mps}, {"vz", mps}, {"hdop", one}, {"sats", one}, {"fix", one}},
          {},
          "Satellite fixes: lat, lon (deg), alt (m)[, vn, ve, vd (m/s)] or local x, y, z (m) in ENU."},
         {"beacons", "beacons", "lps", true,

@@ -20,6 +20,7 @@ const QHash<QString, UnitDef>& unitTable() {
     static const QHash<QString, UnitDef> table{
         {"s", {"time", 1.0}},          {"ms", {"time", 1e-3}},       {"us", {"time", 1e-6}},
         {"ns", {"time", 1e-9}},        {"min", {"time", 60.0}},      {"h", {"time", 3600.0}},
+        {"d", {"time", 86400.0}},
         {"m", {"length", 1.0}},        {"mm", {"length", 1e-3}},     {"cm", {"length", 1e-2}},
         {"km", {"length", 1e3}},       {"m/s", {"speed", 1.0}},      {"km/h", {"speed", 1.0 / 3.6}},
         {"mm/s", {"speed", 1e-3}},     {"cm/s", {"speed", 1e-2}},    {"m/s^2", {"acceleration", 1.0}},
@@ -43,6 +44,7 @@ const QHash<QString, QString>& aliases() {
     static const QHash<QString, QString> table{
         {"sec", "s"},         {"secs", "s"},         {"second", "s"},       {"seconds", "s"},
         {"msec", "ms"},       {"millisecond", "ms"}, {"milliseconds", "ms"}, {"usec", "us"},
+        {"day", "d"},          {"days", "d"},         {"hour", "h"},         {"hours", "h"},
         {"meter", "m"},       {"meters", "m"},       {"metre", "m"},        {"metres", "m"},
         {"m/s2", "m/s^2"},    {"m/s/s", "m/s^2"},    {"ms^-2", "m/s^2"},    {"m*s^-2", "m/s^2"},
         {"m s^-2", "m/s^2"},  {"m/sec^2", "m/s^2"},  {"deg/sec", "deg/s"},  {"dps", "deg/s"},
