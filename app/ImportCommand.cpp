@@ -18,7 +18,7 @@ int cmdImport(const QStringList& args) {
     QStringList formats;
     for (const auto& importer : importers()) formats << importer->format();
     CommandParser p(QStringLiteral("import <project> <file> --as <rec>[/<stream>] [--format F] [--kind K] "
-                                   "[--column SRC=CHANNEL[:UNIT]]... [--skip COL]... [--time-column COL[:FORMAT]] [--date D] [--start T]"),
+                                   "[--column SRC=CHANNEL[:UNIT]]... [--skip COL]... [--drop-unmapped] [--time-column COL[:FORMAT]] [--date D] [--start T]"),
                     QStringLiteral("Import a recording into a project. Nothing is written unless the whole import "
                                    "succeeds; errors name the file, line and column."));
     p.addPositional(QStringLiteral("project"), QStringLiteral("The .athlos file (create it with athlos new)."));
@@ -40,6 +40,8 @@ int cmdImport(const QStringList& args) {
                                 "SRC=:UNIT keeps the name."),
                  QStringLiteral("SRC=CHANNEL[:UNIT]")});
     p.addOption({QStringLiteral("skip"), QStringLiteral("CSV: leave column COL out; repeatable."), QStringLiteral("COL")});
+    p.addOption({QStringLiteral("drop-unmapped"),
+                 QStringLiteral("CSV: leave out every column that is neither mapped with --column nor known to the kind.")});
     p.addOption({QStringLiteral("time-column"),
                  QStringLiteral("CSV: the column with the time stamps (default t, in s) and their format: ") + timeFormatNames() + QStringLiteral("."),
                  QStringLiteral("COL[:FORMAT]")});
@@ -60,6 +62,7 @@ int cmdImport(const QStringList& args) {
     options.timeRepair = p.parser().value(QStringLiteral("time-repair"));
     options.frame = p.parser().value(QStringLiteral("frame"));
     options.overwrite = p.parser().isSet(QStringLiteral("overwrite"));
+    options.dropUnmapped = p.parser().isSet(QStringLiteral("drop-unmapped"));
     if (options.target.isEmpty()) options.target = QFileInfo(file).completeBaseName();
     if (!QStringList{QStringLiteral("reject"), QStringLiteral("sort"), QStringLiteral("drop")}.contains(options.timeRepair))
         return fail(QStringLiteral("--time-repair '%1': use reject, sort or drop").arg(options.timeRepair), Usage);

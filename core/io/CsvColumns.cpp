@@ -2,6 +2,9 @@
 
 #include "core/util/Units.h"
 
+#include <QHash>
+#include <QRegularExpression>
+
 #include <algorithm>
 #include <charconv>
 
@@ -31,7 +34,8 @@ Status checkMapping(const ImportOptions& options, const QStringList& sources, co
             return makeError(QStringLiteral("column mapping: column '%1' is mapped twice").arg(m.source));
         seen << m.source;
         if (!m.skip && !m.unit.trimmed().isEmpty() && siUnitOf(canonicalUnit(m.unit)).isEmpty())
-            return makeError(QStringLiteral("column mapping for '%1': unknown unit '%2'").arg(m.source, m.unit));
+            return makeError(QStringLiteral("column mapping for '%1': unknown unit '%2' (accepted: %3)")
+                                 .arg(m.source, m.unit, knownUnitNames()));
     }
     if (!options.timeColumn.isEmpty()) {
         if (!sources.contains(options.timeColumn))
@@ -66,6 +70,35 @@ QString quoted(std::string_view text) {
     return QLatin1Char('\'') + s + (text.size() > kMax ? QStringLiteral("...'") : QStringLiteral("'"));
 }
 
+bool isUnnamedColumn(const QString& name) {
+    static const QRegularExpression pandas(QStringLiteral("^Unnamed: \\d+$"));
+    return name.trimmed().isEmpty() || pandas.match(name.trimmed()).hasMatch();
+}
+
+QString knownChannelName(const QString& name) {
+    const QString lower = name.trimmed().toLower();
+    static const QHash<QString, QString> aliases{
+        {"latitude", "lat"}, {"longitude", "lon"}, {"lng", "lon"},        {"long", "lon"},
+        {"altitude", "alt"}, {"satellites", "sats"}, {"numsats", "sats"}, {"num_sats", "sats"},
+    };
+    if (const auto it = aliases.constFind(lower); it != aliases.cend())
+        return *it;
+    if (lower == QLatin1String("t") || lower == name)
+        return {};  // the time column is named explicitly; already canonical
+    for (const StreamKind& kind : streamKinds())
+        if (!kind.unitFor(lower).isEmpty() || kind.requiredColumns.contains(lower))
+            return lower;
+    return {};
+}
+
+bool isKindColumn(const StreamKind* kind, const QString& name, bool table) {
+    if (!kind)
+        return false;
+    if (table && (name == QLatin1String("id") || name == QLatin1String("name") || name == QLatin1String("label")))
+        return true;
+    return !kind->unitFor(name).isEmpty() || kind->requiredColumns.contains(name);
+}
+
 const StreamKind* lookupKind(const QString& kind) {
     if (const StreamKind* k = findStreamKind(kind))
         return k;
@@ -98,11 +131,9 @@ Expected<Header> planHeader(CsvReader& reader, const QString& file, const Import
         splitNameAndUnit(cells[i], col.name, unit);
         col.source = col.name;
         const QString at = where(file, header.line, i + 1, col.name);
-        if (col.name.isEmpty())
-            return makeError(QStringLiteral("%1:%2:%3: column %3 has no name").arg(file).arg(header.line).arg(i + 1));
         const ColumnMapping* mapping = findMapping(options, col.name);
-        if (mapping && mapping->skip) {
-            col.role = Role::Skip;
+        if ((mapping && mapping->skip) || (!mapping && isUnnamedColumn(col.name))) {
+            col.role = Role::Skip;  // skipped, or an index column without a name (pandas)
             header.columns.push_back(col);
             continue;
         }
@@ -115,6 +146,14 @@ Expected<Header> planHeader(CsvReader& reader, const QString& file, const Import
                                                                     : col.name == options.timeColumn);
         if (mapping && !mapping->channel.trimmed().isEmpty())
             col.name = mapping->channel.trimmed();
+        else if (const QString known = knownChannelName(col.name); !known.isEmpty())
+            col.name = known;  // "Lat", "LATITUDE", "ACC_X"
+        if (!isTime && options.dropUnmapped && !mapping && !isKindColumn(kind, col.name, table) &&
+            col.name.compare(QLatin1String("date"), Qt::CaseInsensitive) != 0) {  // the date of clock times: below
+            col.role = Role::Skip;
+            header.columns.push_back(col);
+            continue;
+        }
         if (isTime) {
             col.name = QStringLiteral("t");
             if (!options.timeUnit.isEmpty())
@@ -192,6 +231,14 @@ Expected<Header> planHeader(CsvReader& reader, const QString& file, const Import
             }
         }
     }
+    if (options.dropUnmapped) {
+        for (ColumnPlan& col : header.columns)
+            if (col.role == Role::Number && col.name.compare(QLatin1String("date"), Qt::CaseInsensitive) == 0 &&
+                !findMapping(options, col.source) && !isKindColumn(kind, col.name, table)) {
+                col.role = Role::Skip;
+                names.removeAll(col.name);
+            }
+    }
     const QString known = names.join(QStringLiteral(", "));
     if (!table && header.timeColumn < 0)
         return makeError(QStringLiteral("%1:%2: no 't' column (time in seconds); columns: %3").arg(file).arg(header.line).arg(known));
@@ -216,7 +263,7 @@ Expected<Header> planHeader(CsvReader& reader, const QString& file, const Import
 }  // namespace csv
 
 QString siUnitOf(const QString& unit) {
-    static const char* const kSi[] = {"s", "m", "m/s", "m/s^2", "rad/s", "rad", "uT", "1", "degC", "Hz", "dB", "dBm"};
+    static const char* const kSi[] = {"s", "m", "m/s", "m/s^2", "rad/s", "rad", "uT", "1", "degC", "Hz", "dB", "dBm", "Pa", "lx"};
     if (unit.trimmed().isEmpty())
         return {};
     for (const char* si : kSi)
@@ -231,12 +278,16 @@ QStringList mappedColumnNames(const QStringList& headerCells, const ImportOption
         QString name, unit;
         splitNameAndUnit(cell, name, unit);
         const ColumnMapping* m = csv::findMapping(options, name);
-        if (m && m->skip)
+        if ((m && m->skip) || (!m && csv::isUnnamedColumn(name)))
             continue;
         if (!options.timeColumn.isEmpty() && name == options.timeColumn)
             names << QStringLiteral("t");
+        else if (m && !m->channel.trimmed().isEmpty())
+            names << m->channel.trimmed();
+        else if (const QString known = csv::knownChannelName(name); !known.isEmpty())
+            names << known;
         else
-            names << (m && !m->channel.trimmed().isEmpty() ? m->channel.trimmed() : name);
+            names << name;
     }
     return names;
 }

@@ -59,6 +59,14 @@ struct Header {
     qint64 dateDays = 0;     // its days since 1970-01-01
 };
 
+// An index column without a name: an empty header cell, or pandas' "Unnamed: 0".
+bool isUnnamedColumn(const QString& name);
+// The interchange name of a known channel written in another case or spelling ("Lat", "LATITUDE",
+// "Longitude", "ACC_X" → lat, lat, lon, acc_x), or empty. The time column is never guessed.
+QString knownChannelName(const QString& name);
+// A column the kind knows (a unit rule or a required column; id, name, label of tables).
+bool isKindColumn(const StreamKind* kind, const QString& name, bool table);
+
 // The known kind of that name, or of that default stream name ("lps", "tdoa"); nullptr if unknown.
 const StreamKind* lookupKind(const QString& kind);
 

@@ -37,6 +37,7 @@ struct ImportOptions {
     QString timeColumn;                      // csv: source column holding time ("" = the column 't')
     QString timeUnit;                        // csv: unit or time format of that column ("" = from its header,
                                              // else s); see core/io/TimeFormats.h (ms, unix_ns, iso, hh:mm:ss, excel…)
+    bool dropUnmapped = false;               // csv: leave out columns neither mapped nor known to the kind
     QString date;                            // YYYY-MM-DD: the date of clock times (hh:mm:ss) without one
     QString start;                           // ISO 8601: the UTC instant of t = 0 for relative times
     QJsonObject metadata;                    // merged into the target recording's metadata (athlete, ...)

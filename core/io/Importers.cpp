@@ -56,6 +56,8 @@ Provenance importProvenance(const Importer& importer, const QString& file, const
         p.parameters.insert(QStringLiteral("time_column"), options.timeColumn);
     if (!options.timeUnit.isEmpty())
         p.parameters.insert(QStringLiteral("time_unit"), options.timeUnit);
+    if (options.dropUnmapped)
+        p.parameters.insert(QStringLiteral("drop_unmapped"), true);
     if (!options.date.isEmpty())
         p.parameters.insert(QStringLiteral("date"), options.date);
     if (!options.start.isEmpty())
@@ -124,7 +126,7 @@ Expected<ImportResult> importFile(const QString& file, const ImportOptions& opti
     if (!chosen)
         return chosen.error();
     const Importer* importer = *chosen;
-    if (!options.columns.empty() || !options.timeColumn.isEmpty() || !options.timeUnit.isEmpty())
+    if (!options.columns.empty() || !options.timeColumn.isEmpty() || !options.timeUnit.isEmpty() || options.dropUnmapped)
         if (importer->format() != QLatin1String("csv"))
             return makeError(QStringLiteral("%1: a column mapping applies to CSV files only (format '%2')")
                                  .arg(file, importer->format()));

@@ -34,6 +34,10 @@ const QHash<QString, UnitDef>& unitTable() {
         {"%", {"ratio", 0.01}},        {"degC", {"temperature", 1.0}},
         {"K", {"temperature", 1.0, -273.15}},                        {"Hz", {"frequency", 1.0}},
         {"kHz", {"frequency", 1e3}},   {"dB", {"level", 1.0}},       {"dBm", {"power level", 1.0}},
+        {"bpm", {"frequency", 1.0 / 60.0}},                          {"mph", {"speed", 0.44704}},
+        {"ft", {"length", 0.3048}},    {"mi", {"length", 1609.344}}, {"ft/s", {"speed", 0.3048}},
+        {"Pa", {"pressure", 1.0}},     {"hPa", {"pressure", 100.0}}, {"kPa", {"pressure", 1e3}},
+        {"mbar", {"pressure", 100.0}}, {"bar", {"pressure", 1e5}},   {"lx", {"illuminance", 1.0}},
     };
     return table;
 }
@@ -52,12 +56,27 @@ const QHash<QString, QString>& aliases() {
         {"degree", "deg"},    {"degrees", "deg"},    {"radian", "rad"},     {"radians", "rad"},
         {"gauss", "G"},       {"Gauss", "G"},        {"tesla", "T"},        {"microtesla", "uT"},
         {"-", "1"},           {"C", "degC"},         {"celsius", "degC"},   {"kmh", "km/h"},
-        {"kph", "km/h"},      {"m/sec", "m/s"},      {"Hertz", "Hz"},
+        {"kph", "km/h"},      {"m/sec", "m/s"},      {"Hertz", "Hz"},       {"lux", "lx"},
+        {"BPM", "bpm"},       {"beats/min", "bpm"},  {"1/min", "bpm"},      {"percent", "%"},
+        {"MPH", "mph"},       {"km/hr", "km/h"},     {"kmph", "km/h"},      {"hpa", "hPa"},
+        {"pa", "Pa"},         {"Lux", "lx"},         {"µs", "us"},     {"mins", "min"},
+        {"minute", "min"},    {"minutes", "min"},    {"nsec", "ns"},
     };
     return table;
 }
 
 }  // namespace
+
+QString knownUnitNames(const QString& sameQuantityAs) {
+    const auto& table = unitTable();
+    const auto ref = table.constFind(canonicalUnit(sameQuantityAs));
+    QStringList names;
+    for (auto it = table.cbegin(); it != table.cend(); ++it)
+        if (ref == table.cend() || qstrcmp(it->quantity, ref->quantity) == 0)
+            names << it.key();
+    names.sort(Qt::CaseInsensitive);
+    return names.join(QStringLiteral(", "));
+}
 
 void splitNameAndUnit(const QString& header, QString& name, QString& unit) {
     const QString cell = header.trimmed();
@@ -100,7 +119,7 @@ Expected<UnitConversion> conversionTo(const QString& unit, const QString& target
     const auto& table = unitTable();
     const auto f = table.constFind(from);
     if (f == table.cend())
-        return makeError(QStringLiteral("unknown unit '%1' (expected a unit convertible to '%2')").arg(unit, to));
+        return makeError(QStringLiteral("unknown unit '%1' (accepted for %2: %3)").arg(unit, to, knownUnitNames(to)));
     const auto t = table.constFind(to);
     if (t == table.cend())
         return makeError(QStringLiteral("unknown target unit '%1'").arg(to));
