@@ -4,10 +4,12 @@
 #include "TerminalProgress.h"
 
 #include "core/io/Importer.h"
+#include "core/io/MultiImport.h"
 #include "core/io/TimeFormats.h"
 #include "core/model/Project.h"
 #include "core/model/StreamKinds.h"
 
+#include <QDir>
 #include <QFileInfo>
 #include <QRegularExpression>
 #include <cstdio>
@@ -17,12 +19,14 @@ namespace athlos::cli {
 int cmdImport(const QStringList& args) {
     QStringList formats;
     for (const auto& importer : importers()) formats << importer->format();
-    CommandParser p(QStringLiteral("import <project> <file> --as <rec>[/<stream>] [--format F] [--kind K] "
+    CommandParser p(QStringLiteral("import <project> <file>... | <folder> --as <rec>[/<stream>] [--format F] [--kind K] "
                                    "[--column SRC=CHANNEL[:UNIT]]... [--skip COL]... [--drop-unmapped] [--time-column COL[:FORMAT]] [--date D] [--start T]"),
                     QStringLiteral("Import a recording into a project. Nothing is written unless the whole import "
                                    "succeeds; errors name the file, line and column."));
     p.addPositional(QStringLiteral("project"), QStringLiteral("The .athlos file (create it with athlos new)."));
-    p.addPositional(QStringLiteral("file"), QStringLiteral("The recording to import."));
+    p.addPositional(QStringLiteral("file"),
+                    QStringLiteral("The recording to import. Several files of one kind become one stream (the ranges of "
+                                   "several anchors, pieces of one recording); a folder gives one stream per file."));
     p.addOption({QStringLiteral("as"), QStringLiteral("Recording name, or <rec>/<stream> to name the stream too."), QStringLiteral("rec")});
     p.addOption({QStringLiteral("format"), QStringLiteral("auto (default) or one of: ") + formats.join(QStringLiteral(", ")),
                  QStringLiteral("F"), QStringLiteral("auto")});
@@ -49,12 +53,19 @@ int cmdImport(const QStringList& args) {
                  QStringLiteral("YYYY-MM-DD")});
     p.addOption({QStringLiteral("start"), QStringLiteral("UTC date-time of t = 0 for relative times (ISO 8601)."),
                  QStringLiteral("datetime")});
+    p.addOption({QStringLiteral("roster"),
+                 QStringLiteral("Folder import: a CSV file,athlete,number,team,position,mass_kg naming each file's athlete."),
+                 QStringLiteral("file")});
     p.addOption({QStringLiteral("athlete"), QStringLiteral("Athlete name, stored in the recording's metadata."),
                  QStringLiteral("name")});
-    if (auto code = p.parse(args, 2, 2)) return *code;
+    if (auto code = p.parse(args, 2, 100000)) return *code;
 
     const QString projectPath = p.positional()[0];
-    const QString file = p.positional()[1];
+    const QStringList files = p.positional().mid(1);
+    const QString file = files.front();
+    const bool folder = files.size() == 1 && QFileInfo(file).isDir();
+    if (p.parser().isSet(QStringLiteral("roster")) && !folder)
+        return fail(QStringLiteral("--roster applies to a folder import (one file per athlete)"), Usage);
     ImportOptions options;
     options.format = p.parser().value(QStringLiteral("format"));
     options.kind = p.parser().value(QStringLiteral("kind"));
@@ -63,7 +74,7 @@ int cmdImport(const QStringList& args) {
     options.frame = p.parser().value(QStringLiteral("frame"));
     options.overwrite = p.parser().isSet(QStringLiteral("overwrite"));
     options.dropUnmapped = p.parser().isSet(QStringLiteral("drop-unmapped"));
-    if (options.target.isEmpty()) options.target = QFileInfo(file).completeBaseName();
+    if (options.target.isEmpty()) options.target = folder ? QDir(file).dirName() : QFileInfo(file).completeBaseName();
     if (!QStringList{QStringLiteral("reject"), QStringLiteral("sort"), QStringLiteral("drop")}.contains(options.timeRepair))
         return fail(QStringLiteral("--time-repair '%1': use reject, sort or drop").arg(options.timeRepair), Usage);
 
@@ -109,7 +120,8 @@ int cmdImport(const QStringList& args) {
     if (!project) return fail(project.message());
 
     TerminalProgress bar(QStringLiteral("import"));
-    auto result = importFile(file, options, bar.progress().sub(0.0, 0.7));
+    auto result = folder ? importFolder(file, options, p.parser().value(QStringLiteral("roster")), bar.progress().sub(0.0, 0.7))
+                         : importFiles(files, options, bar.progress().sub(0.0, 0.7));
     if (!result) return fail(result.message(), result.message() == u"cancelled" ? Cancelled : Failed);
     if (p.parser().isSet(QStringLiteral("beacons"))) {
         ImportOptions beaconOptions = options;

@@ -1,5 +1,6 @@
 #include "core/io/CsvColumns.h"
 
+#include "core/io/TdoaLayout.h"
 #include "core/util/Units.h"
 
 #include <QHash>
@@ -184,7 +185,7 @@ Expected<Header> planHeader(CsvReader& reader, const QString& file, const Import
             continue;
         }
         QString target;
-        if (!table && kindName == QLatin1String("lps-tdoa") && col.name == QLatin1String("beacon")) {
+        if (!table && longLayoutOf(kindName) && col.name == QLatin1String("beacon")) {
             col.role = Role::Id;
         } else if (table && (col.name == QLatin1String("id") || col.name == QLatin1String("name") ||
                              col.name == QLatin1String("label"))) {
@@ -252,9 +253,9 @@ Expected<Header> planHeader(CsvReader& reader, const QString& file, const Import
             return makeError(QStringLiteral("%1:%2: kind 'gnss' needs columns lat, lon (WGS84) or x, y (local ENU); columns: %3")
                                  .arg(file).arg(header.line).arg(known));
     }
-    if (kindName == QLatin1String("lps-tdoa") && names.size() != 3)
-        return makeError(QStringLiteral("%1:%2: kind 'lps-tdoa' has the columns t, beacon, dt (long format); columns: %3")
-                             .arg(file).arg(header.line).arg(known));
+    if (const LongLayout* layout = longLayoutOf(kindName); layout && !table && names.size() != 3)
+        return makeError(QStringLiteral("%1:%2: kind '%3' has the columns t, beacon, %4 (long format); columns: %5")
+                             .arg(file).arg(header.line).arg(kindName, layout->value, known));
     if (names.size() < (table ? 1 : 2))
         return makeError(QStringLiteral("%1:%2: no data columns; columns: %3").arg(file).arg(header.line).arg(known));
     return header;
@@ -299,6 +300,8 @@ QString inferCsvKind(const QStringList& names) {
     };
     if (has("beacon") && has("dt"))
         return QStringLiteral("lps-tdoa");
+    if (has("beacon") && has("range"))
+        return QStringLiteral("lps-range");
     if (has("id") && has("x") && has("y") && !has("t"))
         return QStringLiteral("beacons");
     if (hasPrefix("acc_") || hasPrefix("gyr_") || hasPrefix("mag_"))

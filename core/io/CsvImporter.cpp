@@ -19,9 +19,9 @@ using namespace csv;
 
 constexpr double kGyrPlausibleMax = 35.0;  // rad/s; human motion stays well below (35 rad/s ≈ 2000 deg/s)
 
-// Long TDoA rows (t, beacon index, dt) → the wide stream of TdoaLayout.h.
-Expected<Stream> tdoaStream(const StreamData& rows, const TimeOrigin& origin, const Header& header,
-                            const std::vector<std::string>& ids) {
+// Long rows (t, beacon index, dt or range) → the wide stream of TdoaLayout.h.
+Expected<Stream> longStream(const StreamData& rows, const TimeOrigin& origin, const Header& header,
+                            const std::vector<std::string>& ids, const LongLayout& layout) {
     int beacon = -1, dt = -1, dtFileColumn = 0, c = 0;
     for (size_t i = 0; i < header.columns.size(); ++i) {
         const auto& col = header.columns[i];
@@ -29,18 +29,18 @@ Expected<Stream> tdoaStream(const StreamData& rows, const TimeOrigin& origin, co
             continue;
         if (col.name == QLatin1String("beacon"))
             beacon = c;
-        else if (col.name == QLatin1String("dt"))
+        else if (col.name == layout.value)
             dt = c, dtFileColumn = int(i) + 1;
         ++c;
     }
     std::vector<TdoaSample> samples(rows.rows());
     for (size_t r = 0; r < rows.rows(); ++r) {
         if (std::isnan(rows.at(r, dt)))
-            return makeError(QStringLiteral("%1: empty dt").arg(where(origin.file, origin.lines[r], dtFileColumn, QStringLiteral("dt"))));
+            return makeError(QStringLiteral("%1: empty %2").arg(where(origin.file, origin.lines[r], dtFileColumn, layout.value), layout.value));
         const std::string& id = ids[size_t(rows.at(r, beacon))];
         samples[r] = {rows.t[r], QString::fromUtf8(id.data(), qsizetype(id.size())), rows.at(r, dt), origin.lines[r]};
     }
-    return tdoaStreamFromSamples(samples, origin.file);
+    return longStreamFromSamples(samples, origin.file, layout);
 }
 
 // The absolute start and time format of a parsed stream (TimeFormats.h); t starts at 0 for absolute
@@ -91,8 +91,8 @@ Expected<ImportResult> readStream(CsvReader& reader, const MappedFile& mapped, c
         return s.error();
 
     ImportResult result;
-    const bool tdoa = kindName == QLatin1String("lps-tdoa");
-    if (Status s = repairTimeOrder(data, origin, options.timeRepair, tdoa, result.warnings); !s)
+    const LongLayout* layout = longLayoutOf(kindName);
+    if (Status s = repairTimeOrder(data, origin, options.timeRepair, layout != nullptr, result.warnings); !s)
         return s.error();
     auto timeAttributes = timeAttributesOf(data, *header, time, options, origin, result.warnings);
     if (!timeAttributes)
@@ -106,8 +106,8 @@ Expected<ImportResult> readStream(CsvReader& reader, const MappedFile& mapped, c
         if (isDataRole(col.role))
             columns.push_back({col.name, col.unit});
     }
-    if (tdoa) {
-        auto stream = tdoaStream(data, origin, *header, ids);
+    if (layout) {
+        auto stream = longStream(data, origin, *header, ids, *layout);
         if (!stream)
             return stream.error();
         stream->info().name = kind->defaultName;

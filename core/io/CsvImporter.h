@@ -37,6 +37,7 @@ public:
     bool canRead(const QString& file, const QByteArray& head) const override;
     Expected<ImportResult> read(const QString& file, const ImportOptions& options,
                                 const Progress& progress) const override;
+    bool mapsColumns() const override { return true; }
 };
 
 }  // namespace athlos

@@ -64,6 +64,8 @@ public:
     virtual bool canRead(const QString& file, const QByteArray& head) const = 0;
     virtual Expected<ImportResult> read(const QString& file, const ImportOptions& options,
                                         const Progress& progress) const = 0;
+    // Takes ImportOptions::columns, timeColumn/timeUnit and dropUnmapped (CSV-based formats).
+    virtual bool mapsColumns() const { return false; }
 };
 
 // All importers (csv, broad, gaitmap, and those later issues add).

@@ -10,6 +10,7 @@
 #include "core/io/GaitmapImporter.h"
 #include "core/io/Importer.h"
 #include "core/io/NmeaImporter.h"
+#include "core/io/RosImporter.h"
 #include "core/util/Version.h"
 
 #include <QDateTime>
@@ -77,6 +78,7 @@ const std::vector<std::unique_ptr<Importer>>& importers() {
         v.push_back(std::make_unique<BroadImporter>());
         v.push_back(std::make_unique<GaitmapImporter>());
         v.push_back(std::make_unique<NmeaImporter>());
+        v.push_back(std::make_unique<RosImporter>());
         v.push_back(std::make_unique<CsvImporter>());
         return v;
     }();
@@ -127,7 +129,7 @@ Expected<ImportResult> importFile(const QString& file, const ImportOptions& opti
         return chosen.error();
     const Importer* importer = *chosen;
     if (!options.columns.empty() || !options.timeColumn.isEmpty() || !options.timeUnit.isEmpty() || options.dropUnmapped)
-        if (importer->format() != QLatin1String("csv"))
+        if (!importer->mapsColumns())
             return makeError(QStringLiteral("%1: a column mapping applies to CSV files only (format '%2')")
                                  .arg(file, importer->format()));
 
