@@ -53,6 +53,12 @@ int cmdImport(const QStringList& args) {
                  QStringLiteral("YYYY-MM-DD")});
     p.addOption({QStringLiteral("start"), QStringLiteral("UTC date-time of t = 0 for relative times (ISO 8601)."),
                  QStringLiteral("datetime")});
+    p.addOption({QStringLiteral("labels"),
+                 QStringLiteral("CSV: a per-sample label column (numbers or text) that becomes annotations: runs of equal "
+                                "labels; an empty cell is no annotation."),
+                 QStringLiteral("COL")});
+    p.addOption({QStringLiteral("label-names"), QStringLiteral("Names of number labels: 0=rest,1=run,..."),
+                 QStringLiteral("V=NAME,...")});
     p.addOption({QStringLiteral("roster"),
                  QStringLiteral("Folder import: a CSV file,athlete,number,team,position,mass_kg naming each file's athlete."),
                  QStringLiteral("file")});
@@ -111,6 +117,16 @@ int cmdImport(const QStringList& args) {
         if (const auto start = parseUtc(options.start); !start)
             return fail(QStringLiteral("--start: %1").arg(start.message()), Usage);
     }
+    options.labelColumn = p.parser().value(QStringLiteral("labels")).trimmed();
+    if (p.parser().isSet(QStringLiteral("label-names"))) {
+        if (options.labelColumn.isEmpty()) return fail(QStringLiteral("--label-names needs --labels COL"), Usage);
+        for (const QString& pair : p.parser().value(QStringLiteral("label-names")).split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+            const qsizetype eq = pair.indexOf(QLatin1Char('='));
+            if (eq <= 0 || pair.mid(eq + 1).trimmed().isEmpty())
+                return fail(QStringLiteral("--label-names: '%1' is not VALUE=NAME").arg(pair), Usage);
+            options.labelNames[pair.left(eq).trimmed()] = pair.mid(eq + 1).trimmed();
+        }
+    }
     if (const QString athlete = p.parser().value(QStringLiteral("athlete")).trimmed(); !athlete.isEmpty())
         options.metadata.insert(QStringLiteral("athlete"), athlete);
 
@@ -139,6 +155,8 @@ int cmdImport(const QStringList& args) {
     for (const auto& warning : result->warnings) std::fprintf(stderr, "athlos: warning: %s\n", qUtf8Printable(warning));
     QStringList written;
     for (const auto& item : result->items) written << item.path;
+    for (const auto& [rec, list] : result->annotations)
+        if (!list.empty()) written << QStringLiteral("%1 annotations onto %2").arg(list.size()).arg(rec);
     if (Status s = applyImport(**project, std::move(result).value(), options.overwrite); !s) return fail(s.message());
     if (Status s = (*project)->save(bar.progress().sub(0.7, 1.0)); !s)
         return fail(s.message(), s.message() == u"cancelled" ? Cancelled : Failed);

@@ -45,6 +45,13 @@ Status checkMapping(const ImportOptions& options, const QStringList& sources, co
         if (const ColumnMapping* m = findMapping(options, options.timeColumn); m && m->skip)
             return makeError(QStringLiteral("time column '%1' is also marked to skip").arg(options.timeColumn));
     }
+    if (!options.labelColumn.isEmpty()) {
+        if (!sources.contains(options.labelColumn))
+            return makeError(QStringLiteral("%1:%2: label column '%3' is not in the file; columns: %4")
+                                 .arg(file).arg(line).arg(options.labelColumn, known));
+        if (const ColumnMapping* m = findMapping(options, options.labelColumn); m)
+            return makeError(QStringLiteral("label column '%1' is also mapped or skipped").arg(options.labelColumn));
+    }
     if (!options.timeUnit.isEmpty()) {
         const auto format = parseTimeFormat(options.timeUnit);
         if (!format)
@@ -145,6 +152,14 @@ Expected<Header> planHeader(CsvReader& reader, const QString& file, const Import
         }
         const bool isTime = !table && (options.timeColumn.isEmpty() ? col.name == QLatin1String("t")
                                                                     : col.name == options.timeColumn);
+        if (!table && !options.labelColumn.isEmpty() && col.source == options.labelColumn) {
+            if (isTime)
+                return makeError(QStringLiteral("%1: the label column is the time column").arg(at));
+            col.role = Role::Label;
+            header.labelColumn = i;
+            header.columns.push_back(col);
+            continue;
+        }
         if (mapping && !mapping->channel.trimmed().isEmpty())
             col.name = mapping->channel.trimmed();
         else if (const QString known = knownChannelName(col.name); !known.isEmpty())

@@ -33,10 +33,12 @@ QString shortest(double v);
 // A cell's text in quotes for messages, cut after 40 characters.
 QString quoted(std::string_view text);
 
-enum class Role { Time, Number, Id, Text, Skip, Date };  // Date: the date of clock times
+enum class Role { Time, Number, Id, Text, Skip, Date, Label };  // Date: the date of clock times; Label: --labels
 
 // A column stored in the stream (not the time, a skipped column or the date of clock times).
-inline bool isDataRole(Role role) { return role != Role::Time && role != Role::Skip && role != Role::Date; }
+inline bool isDataRole(Role role) {
+    return role != Role::Time && role != Role::Skip && role != Role::Date && role != Role::Label;
+}
 
 struct ColumnPlan {
     QString name;
@@ -57,6 +59,7 @@ struct Header {
     int dateColumn = -1;     // clock times: the column with their date, if any
     bool haveDate = false;   // clock times: ImportOptions::date given
     qint64 dateDays = 0;     // its days since 1970-01-01
+    int labelColumn = -1;    // the column of per-sample labels (ImportOptions::labelColumn), if any
 };
 
 // An index column without a name: an empty header cell, or pandas' "Unnamed: 0".

@@ -2,6 +2,7 @@
 // time order repaired (TimeOrder.h); this file builds the stream or table of the kind.
 #include "core/io/CsvImporter.h"
 
+#include "core/io/AnnotationIo.h"
 #include "core/io/CsvColumns.h"
 #include "core/io/CsvReader.h"
 #include "core/io/CsvRecords.h"
@@ -11,6 +12,9 @@
 
 #include <QFileInfo>
 #include <cmath>
+#include <limits>
+#include <optional>
+#include <unordered_map>
 
 namespace athlos {
 namespace {
@@ -41,6 +45,68 @@ Expected<Stream> longStream(const StreamData& rows, const TimeOrigin& origin, co
         samples[r] = {rows.t[r], QString::fromUtf8(id.data(), qsizetype(id.size())), rows.at(r, dt), origin.lines[r]};
     }
     return longStreamFromSamples(samples, origin.file, layout);
+}
+
+StreamData withColumn(const StreamData& data, const std::vector<double>& column) {
+    StreamData out(data.rows(), data.columns + 1);
+    out.t = data.t;
+    for (size_t r = 0; r < data.rows(); ++r) {
+        std::copy_n(data.values.begin() + ptrdiff_t(r * size_t(data.columns)), data.columns,
+                    out.values.begin() + ptrdiff_t(r * size_t(out.columns)));
+        out.at(r, data.columns) = column[r];
+    }
+    return out;
+}
+
+StreamData withoutLastColumn(const StreamData& data) {
+    StreamData out(data.rows(), data.columns - 1);
+    out.t = data.t;
+    for (size_t r = 0; r < data.rows(); ++r)
+        std::copy_n(data.values.begin() + ptrdiff_t(r * size_t(data.columns)), out.columns,
+                    out.values.begin() + ptrdiff_t(r * size_t(out.columns)));
+    return out;
+}
+
+// The distinct labels, named by ImportOptions::labelNames (numbers match numerically: "1.0" is "1"),
+// and each record's index into them (NaN: no label).
+Expected<std::pair<QStringList, std::vector<double>>> nameLabels(const ParsedLabels& labels, const ImportOptions& options,
+                                                                 const TimeOrigin& origin, const QString& column,
+                                                                 int fileColumn) {
+    QStringList names;
+    std::vector<double> index(labels.size(), std::numeric_limits<double>::quiet_NaN());
+    std::unordered_map<std::string, int> seen;
+    auto lookup = [&](const QString& text) -> std::optional<QString> {
+        if (options.labelNames.empty())
+            return text;
+        if (const auto it = options.labelNames.find(text); it != options.labelNames.end())
+            return it->second;
+        bool ok = false;
+        const double v = text.toDouble(&ok);
+        if (ok)
+            for (const auto& [key, name] : options.labelNames)
+                if (bool keyOk = false; key.toDouble(&keyOk) == v && keyOk)
+                    return name;
+        return std::nullopt;
+    };
+    for (size_t r = 0; r < labels.size(); ++r) {
+        if (labels[r].empty())
+            continue;
+        const auto [it, added] = seen.try_emplace(labels[r], int(names.size()));
+        if (added) {
+            const QString text = QString::fromUtf8(labels[r].data(), qsizetype(labels[r].size()));
+            const auto name = lookup(text);
+            if (!name) {
+                QStringList keys;
+                for (const auto& [key, value] : options.labelNames) keys << key + QLatin1Char('=') + value;
+                return makeError(QStringLiteral("%1: label '%2' has no name in the label names (%3)")
+                                     .arg(where(origin.file, origin.lines[r], fileColumn, column), text,
+                                          keys.join(QStringLiteral(", "))));
+            }
+            names << *name;
+        }
+        index[r] = it->second;
+    }
+    return std::pair{names, index};
 }
 
 // The absolute start and time format of a parsed stream (TimeFormats.h); t starts at 0 for absolute
@@ -87,8 +153,22 @@ Expected<ImportResult> readStream(CsvReader& reader, const MappedFile& mapped, c
                       options.timeColumn.isEmpty() ? QStringLiteral("t") : options.timeColumn, {}};
     std::vector<std::string> ids;
     ParsedTime time;
-    if (Status s = parseStreamRecords(reader, mapped, file, *header, progress, data, origin.lines, ids, time); !s)
+    ParsedLabels labels;
+    const bool labelled = header->labelColumn >= 0;
+    if (Status s = parseStreamRecords(reader, mapped, file, *header, progress, data, origin.lines, ids, time,
+                                      labelled ? &labels : nullptr);
+        !s)
         return s.error();
+    // The labels ride along as a last column through the time repair.
+    QStringList labelNames;
+    if (labelled) {
+        auto names = nameLabels(labels, options, origin, header->columns[size_t(header->labelColumn)].source,
+                                header->labelColumn + 1);
+        if (!names)
+            return names.error();
+        labelNames = std::move(names->first);
+        data = withColumn(data, names->second);
+    }
 
     ImportResult result;
     const LongLayout* layout = longLayoutOf(kindName);
@@ -97,6 +177,18 @@ Expected<ImportResult> readStream(CsvReader& reader, const MappedFile& mapped, c
     auto timeAttributes = timeAttributesOf(data, *header, time, options, origin, result.warnings);
     if (!timeAttributes)
         return timeAttributes.error();
+    if (labelled) {
+        QStringList perRow;
+        perRow.reserve(qsizetype(data.rows()));
+        for (size_t r = 0; r < data.rows(); ++r) {
+            const double index = data.at(r, data.columns - 1);
+            perRow << (std::isnan(index) ? QString() : labelNames[qsizetype(index)]);
+        }
+        data = withoutLastColumn(data);
+        result.annotations[QString()] = labelRuns(data.t, perRow, QStringLiteral("import"), QFileInfo(file).fileName());
+        if (result.annotations[QString()].empty())
+            result.warnings << QStringLiteral("%1 (column '%2'): no labels").arg(file, options.labelColumn);
+    }
 
     QJsonObject sourceUnits;
     Columns columns;

@@ -17,7 +17,8 @@ public:
                  const Progress& progress)
         : reader_(reader), mapped_(mapped), file_(file), header_(header), progress_(progress) {}
 
-    Status run(StreamData& data, std::vector<long long>& lines, std::vector<std::string>& ids, ParsedTime& time);
+    Status run(StreamData& data, std::vector<long long>& lines, std::vector<std::string>& ids, ParsedTime& time,
+               ParsedLabels* labels);
 
 private:
     Error cellError(const ColumnPlan& col, const QString& what) const {
@@ -39,7 +40,7 @@ private:
 };
 
 Status StreamParser::run(StreamData& data, std::vector<long long>& lines, std::vector<std::string>& ids,
-                         ParsedTime& time) {
+                         ParsedTime& time, ParsedLabels* labels) {
     const int columns = int(header_.columns.size());
     data.columns = int(std::count_if(header_.columns.begin(), header_.columns.end(),
                                      [](const ColumnPlan& col) { return isDataRole(col.role); }));
@@ -62,6 +63,13 @@ Status StreamParser::run(StreamData& data, std::vector<long long>& lines, std::v
             if (col.role == Role::Skip) {
                 if (!reader_.text(text))
                     return fieldCountError();
+                continue;
+            }
+            if (col.role == Role::Label) {
+                if (!reader_.text(text))
+                    return fieldCountError();
+                if (labels)
+                    labels->push_back(text);
                 continue;
             }
             if (col.role == Role::Date) {
@@ -185,8 +193,8 @@ Status StreamParser::run(StreamData& data, std::vector<long long>& lines, std::v
 
 Status parseStreamRecords(CsvReader& reader, const MappedFile& mapped, const QString& file, const Header& header,
                           const Progress& progress, StreamData& data, std::vector<long long>& lines,
-                          std::vector<std::string>& ids, ParsedTime& time) {
-    return StreamParser(reader, mapped, file, header, progress).run(data, lines, ids, time);
+                          std::vector<std::string>& ids, ParsedTime& time, ParsedLabels* labels) {
+    return StreamParser(reader, mapped, file, header, progress).run(data, lines, ids, time, labels);
 }
 
 Status parseTableRecords(CsvReader& reader, const QString& file, const Header& header, Table& table) {

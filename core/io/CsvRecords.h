@@ -14,6 +14,9 @@
 namespace athlos::csv {
 
 // What the time column said about absolute time.
+// The labels of the label column (Role::Label), one per record ("" = none), in record order.
+using ParsedLabels = std::vector<std::string>;
+
 struct ParsedTime {
     TimeBase base;             // t = 0 is the first record's time for absolute formats
     bool missingZone = false;  // ISO date-times without Z or an offset (taken as UTC)
@@ -24,7 +27,7 @@ struct ParsedTime {
 // mapped is the file the reader reads (for progress and reservation).
 Status parseStreamRecords(CsvReader& reader, const MappedFile& mapped, const QString& file, const Header& header,
                           const Progress& progress, StreamData& data, std::vector<long long>& lines,
-                          std::vector<std::string>& ids, ParsedTime& time);
+                          std::vector<std::string>& ids, ParsedTime& time, ParsedLabels* labels = nullptr);
 
 // Parses the data records of a table into table's columns (one per non-skipped file column).
 Status parseTableRecords(CsvReader& reader, const QString& file, const Header& header, Table& table);

@@ -1,6 +1,7 @@
 #pragma once
 // File importers. An import reads a file into new streams/tables in memory; applying it to the
 // project is a separate step, so a failed import never changes the project.
+#include "core/model/Annotation.h"
 #include "core/model/Project.h"
 #include "core/util/Expected.h"
 #include "core/util/Progress.h"
@@ -37,7 +38,9 @@ struct ImportOptions {
     QString timeColumn;                      // csv: source column holding time ("" = the column 't')
     QString timeUnit;                        // csv: unit or time format of that column ("" = from its header,
                                              // else s); see core/io/TimeFormats.h (ms, unix_ns, iso, hh:mm:ss, excel…)
-    bool dropUnmapped = false;               // csv: leave out columns neither mapped nor known to the kind
+    bool dropUnmapped = false;
+    QString labelColumn;                     // csv: per-sample labels → annotations (runs of equal labels)
+    std::map<QString, QString> labelNames;   // csv: label value → name ("0" → "rest"); numbers match numerically               // csv: leave out columns neither mapped nor known to the kind
     QString date;                            // YYYY-MM-DD: the date of clock times (hh:mm:ss) without one
     QString start;                           // ISO 8601: the UTC instant of t = 0 for relative times
     QJsonObject metadata;                    // merged into the target recording's metadata (athlete, ...)
@@ -52,6 +55,9 @@ struct ImportResult {
     std::vector<ImportedItem> items;
     QStringList warnings;                    // e.g. "repaired 3 non-increasing time stamps"
     std::map<QString, QJsonObject> recordingMetadata;  // recording → keys merged into its metadata
+    // recording → annotations to add (importers use "" for the target recording). Applying replaces
+    // the recording's annotations of the same source and annotator when overwriting.
+    std::map<QString, Annotations> annotations;
 };
 
 class Importer {

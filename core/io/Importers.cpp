@@ -5,6 +5,7 @@
 //   "rec"         → rec/<default name>
 //   "rec/name"    → rec/name for a single item, rec/name-<default name> for each of several
 //   "" (none)     → the recording is named after the file ("run1.csv" → run1/<default name>).
+#include "core/io/AnnotationIo.h"
 #include "core/io/BroadImporter.h"
 #include "core/io/CsvImporter.h"
 #include "core/io/GaitmapImporter.h"
@@ -18,6 +19,7 @@
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QSet>
+#include <algorithm>
 
 namespace athlos {
 namespace {
@@ -76,6 +78,7 @@ const std::vector<std::unique_ptr<Importer>>& importers() {
     static const auto list = [] {
         std::vector<std::unique_ptr<Importer>> v;
         v.push_back(std::make_unique<BroadImporter>());
+        v.push_back(std::make_unique<AnnotationImporter>());
         v.push_back(std::make_unique<GaitmapImporter>());
         v.push_back(std::make_unique<NmeaImporter>());
         v.push_back(std::make_unique<RosImporter>());
@@ -139,6 +142,12 @@ Expected<ImportResult> importFile(const QString& file, const ImportOptions& opti
     const Provenance provenance = importProvenance(*importer, file, options);
     if (!options.metadata.isEmpty())
         result->recordingMetadata[target->recording] = options.metadata;
+    if (auto it = result->annotations.find(QString()); it != result->annotations.end()) {
+        Annotations own = std::move(it->second);
+        result->annotations.erase(it);
+        auto& list = result->annotations[target->recording];
+        list.insert(list.end(), own.begin(), own.end());
+    }
     const bool several = result->items.size() > 1;
     for (ImportedItem& item : result->items) {
         const QString defaultName = item.path;
@@ -181,6 +190,30 @@ Status applyImport(Project& project, ImportResult result, bool overwrite) {
             project.putStream(item.path, std::move(*stream));
         else
             project.putTable(item.path, std::move(std::get<Table>(item.item)));
+    }
+    for (const auto& [name, annotations] : result.annotations) {
+        if (annotations.empty())
+            continue;
+        if (!ItemPath::parse(name + QStringLiteral("/x")).isValid())
+            return makeError(QStringLiteral("'%1' is not a valid recording name").arg(name));
+        const Recording* rec = project.recording(name);
+        if (!rec || overwrite)
+            continue;
+        for (const Annotation& a : rec->annotations)
+            for (const Annotation& b : annotations)
+                if (a.source == b.source && a.annotator == b.annotator)
+                    return makeError(QStringLiteral("'%1' already has annotations from %2 (overwrite to replace them)")
+                                         .arg(name, b.annotator));
+    }
+    for (auto& [name, annotations] : result.annotations) {
+        if (annotations.empty())
+            continue;
+        Annotations& existing = project.ensureRecording(name).annotations;
+        std::erase_if(existing, [&](const Annotation& a) {
+            return std::any_of(annotations.begin(), annotations.end(),
+                               [&](const Annotation& b) { return a.source == b.source && a.annotator == b.annotator; });
+        });
+        existing.insert(existing.end(), annotations.begin(), annotations.end());
     }
     for (const auto& [name, metadata] : result.recordingMetadata) {
         QJsonObject& merged = project.ensureRecording(name).metadata;
