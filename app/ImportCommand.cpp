@@ -59,6 +59,10 @@ int cmdImport(const QStringList& args) {
                  QStringLiteral("COL")});
     p.addOption({QStringLiteral("label-names"), QStringLiteral("Names of number labels: 0=rest,1=run,..."),
                  QStringLiteral("V=NAME,...")});
+    p.addOption({QStringLiteral("origin"),
+                 QStringLiteral("The project's geodetic origin for local ENU x, y, z of GNSS streams (default: the first fix "
+                                "of the first GNSS import)."),
+                 QStringLiteral("LAT,LON[,H]")});
     p.addOption({QStringLiteral("roster"),
                  QStringLiteral("Folder import: a CSV file,athlete,number,team,position,mass_kg naming each file's athlete."),
                  QStringLiteral("file")});
@@ -116,6 +120,11 @@ int cmdImport(const QStringList& args) {
         options.start = p.parser().value(QStringLiteral("start")).trimmed();
         if (const auto start = parseUtc(options.start); !start)
             return fail(QStringLiteral("--start: %1").arg(start.message()), Usage);
+    }
+    if (p.parser().isSet(QStringLiteral("origin"))) {
+        const auto origin = parseGeodeticOrigin(p.parser().value(QStringLiteral("origin")));
+        if (!origin) return fail(QStringLiteral("--%1").arg(origin.message()), Usage);
+        options.origin = *origin;
     }
     options.labelColumn = p.parser().value(QStringLiteral("labels")).trimmed();
     if (p.parser().isSet(QStringLiteral("label-names"))) {

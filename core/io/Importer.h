@@ -1,6 +1,7 @@
 #pragma once
 // File importers. An import reads a file into new streams/tables in memory; applying it to the
 // project is a separate step, so a failed import never changes the project.
+#include "core/geometry/Geodesy.h"
 #include "core/model/Annotation.h"
 #include "core/model/Project.h"
 #include "core/util/Expected.h"
@@ -41,6 +42,7 @@ struct ImportOptions {
     bool dropUnmapped = false;
     QString labelColumn;                     // csv: per-sample labels → annotations (runs of equal labels)
     std::map<QString, QString> labelNames;   // csv: label value → name ("0" → "rest"); numbers match numerically               // csv: leave out columns neither mapped nor known to the kind
+    std::optional<GeodeticOrigin> origin;    // the project's geodetic origin, if it has none yet (Geodesy.h)
     QString date;                            // YYYY-MM-DD: the date of clock times (hh:mm:ss) without one
     QString start;                           // ISO 8601: the UTC instant of t = 0 for relative times
     QJsonObject metadata;                    // merged into the target recording's metadata (athlete, ...)
@@ -58,6 +60,7 @@ struct ImportResult {
     // recording → annotations to add (importers use "" for the target recording). Applying replaces
     // the recording's annotations of the same source and annotator when overwriting.
     std::map<QString, Annotations> annotations;
+    std::optional<GeodeticOrigin> origin;    // ImportOptions::origin, applied with the items
 };
 
 class Importer {
@@ -85,6 +88,8 @@ Expected<const Importer*> chooseImporter(const QString& file, const QString& for
 // options.target and the kind. Errors name the file, line and column.
 Expected<ImportResult> importFile(const QString& file, const ImportOptions& options, const Progress& progress = {});
 // Puts the imported items into the project; refuses existing names unless options.overwrite.
+// GNSS streams with lat/lon get x, y[, z] (m) in the project's ENU frame (core/geometry/Geodesy.h);
+// the project's origin is set from result.origin or the first fix if it has none.
 // All-or-nothing: checks every name before inserting any. recordingMetadata is merged into the
 // recordings' metadata (created if needed).
 Status applyImport(Project& project, ImportResult result, bool overwrite);

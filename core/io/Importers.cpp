@@ -61,6 +61,8 @@ Provenance importProvenance(const Importer& importer, const QString& file, const
         p.parameters.insert(QStringLiteral("time_unit"), options.timeUnit);
     if (options.dropUnmapped)
         p.parameters.insert(QStringLiteral("drop_unmapped"), true);
+    if (options.origin)
+        p.parameters.insert(QStringLiteral("origin"), options.origin->toJson());
     if (!options.date.isEmpty())
         p.parameters.insert(QStringLiteral("date"), options.date);
     if (!options.start.isEmpty())
@@ -142,6 +144,7 @@ Expected<ImportResult> importFile(const QString& file, const ImportOptions& opti
     const Provenance provenance = importProvenance(*importer, file, options);
     if (!options.metadata.isEmpty())
         result->recordingMetadata[target->recording] = options.metadata;
+    result->origin = options.origin;
     if (auto it = result->annotations.find(QString()); it != result->annotations.end()) {
         Annotations own = std::move(it->second);
         result->annotations.erase(it);
@@ -183,13 +186,29 @@ Status applyImport(Project& project, ImportResult result, bool overwrite) {
         if (!overwrite && (project.stream(item.path) || project.table(item.path)))
             return makeError(QStringLiteral("'%1' already exists in the project (overwrite to replace it)").arg(item.path));
     }
+    // The project's geodetic origin, and every GNSS stream in its ENU frame (before anything changes).
+    std::optional<GeodeticOrigin> origin = projectOrigin(project.meta());
+    if (origin && result.origin && !(*origin == *result.origin))
+        return makeError(QStringLiteral("the project's geodetic origin is %1, %2, %3 m; it cannot change (all GNSS "
+                                        "streams share it)")
+                             .arg(origin->lat, 0, 'g', 12).arg(origin->lon, 0, 'g', 12).arg(origin->height));
+    bool newOrigin = false;
+    if (!origin && result.origin) {
+        origin = result.origin;
+        newOrigin = true;
+    }
     for (ImportedItem& item : result.items) {
-        if (project.stream(item.path) || project.table(item.path))
-            project.removeItem(item.path);  // a table may replace a stream and vice versa
-        if (auto* stream = std::get_if<Stream>(&item.item))
-            project.putStream(item.path, std::move(*stream));
-        else
-            project.putTable(item.path, std::move(std::get<Table>(item.item)));
+        auto* stream = std::get_if<Stream>(&item.item);
+        if (!stream || stream->kind() != QLatin1String("gnss"))
+            continue;
+        if (!origin) {
+            origin = firstFix(*stream);
+            newOrigin = origin.has_value();
+        }
+        if (!origin)
+            continue;
+        if (auto added = addLocalEnu(*stream, *origin); !added)
+            return makeError(QStringLiteral("%1: %2").arg(item.path, added.message()));
     }
     for (const auto& [name, annotations] : result.annotations) {
         if (annotations.empty())
@@ -205,6 +224,14 @@ Status applyImport(Project& project, ImportResult result, bool overwrite) {
                     return makeError(QStringLiteral("'%1' already has annotations from %2 (overwrite to replace them)")
                                          .arg(name, b.annotator));
     }
+    for (ImportedItem& item : result.items) {
+        if (project.stream(item.path) || project.table(item.path))
+            project.removeItem(item.path);  // a table may replace a stream and vice versa
+        if (auto* stream = std::get_if<Stream>(&item.item))
+            project.putStream(item.path, std::move(*stream));
+        else
+            project.putTable(item.path, std::move(std::get<Table>(item.item)));
+    }
     for (auto& [name, annotations] : result.annotations) {
         if (annotations.empty())
             continue;
@@ -214,6 +241,10 @@ Status applyImport(Project& project, ImportResult result, bool overwrite) {
                                [&](const Annotation& b) { return a.source == b.source && a.annotator == b.annotator; });
         });
         existing.insert(existing.end(), annotations.begin(), annotations.end());
+    }
+    if (newOrigin) {
+        setProjectOrigin(project.meta(), *origin);
+        project.setModified();
     }
     for (const auto& [name, metadata] : result.recordingMetadata) {
         QJsonObject& merged = project.ensureRecording(name).metadata;

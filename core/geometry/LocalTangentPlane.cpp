@@ -1,9 +1,9 @@
-#include "plugins/inertial/LocalTangentPlane.h"
+#include "core/geometry/LocalTangentPlane.h"
 
 #include <cmath>
 #include <numbers>
 
-namespace athlos::inertial {
+namespace athlos {
 
 namespace {
 constexpr double kA = 6378137.0;                  // WGS84 semi-major axis (m)
@@ -46,4 +46,4 @@ Eigen::Vector3d LocalTangentPlane::toGeodetic(const Eigen::Vector3d& enu) const 
     return {lat / kRad, lon / kRad, h};
 }
 
-}  // namespace athlos::inertial
+}  // namespace athlos
