@@ -11,7 +11,10 @@
 #include "core/io/GaitmapImporter.h"
 #include "core/io/Importer.h"
 #include "core/io/NmeaImporter.h"
+#include "core/io/GpxImporter.h"
+#include "core/io/MetricaImporter.h"
 #include "core/io/RosImporter.h"
+#include "core/io/VendorCsvImporter.h"
 #include "core/util/Version.h"
 
 #include <QDateTime>
@@ -84,6 +87,10 @@ const std::vector<std::unique_ptr<Importer>>& importers() {
         v.push_back(std::make_unique<GaitmapImporter>());
         v.push_back(std::make_unique<NmeaImporter>());
         v.push_back(std::make_unique<RosImporter>());
+        v.push_back(std::make_unique<MetricaImporter>());
+        for (const VendorProfile& profile : VendorCsvImporter::profiles())
+            v.push_back(std::make_unique<VendorCsvImporter>(profile));
+        v.push_back(std::make_unique<GpxImporter>());
         v.push_back(std::make_unique<CsvImporter>());
         return v;
     }();
