@@ -4,10 +4,14 @@
 #include "TerminalProgress.h"
 
 #include "core/io/Importer.h"
+#include "core/io/MultiImport.h"
+#include "core/io/TimeFormats.h"
 #include "core/model/Project.h"
 #include "core/model/StreamKinds.h"
 
+#include <QDir>
 #include <QFileInfo>
+#include <QRegularExpression>
 #include <cstdio>
 
 namespace athlos::cli {
@@ -15,12 +19,14 @@ namespace athlos::cli {
 int cmdImport(const QStringList& args) {
     QStringList formats;
     for (const auto& importer : importers()) formats << importer->format();
-    CommandParser p(QStringLiteral("import <project> <file> --as <rec>[/<stream>] [--format F] [--kind K] "
-                                   "[--column SRC=CHANNEL[:UNIT]]... [--skip COL]... [--time-column COL[:UNIT]]"),
+    CommandParser p(QStringLiteral("import <project> <file>... | <folder> --as <rec>[/<stream>] [--format F] [--kind K] "
+                                   "[--column SRC=CHANNEL[:UNIT]]... [--skip COL]... [--drop-unmapped] [--time-column COL[:FORMAT]] [--date D] [--start T]"),
                     QStringLiteral("Import a recording into a project. Nothing is written unless the whole import "
                                    "succeeds; errors name the file, line and column."));
     p.addPositional(QStringLiteral("project"), QStringLiteral("The .athlos file (create it with athlos new)."));
-    p.addPositional(QStringLiteral("file"), QStringLiteral("The recording to import."));
+    p.addPositional(QStringLiteral("file"),
+                    QStringLiteral("The recording to import. Several files of one kind become one stream (the ranges of "
+                                   "several anchors, pieces of one recording); a folder gives one stream per file."));
     p.addOption({QStringLiteral("as"), QStringLiteral("Recording name, or <rec>/<stream> to name the stream too."), QStringLiteral("rec")});
     p.addOption({QStringLiteral("format"), QStringLiteral("auto (default) or one of: ") + formats.join(QStringLiteral(", ")),
                  QStringLiteral("F"), QStringLiteral("auto")});
@@ -38,14 +44,38 @@ int cmdImport(const QStringList& args) {
                                 "SRC=:UNIT keeps the name."),
                  QStringLiteral("SRC=CHANNEL[:UNIT]")});
     p.addOption({QStringLiteral("skip"), QStringLiteral("CSV: leave column COL out; repeatable."), QStringLiteral("COL")});
-    p.addOption({QStringLiteral("time-column"), QStringLiteral("CSV: the column with the time stamps (default t, in s)."),
-                 QStringLiteral("COL[:UNIT]")});
+    p.addOption({QStringLiteral("drop-unmapped"),
+                 QStringLiteral("CSV: leave out every column that is neither mapped with --column nor known to the kind.")});
+    p.addOption({QStringLiteral("time-column"),
+                 QStringLiteral("CSV: the column with the time stamps (default t, in s) and their format: ") + timeFormatNames() + QStringLiteral("."),
+                 QStringLiteral("COL[:FORMAT]")});
+    p.addOption({QStringLiteral("date"), QStringLiteral("The date of clock times (hh:mm:ss) when the file has none."),
+                 QStringLiteral("YYYY-MM-DD")});
+    p.addOption({QStringLiteral("start"), QStringLiteral("UTC date-time of t = 0 for relative times (ISO 8601)."),
+                 QStringLiteral("datetime")});
+    p.addOption({QStringLiteral("labels"),
+                 QStringLiteral("CSV: a per-sample label column (numbers or text) that becomes annotations: runs of equal "
+                                "labels; an empty cell is no annotation."),
+                 QStringLiteral("COL")});
+    p.addOption({QStringLiteral("label-names"), QStringLiteral("Names of number labels: 0=rest,1=run,..."),
+                 QStringLiteral("V=NAME,...")});
+    p.addOption({QStringLiteral("origin"),
+                 QStringLiteral("The project's geodetic origin for local ENU x, y, z of GNSS streams (default: the first fix "
+                                "of the first GNSS import)."),
+                 QStringLiteral("LAT,LON[,H]")});
+    p.addOption({QStringLiteral("roster"),
+                 QStringLiteral("Folder import: a CSV file,athlete,number,team,position,mass_kg naming each file's athlete."),
+                 QStringLiteral("file")});
     p.addOption({QStringLiteral("athlete"), QStringLiteral("Athlete name, stored in the recording's metadata."),
                  QStringLiteral("name")});
-    if (auto code = p.parse(args, 2, 2)) return *code;
+    if (auto code = p.parse(args, 2, 100000)) return *code;
 
     const QString projectPath = p.positional()[0];
-    const QString file = p.positional()[1];
+    const QStringList files = p.positional().mid(1);
+    const QString file = files.front();
+    const bool folder = files.size() == 1 && QFileInfo(file).isDir();
+    if (p.parser().isSet(QStringLiteral("roster")) && !folder)
+        return fail(QStringLiteral("--roster applies to a folder import (one file per athlete)"), Usage);
     ImportOptions options;
     options.format = p.parser().value(QStringLiteral("format"));
     options.kind = p.parser().value(QStringLiteral("kind"));
@@ -53,7 +83,8 @@ int cmdImport(const QStringList& args) {
     options.timeRepair = p.parser().value(QStringLiteral("time-repair"));
     options.frame = p.parser().value(QStringLiteral("frame"));
     options.overwrite = p.parser().isSet(QStringLiteral("overwrite"));
-    if (options.target.isEmpty()) options.target = QFileInfo(file).completeBaseName();
+    options.dropUnmapped = p.parser().isSet(QStringLiteral("drop-unmapped"));
+    if (options.target.isEmpty()) options.target = folder ? QDir(file).dirName() : QFileInfo(file).completeBaseName();
     if (!QStringList{QStringLiteral("reject"), QStringLiteral("sort"), QStringLiteral("drop")}.contains(options.timeRepair))
         return fail(QStringLiteral("--time-repair '%1': use reject, sort or drop").arg(options.timeRepair), Usage);
 
@@ -74,10 +105,36 @@ int cmdImport(const QStringList& args) {
         options.columns.push_back({column.trimmed(), {}, {}, true});
     if (p.parser().isSet(QStringLiteral("time-column"))) {
         const QString spec = p.parser().value(QStringLiteral("time-column"));
-        const qsizetype colon = spec.lastIndexOf(QLatin1Char(':'));
-        options.timeColumn = (colon < 0 ? spec : spec.left(colon)).trimmed();
-        options.timeUnit = colon < 0 ? QString() : spec.mid(colon + 1).trimmed();
-        if (options.timeColumn.isEmpty()) return fail(QStringLiteral("--time-column '%1': expected COL[:UNIT]").arg(spec), Usage);
+        const auto split = splitTimeColumnSpec(spec);
+        if (!split) return fail(QStringLiteral("--time-column '%1': %2").arg(spec, split.message()), Usage);
+        options.timeColumn = split->first;
+        options.timeUnit = split->second;
+        if (options.timeColumn.isEmpty()) return fail(QStringLiteral("--time-column '%1': expected COL[:FORMAT]").arg(spec), Usage);
+    }
+    if (p.parser().isSet(QStringLiteral("date"))) {
+        options.date = p.parser().value(QStringLiteral("date")).trimmed();
+        if (!QRegularExpression(QStringLiteral("^\\d{4}-\\d{2}-\\d{2}$")).match(options.date).hasMatch())
+            return fail(QStringLiteral("--date '%1': expected YYYY-MM-DD").arg(options.date), Usage);
+    }
+    if (p.parser().isSet(QStringLiteral("start"))) {
+        options.start = p.parser().value(QStringLiteral("start")).trimmed();
+        if (const auto start = parseUtc(options.start); !start)
+            return fail(QStringLiteral("--start: %1").arg(start.message()), Usage);
+    }
+    if (p.parser().isSet(QStringLiteral("origin"))) {
+        const auto origin = parseGeodeticOrigin(p.parser().value(QStringLiteral("origin")));
+        if (!origin) return fail(QStringLiteral("--%1").arg(origin.message()), Usage);
+        options.origin = *origin;
+    }
+    options.labelColumn = p.parser().value(QStringLiteral("labels")).trimmed();
+    if (p.parser().isSet(QStringLiteral("label-names"))) {
+        if (options.labelColumn.isEmpty()) return fail(QStringLiteral("--label-names needs --labels COL"), Usage);
+        for (const QString& pair : p.parser().value(QStringLiteral("label-names")).split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+            const qsizetype eq = pair.indexOf(QLatin1Char('='));
+            if (eq <= 0 || pair.mid(eq + 1).trimmed().isEmpty())
+                return fail(QStringLiteral("--label-names: '%1' is not VALUE=NAME").arg(pair), Usage);
+            options.labelNames[pair.left(eq).trimmed()] = pair.mid(eq + 1).trimmed();
+        }
     }
     if (const QString athlete = p.parser().value(QStringLiteral("athlete")).trimmed(); !athlete.isEmpty())
         options.metadata.insert(QStringLiteral("athlete"), athlete);
@@ -88,7 +145,8 @@ int cmdImport(const QStringList& args) {
     if (!project) return fail(project.message());
 
     TerminalProgress bar(QStringLiteral("import"));
-    auto result = importFile(file, options, bar.progress().sub(0.0, 0.7));
+    auto result = folder ? importFolder(file, options, p.parser().value(QStringLiteral("roster")), bar.progress().sub(0.0, 0.7))
+                         : importFiles(files, options, bar.progress().sub(0.0, 0.7));
     if (!result) return fail(result.message(), result.message() == u"cancelled" ? Cancelled : Failed);
     if (p.parser().isSet(QStringLiteral("beacons"))) {
         ImportOptions beaconOptions = options;
@@ -106,6 +164,8 @@ int cmdImport(const QStringList& args) {
     for (const auto& warning : result->warnings) std::fprintf(stderr, "athlos: warning: %s\n", qUtf8Printable(warning));
     QStringList written;
     for (const auto& item : result->items) written << item.path;
+    for (const auto& [rec, list] : result->annotations)
+        if (!list.empty()) written << QStringLiteral("%1 annotations onto %2").arg(list.size()).arg(rec);
     if (Status s = applyImport(**project, std::move(result).value(), options.overwrite); !s) return fail(s.message());
     if (Status s = (*project)->save(bar.progress().sub(0.7, 1.0)); !s)
         return fail(s.message(), s.message() == u"cancelled" ? Cancelled : Failed);

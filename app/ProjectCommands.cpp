@@ -3,6 +3,7 @@
 #include "Commands.h"
 #include "TerminalProgress.h"
 
+#include "core/io/AnnotationIo.h"
 #include "core/io/Exporter.h"
 #include "core/model/Project.h"
 
@@ -145,8 +146,9 @@ int cmdInfo(const QStringList& args) {
 }
 
 int cmdExport(const QStringList& args) {
-    CommandParser p(QStringLiteral("export <project> <rec/stream> --to <file.csv|file.h5>"),
-                    QStringLiteral("Export a stream or table to CSV (round-trips exactly) or HDF5."));
+    CommandParser p(QStringLiteral("export <project> <rec/stream>|<rec>/annotations --to <file.csv|file.h5|file.json>"),
+                    QStringLiteral("Export a stream or table to CSV (round-trips exactly) or HDF5; a recording's annotations "
+                                   "to CSV (start,end,label,confidence,source,annotator; s) or JSON."));
     p.addPositional(QStringLiteral("project"), QStringLiteral("The .athlos file."));
     p.addPositional(QStringLiteral("item"), QStringLiteral("Stream or table as <recording>/<name>."));
     p.addOption({QStringLiteral("to"), QStringLiteral("Output file; the format follows the extension (.csv, .h5/.hdf5)."), QStringLiteral("file")});
@@ -156,7 +158,8 @@ int cmdExport(const QStringList& args) {
     const QString suffix = QFileInfo(to).suffix().toLower();
     const bool csv = suffix == u"csv" || suffix == u"txt";
     const bool h5 = suffix == u"h5" || suffix == u"hdf5";
-    if (!csv && !h5) return fail(QStringLiteral("--to '%1': use a .csv or .h5 file name").arg(to), Usage);
+    const bool json = suffix == u"json" && p.positional()[1].endsWith(QStringLiteral("/annotations"));
+    if (!csv && !h5 && !json) return fail(QStringLiteral("--to '%1': use a .csv or .h5 file name (.json for annotations)").arg(to), Usage);
 
     auto project = Project::open(p.positional()[0]);
     if (!project) return fail(project.message());
@@ -167,6 +170,10 @@ int cmdExport(const QStringList& args) {
         status = csv ? exportStreamCsv(*s, to, bar.progress()) : exportStreamHdf5(*s, to);
     } else if (const Table* t = (*project)->table(item)) {
         status = csv ? exportTableCsv(*t, to) : exportTableHdf5(*t, to);
+    } else if (const Recording* rec = (*project)->recording(item.section(QLatin1Char('/'), 0, 0));
+               rec && item.section(QLatin1Char('/'), 1) == QLatin1String("annotations")) {
+        if (h5) return fail(QStringLiteral("--to '%1': annotations export to .csv or .json").arg(to), Usage);
+        status = exportAnnotations(rec->annotations, to);
     } else {
         return fail(QStringLiteral("'%1' has no stream or table '%2' (see athlos info)").arg(p.positional()[0], item));
     }

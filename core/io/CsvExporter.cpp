@@ -104,11 +104,11 @@ Status exportStreamCsv(const Stream& stream, const QString& file, const Progress
     if (Status s = out.open(); !s)
         return s;
     std::string& buf = out.buffer();
-    if (info.kind == QLatin1String("lps-tdoa")) {
+    if (const LongLayout* layout = longLayoutOf(info.kind)) {
         // Back to the long interchange form (TdoaLayout.h); cells that were not received are skipped.
-        buf += "t,beacon,dt\n";
+        buf += "t,beacon," + layout->value.toStdString() + '\n';
         bool ok = true;
-        forEachTdoaSample(info, data, [&](double t, const QString& beacon, double dt) {
+        forEachLongSample(*layout, info, data, [&](double t, const QString& beacon, double dt) {
             appendNumber(buf, t);
             buf += ',';
             appendText(buf, beacon, false);

@@ -19,8 +19,13 @@
 //   mapped unit of a column the kind has no rule for is converted to SI (deg → rad, g → m/s^2).
 //   timeColumn/timeUnit name the time column when it is not 't' in seconds.
 //
+// The parts: CsvColumns.h (column mapping, kind inference), CsvRecords.h (record parsing),
+// TimeOrder.h (time-order repair).
+//
 // read() names each item by its default name only ("imu"); importFile() puts it under the target.
+#include "core/io/CsvColumns.h"  // siUnitOf, inferCsvKind, mappedColumnNames
 #include "core/io/Importer.h"
+#include "core/io/TimeOrder.h"   // repairTimeOrder
 
 namespace athlos {
 
@@ -32,32 +37,7 @@ public:
     bool canRead(const QString& file, const QByteArray& head) const override;
     Expected<ImportResult> read(const QString& file, const ImportOptions& options,
                                 const Progress& progress) const override;
+    bool mapsColumns() const override { return true; }
 };
-
-// The SI unit a mapped column of no kind rule is stored in ("deg" → "rad"; magnetic fields in uT as
-// everywhere), or empty for an unknown unit.
-QString siUnitOf(const QString& unit);
-// The kind the column names suggest (see above), or empty.
-QString inferCsvKind(const QStringList& names);
-// Names of the header cells after options' mapping (skipped columns left out, the time column as 't').
-QStringList mappedColumnNames(const QStringList& headerCells, const ImportOptions& options);
-
-// Where the time stamps of parsed samples came from, for messages.
-struct TimeOrigin {
-    QString file;
-    int column = 1;                 // 1-based column of t
-    QString columnName = QStringLiteral("t");
-    std::vector<long long> lines;   // line of each sample
-};
-
-// Makes times increasing according to mode (ImportOptions::timeRepair):
-//   reject: error naming the first offending line and both times;
-//   sort:   stable sort by time; exact duplicate samples are dropped with a warning, samples with
-//           equal times but different values are an error (unless allowEqualTimes);
-//   drop:   drops every sample whose time is not after the last kept one, with a warning.
-// allowEqualTimes accepts equal consecutive times (long-format rows such as TDoA's).
-// Warnings are appended to warnings.
-Status repairTimeOrder(StreamData& data, TimeOrigin& origin, const QString& mode, bool allowEqualTimes,
-                       QStringList& warnings);
 
 }  // namespace athlos

@@ -2,6 +2,7 @@
 
 #include "core/io/CsvImporter.h"
 #include "core/io/CsvReader.h"
+#include "core/io/TimeFormats.h"
 #include "core/model/StreamKinds.h"
 #include "core/util/Units.h"
 
@@ -203,8 +204,14 @@ Expected<ImportPreview> previewFile(const QString& file, const QString& format, 
 }
 
 Expected<QString> storedUnitFor(const QString& kindName, const QString& channel, const QString& unit, bool time) {
+    if (time) {  // any time format (ms, unix_ns, iso, hh:mm:ss, ...) is stored as t in s
+        const auto format = parseTimeFormat(unit);
+        if (!format)
+            return format.error();
+        return QStringLiteral("s");
+    }
     const StreamKind* kind = findStreamKind(kindName);
-    const QString target = time ? QStringLiteral("s") : kind ? kind->unitFor(channel) : QString();
+    const QString target = kind ? kind->unitFor(channel) : QString();
     if (!target.isEmpty()) {
         const auto conversion = conversionTo(unit, target);
         if (!conversion)

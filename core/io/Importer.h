@@ -1,6 +1,8 @@
 #pragma once
 // File importers. An import reads a file into new streams/tables in memory; applying it to the
 // project is a separate step, so a failed import never changes the project.
+#include "core/geometry/Geodesy.h"
+#include "core/model/Annotation.h"
 #include "core/model/Project.h"
 #include "core/util/Expected.h"
 #include "core/util/Progress.h"
@@ -35,7 +37,14 @@ struct ImportOptions {
     // csv: mapping of source columns; columns not listed keep their header name and unit.
     std::vector<ColumnMapping> columns;
     QString timeColumn;                      // csv: source column holding time ("" = the column 't')
-    QString timeUnit;                        // csv: unit of that column ("" = from its header, else s)
+    QString timeUnit;                        // csv: unit or time format of that column ("" = from its header,
+                                             // else s); see core/io/TimeFormats.h (ms, unix_ns, iso, hh:mm:ss, excel…)
+    bool dropUnmapped = false;
+    QString labelColumn;                     // csv: per-sample labels → annotations (runs of equal labels)
+    std::map<QString, QString> labelNames;   // csv: label value → name ("0" → "rest"); numbers match numerically               // csv: leave out columns neither mapped nor known to the kind
+    std::optional<GeodeticOrigin> origin;    // the project's geodetic origin, if it has none yet (Geodesy.h)
+    QString date;                            // YYYY-MM-DD: the date of clock times (hh:mm:ss) without one
+    QString start;                           // ISO 8601: the UTC instant of t = 0 for relative times
     QJsonObject metadata;                    // merged into the target recording's metadata (athlete, ...)
 };
 
@@ -48,6 +57,10 @@ struct ImportResult {
     std::vector<ImportedItem> items;
     QStringList warnings;                    // e.g. "repaired 3 non-increasing time stamps"
     std::map<QString, QJsonObject> recordingMetadata;  // recording → keys merged into its metadata
+    // recording → annotations to add (importers use "" for the target recording). Applying replaces
+    // the recording's annotations of the same source and annotator when overwriting.
+    std::map<QString, Annotations> annotations;
+    std::optional<GeodeticOrigin> origin;    // ImportOptions::origin, applied with the items
 };
 
 class Importer {
@@ -60,6 +73,8 @@ public:
     virtual bool canRead(const QString& file, const QByteArray& head) const = 0;
     virtual Expected<ImportResult> read(const QString& file, const ImportOptions& options,
                                         const Progress& progress) const = 0;
+    // Takes ImportOptions::columns, timeColumn/timeUnit and dropUnmapped (CSV-based formats).
+    virtual bool mapsColumns() const { return false; }
 };
 
 // All importers (csv, broad, gaitmap, and those later issues add).
@@ -73,6 +88,8 @@ Expected<const Importer*> chooseImporter(const QString& file, const QString& for
 // options.target and the kind. Errors name the file, line and column.
 Expected<ImportResult> importFile(const QString& file, const ImportOptions& options, const Progress& progress = {});
 // Puts the imported items into the project; refuses existing names unless options.overwrite.
+// GNSS streams with lat/lon get x, y[, z] (m) in the project's ENU frame (core/geometry/Geodesy.h);
+// the project's origin is set from result.origin or the first fix if it has none.
 // All-or-nothing: checks every name before inserting any. recordingMetadata is merged into the
 // recordings' metadata (created if needed).
 Status applyImport(Project& project, ImportResult result, bool overwrite);

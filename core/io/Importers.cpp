@@ -5,11 +5,16 @@
 //   "rec"         → rec/<default name>
 //   "rec/name"    → rec/name for a single item, rec/name-<default name> for each of several
 //   "" (none)     → the recording is named after the file ("run1.csv" → run1/<default name>).
+#include "core/io/AnnotationIo.h"
 #include "core/io/BroadImporter.h"
 #include "core/io/CsvImporter.h"
 #include "core/io/GaitmapImporter.h"
 #include "core/io/Importer.h"
 #include "core/io/NmeaImporter.h"
+#include "core/io/GpxImporter.h"
+#include "core/io/MetricaImporter.h"
+#include "core/io/RosImporter.h"
+#include "core/io/VendorCsvImporter.h"
 #include "core/util/Version.h"
 
 #include <QDateTime>
@@ -17,6 +22,7 @@
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QSet>
+#include <algorithm>
 
 namespace athlos {
 namespace {
@@ -56,6 +62,14 @@ Provenance importProvenance(const Importer& importer, const QString& file, const
         p.parameters.insert(QStringLiteral("time_column"), options.timeColumn);
     if (!options.timeUnit.isEmpty())
         p.parameters.insert(QStringLiteral("time_unit"), options.timeUnit);
+    if (options.dropUnmapped)
+        p.parameters.insert(QStringLiteral("drop_unmapped"), true);
+    if (options.origin)
+        p.parameters.insert(QStringLiteral("origin"), options.origin->toJson());
+    if (!options.date.isEmpty())
+        p.parameters.insert(QStringLiteral("date"), options.date);
+    if (!options.start.isEmpty())
+        p.parameters.insert(QStringLiteral("start"), options.start);
     p.sourceFile = QFileInfo(file).absoluteFilePath();
     p.appVersion = appVersion();
     p.time = QDateTime::currentDateTimeUtc();
@@ -69,8 +83,14 @@ const std::vector<std::unique_ptr<Importer>>& importers() {
     static const auto list = [] {
         std::vector<std::unique_ptr<Importer>> v;
         v.push_back(std::make_unique<BroadImporter>());
+        v.push_back(std::make_unique<AnnotationImporter>());
         v.push_back(std::make_unique<GaitmapImporter>());
         v.push_back(std::make_unique<NmeaImporter>());
+        v.push_back(std::make_unique<RosImporter>());
+        v.push_back(std::make_unique<MetricaImporter>());
+        for (const VendorProfile& profile : VendorCsvImporter::profiles())
+            v.push_back(std::make_unique<VendorCsvImporter>(profile));
+        v.push_back(std::make_unique<GpxImporter>());
         v.push_back(std::make_unique<CsvImporter>());
         return v;
     }();
@@ -120,8 +140,8 @@ Expected<ImportResult> importFile(const QString& file, const ImportOptions& opti
     if (!chosen)
         return chosen.error();
     const Importer* importer = *chosen;
-    if (!options.columns.empty() || !options.timeColumn.isEmpty() || !options.timeUnit.isEmpty())
-        if (importer->format() != QLatin1String("csv"))
+    if (!options.columns.empty() || !options.timeColumn.isEmpty() || !options.timeUnit.isEmpty() || options.dropUnmapped)
+        if (!importer->mapsColumns())
             return makeError(QStringLiteral("%1: a column mapping applies to CSV files only (format '%2')")
                                  .arg(file, importer->format()));
 
@@ -131,6 +151,13 @@ Expected<ImportResult> importFile(const QString& file, const ImportOptions& opti
     const Provenance provenance = importProvenance(*importer, file, options);
     if (!options.metadata.isEmpty())
         result->recordingMetadata[target->recording] = options.metadata;
+    result->origin = options.origin;
+    if (auto it = result->annotations.find(QString()); it != result->annotations.end()) {
+        Annotations own = std::move(it->second);
+        result->annotations.erase(it);
+        auto& list = result->annotations[target->recording];
+        list.insert(list.end(), own.begin(), own.end());
+    }
     const bool several = result->items.size() > 1;
     for (ImportedItem& item : result->items) {
         const QString defaultName = item.path;
@@ -166,6 +193,44 @@ Status applyImport(Project& project, ImportResult result, bool overwrite) {
         if (!overwrite && (project.stream(item.path) || project.table(item.path)))
             return makeError(QStringLiteral("'%1' already exists in the project (overwrite to replace it)").arg(item.path));
     }
+    // The project's geodetic origin, and every GNSS stream in its ENU frame (before anything changes).
+    std::optional<GeodeticOrigin> origin = projectOrigin(project.meta());
+    if (origin && result.origin && !(*origin == *result.origin))
+        return makeError(QStringLiteral("the project's geodetic origin is %1, %2, %3 m; it cannot change (all GNSS "
+                                        "streams share it)")
+                             .arg(origin->lat, 0, 'g', 12).arg(origin->lon, 0, 'g', 12).arg(origin->height));
+    bool newOrigin = false;
+    if (!origin && result.origin) {
+        origin = result.origin;
+        newOrigin = true;
+    }
+    for (ImportedItem& item : result.items) {
+        auto* stream = std::get_if<Stream>(&item.item);
+        if (!stream || stream->kind() != QLatin1String("gnss"))
+            continue;
+        if (!origin) {
+            origin = firstFix(*stream);
+            newOrigin = origin.has_value();
+        }
+        if (!origin)
+            continue;
+        if (auto added = addLocalEnu(*stream, *origin); !added)
+            return makeError(QStringLiteral("%1: %2").arg(item.path, added.message()));
+    }
+    for (const auto& [name, annotations] : result.annotations) {
+        if (annotations.empty())
+            continue;
+        if (!ItemPath::parse(name + QStringLiteral("/x")).isValid())
+            return makeError(QStringLiteral("'%1' is not a valid recording name").arg(name));
+        const Recording* rec = project.recording(name);
+        if (!rec || overwrite)
+            continue;
+        for (const Annotation& a : rec->annotations)
+            for (const Annotation& b : annotations)
+                if (a.source == b.source && a.annotator == b.annotator)
+                    return makeError(QStringLiteral("'%1' already has annotations from %2 (overwrite to replace them)")
+                                         .arg(name, b.annotator));
+    }
     for (ImportedItem& item : result.items) {
         if (project.stream(item.path) || project.table(item.path))
             project.removeItem(item.path);  // a table may replace a stream and vice versa
@@ -173,6 +238,20 @@ Status applyImport(Project& project, ImportResult result, bool overwrite) {
             project.putStream(item.path, std::move(*stream));
         else
             project.putTable(item.path, std::move(std::get<Table>(item.item)));
+    }
+    for (auto& [name, annotations] : result.annotations) {
+        if (annotations.empty())
+            continue;
+        Annotations& existing = project.ensureRecording(name).annotations;
+        std::erase_if(existing, [&](const Annotation& a) {
+            return std::any_of(annotations.begin(), annotations.end(),
+                               [&](const Annotation& b) { return a.source == b.source && a.annotator == b.annotator; });
+        });
+        existing.insert(existing.end(), annotations.begin(), annotations.end());
+    }
+    if (newOrigin) {
+        setProjectOrigin(project.meta(), *origin);
+        project.setModified();
     }
     for (const auto& [name, metadata] : result.recordingMetadata) {
         QJsonObject& merged = project.ensureRecording(name).metadata;

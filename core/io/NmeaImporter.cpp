@@ -1,7 +1,10 @@
 #include "core/io/NmeaImporter.h"
 
+#include "core/io/TimeFormats.h"
+
 #include <QFile>
 #include <QFileInfo>
+#include <QRegularExpression>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -14,10 +17,24 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kKnot = 1852.0 / 3600.0;  // m/s
 
+constexpr qint64 kDayMs = 86400000;
+constexpr qint64 kHalfDayMs = kDayMs / 2;
+constexpr qint64 kNoDate = std::numeric_limits<qint64>::min();
+
 struct Epoch {
     double lat = kNaN, lon = kNaN, alt = kNaN, speed = kNaN, course = kNaN, hdop = kNaN, sats = kNaN;
+    int quality = -1;      // GGA fix quality
     bool invalid = false;  // a sentence said "no fix"
 };
+
+// RMC date ddmmyy → days since 1970-01-01 (years 80–99 are 19xx, as NMEA-0183 intends), or kNoDate.
+qint64 rmcDate(const QByteArray& value) {
+    if (value.size() != 6) return kNoDate;
+    bool okD = false, okM = false, okY = false;
+    const int d = value.left(2).toInt(&okD), m = value.mid(2, 2).toInt(&okM), y = value.mid(4, 2).toInt(&okY);
+    if (!okD || !okM || !okY || m < 1 || m > 12 || d < 1 || d > 31) return kNoDate;
+    return daysFromCivil(y >= 80 ? 1900 + y : 2000 + y, m, d);
+}
 
 // XOR of the characters between '$' and '*' (NMEA-0183 checksum).
 int checksum(const QByteArray& body) {
@@ -55,29 +72,39 @@ QString NmeaImporter::description() const {
 }
 
 bool NmeaImporter::canRead(const QString&, const QByteArray& head) const {
-    const QByteArray t = head.trimmed();
-    return t.startsWith('$') && (t.contains("GGA,") || t.contains("RMC,") || t.contains("VTG,"));
+    // Sentences anywhere in the head: logs start with comments, a logger's banner or binary noise.
+    static const QRegularExpression sentence(QStringLiteral("\\$[A-Z]{2}(GGA|RMC|VTG),"));
+    return sentence.match(QString::fromLatin1(head)).hasMatch();
 }
 
-Expected<ImportResult> NmeaImporter::read(const QString& file, const ImportOptions&, const Progress& progress) const {
+Expected<ImportResult> NmeaImporter::read(const QString& file, const ImportOptions& options, const Progress& progress) const {
     QFile f(file);
     if (!f.open(QIODevice::ReadOnly)) return makeError(QStringLiteral("%1: cannot open: %2").arg(file, f.errorString()));
     progress.report(0.0, QStringLiteral("reading NMEA"));
-    auto result = parse(f.readAll(), file);
+    auto result = parse(f.readAll(), file, options);
     progress.report(1.0);
     return result;
 }
 
-Expected<ImportResult> NmeaImporter::parse(const QByteArray& text, const QString& file) {
+Expected<ImportResult> NmeaImporter::parse(const QByteArray& text, const QString& file, const ImportOptions& options) {
     ImportResult result;
-    std::map<double, Epoch> epochs;  // by time stamp (s since the first day's midnight)
-    double dayOffset = 0.0, lastTod = -1.0;
+    // Epochs by time in ms since midnight of the first fix's day (day index × 86 400 000 + time of day).
+    std::map<qint64, Epoch> epochs;
+    qint64 dayOffset = 0, lastFixTod = -1, lastKey = -1;
+    qint64 firstDate = kNoDate, firstDateDay = 0;  // the first RMC date and the day index it had
     int lineNo = 0;
-    for (QByteArray line : text.split('\n')) {
+    qsizetype lineStart = 0;
+    while (lineStart < text.size()) {
+        qsizetype lineEnd = text.indexOf('\n', lineStart);
+        if (lineEnd < 0)
+            lineEnd = text.size();
+        const QByteArray raw = text.mid(lineStart, lineEnd - lineStart);
+        lineStart = lineEnd + 1;
         ++lineNo;
-        line = line.trimmed();
-        if (line.isEmpty()) continue;
-        if (!line.startsWith('$')) continue;  // not a sentence (comments, binary noise)
+        // A sentence starts at '$'; anything before it (binary noise, a logger's prefix) is ignored.
+        const qsizetype dollar = raw.indexOf('$');
+        if (dollar < 0) continue;
+        const QByteArray line = raw.mid(dollar).trimmed();
         const qsizetype star = line.lastIndexOf('*');
         const QByteArray body = line.mid(1, star < 0 ? -1 : star - 1);
         if (star >= 0) {
@@ -85,8 +112,9 @@ Expected<ImportResult> NmeaImporter::parse(const QByteArray& text, const QString
             const int stated = line.mid(star + 1, 2).toInt(&ok, 16);
             const int computed = checksum(body);
             if (!ok || stated != computed) {
-                result.warnings << QStringLiteral("%1:%2: checksum mismatch (stated %3, computed %4); sentence skipped")
-                                       .arg(file).arg(lineNo).arg(QString::fromLatin1(line.mid(star + 1, 2)))
+                result.warnings << QStringLiteral("%1:%2:%3: checksum mismatch (stated '%4', computed %5); sentence skipped")
+                                       .arg(file).arg(lineNo).arg(dollar + star + 2)
+                                       .arg(QString::fromLatin1(line.mid(star + 1, 2)))
                                        .arg(computed, 2, 16, QLatin1Char('0'));
                 continue;
             }
@@ -96,14 +124,19 @@ Expected<ImportResult> NmeaImporter::parse(const QByteArray& text, const QString
         const QByteArray type = f.front().right(3);
         if (type != "RMC" && type != "GGA" && type != "VTG") continue;
         const auto field = [&](int i) { return i < f.size() ? f[i] : QByteArray(); };
+        const auto column = [&](int i) {  // 1-based column of field i in the file's line
+            qsizetype at = dollar + 2;      // '$' is column dollar + 1, field 0 starts after it
+            for (int k = 0; k < i && k < f.size(); ++k) at += f[k].size() + 1;
+            return at;
+        };
         const auto fail = [&](const char* what, int i) {
-            return makeError(QStringLiteral("%1:%2: %3 sentence: cannot read %4 (field %5: '%6')")
-                                 .arg(file).arg(lineNo).arg(QString::fromLatin1(type), QLatin1String(what)).arg(i)
-                                 .arg(QString::fromLatin1(field(i))));
+            return makeError(QStringLiteral("%1:%2:%3: %4 sentence: cannot read %5 (field %6: '%7')")
+                                 .arg(file).arg(lineNo).arg(column(i)).arg(QString::fromLatin1(type), QLatin1String(what))
+                                 .arg(i).arg(QString::fromLatin1(field(i))));
         };
         if (type == "VTG") {  // no time of its own: belongs to the latest epoch
-            if (lastTod < 0.0 || epochs.empty()) continue;
-            Epoch& e = epochs[lastTod + dayOffset];
+            if (lastKey < 0) continue;
+            Epoch& e = epochs[lastKey];
             bool ok = true;
             if (!field(1).isEmpty()) e.course = field(1).toDouble(&ok);
             if (!ok) return fail("course", 1);
@@ -112,23 +145,50 @@ Expected<ImportResult> NmeaImporter::parse(const QByteArray& text, const QString
             if (!ok) return fail("speed", 7);
             continue;
         }
-        double tod = 0.0;
-        if (!timeOfDay(field(1), tod)) {
+        double todSeconds = 0.0;
+        if (!timeOfDay(field(1), todSeconds)) {
             if (field(1).isEmpty()) continue;  // receivers print empty sentences before the first fix
             return fail("time hhmmss.ss", 1);
         }
-        if (lastTod >= 0.0 && tod < lastTod - 43200.0) dayOffset += 86400.0;  // past midnight
-        lastTod = tod;
-        Epoch& e = epochs[tod + dayOffset];
-        const int latField = type == "RMC" ? 3 : 2;
-        if (type == "RMC" && field(2) != "A") e.invalid = true;
+        const qint64 tod = std::llround(todSeconds * 1000.0);
+        bool fix = true;
+        if (type == "RMC" && field(2) != "A") fix = false;
+        int quality = -1;
         if (type == "GGA") {
             bool ok = false;
-            const int quality = field(6).toInt(&ok);
+            quality = field(6).toInt(&ok);
             if (!ok && !field(6).isEmpty()) return fail("fix quality", 6);
-            if (quality == 0) e.invalid = true;
+            if (quality == 0) fix = false;
         }
+        // The day: from the RMC date once one is known, else a time of day that jumps back by more
+        // than 12 h since the last fix is past midnight. Sentences without a fix do not move the day
+        // (receivers print a stale or default time before their first fix).
+        qint64 day = dayOffset;
+        qint64 date = kNoDate;
+        if (type == "RMC" && fix && !field(9).isEmpty()) {
+            date = rmcDate(field(9));
+            if (date == kNoDate) return fail("date ddmmyy", 9);
+            if (firstDate == kNoDate) {
+                if (lastFixTod >= 0 && tod < lastFixTod - kHalfDayMs) day = dayOffset + 1;
+                firstDate = date;
+                firstDateDay = day;
+            } else {
+                day = firstDateDay + (date - firstDate);
+            }
+        } else if (lastFixTod >= 0 && tod < lastFixTod - kHalfDayMs) {
+            day = dayOffset + 1;
+        }
+        const qint64 key = day * kDayMs + tod;
+        Epoch& e = epochs[key];
+        lastKey = key;
+        if (!fix) {
+            e.invalid = true;
+            continue;
+        }
+        dayOffset = day;
+        lastFixTod = tod;
         if (e.invalid) continue;
+        const int latField = type == "RMC" ? 3 : 2;
         if (!angle(field(latField), field(latField + 1), e.lat)) return fail("latitude", latField);
         if (!angle(field(latField + 2), field(latField + 3), e.lon)) return fail("longitude", latField + 2);
         bool ok = true;
@@ -138,6 +198,7 @@ Expected<ImportResult> NmeaImporter::parse(const QByteArray& text, const QString
             if (!field(8).isEmpty()) e.course = field(8).toDouble(&ok);
             if (!ok) return fail("course", 8);
         } else {
+            e.quality = quality;
             if (!field(7).isEmpty()) e.sats = field(7).toDouble(&ok);
             if (!ok) return fail("satellites", 7);
             if (!field(8).isEmpty()) e.hdop = field(8).toDouble(&ok);
@@ -146,23 +207,50 @@ Expected<ImportResult> NmeaImporter::parse(const QByteArray& text, const QString
             if (!ok) return fail("altitude", 9);
         }
     }
+    constexpr int kColumns = 9;
     StreamData data;
-    data.columns = 8;
-    for (const auto& [t, e] : epochs) {
+    data.columns = kColumns;
+    qint64 firstKey = -1;
+    for (const auto& [key, e] : epochs) {
         if (e.invalid || !std::isfinite(e.lat) || !std::isfinite(e.lon)) continue;
-        data.t.push_back(t);
+        if (firstKey < 0) firstKey = key;
+        data.t.push_back(double(key - firstKey) * 1e-3);
         const double c = e.course * std::numbers::pi / 180.0;
         const bool vel = std::isfinite(e.speed) && std::isfinite(e.course);
-        const double row[8] = {e.lat, e.lon, e.alt, vel ? e.speed * std::cos(c) : kNaN, vel ? e.speed * std::sin(c) : kNaN,
-                               kNaN, e.hdop, e.sats};
-        data.values.insert(data.values.end(), row, row + 8);
+        const double row[kColumns] = {e.lat, e.lon, e.alt, vel ? e.speed * std::cos(c) : kNaN,
+                                      vel ? e.speed * std::sin(c) : kNaN, kNaN, e.quality >= 0 ? double(e.quality) : kNaN,
+                                      e.sats, e.hdop};
+        data.values.insert(data.values.end(), row, row + kColumns);
     }
     if (data.t.empty()) return makeError(QStringLiteral("%1: no RMC/GGA sentence with a valid fix").arg(file));
+    // Absolute start: the RMC date (or the date option) at the first fix.
+    TimeBase base;
+    if (firstDate != kNoDate) {
+        base.known = true;
+        base.t0Ns = ((firstDate - firstDateDay) * kDayMs + firstKey) * 1000000LL;
+    } else if (!options.date.isEmpty()) {
+        const QByteArray d = options.date.trimmed().toUtf8();
+        qint64 days = 0;
+        if (!parseIsoDate(std::string_view(d.constData(), size_t(d.size())), days))
+            return makeError(QStringLiteral("date '%1': expected YYYY-MM-DD").arg(options.date));
+        base.known = true;
+        base.t0Ns = (days * kDayMs + firstKey) * 1000000LL;
+    } else {
+        base.timeOfDayOnly = true;
+        base.t0Ns = (firstKey % kDayMs) * 1000000LL;
+        result.warnings << QStringLiteral("%1: no RMC sentence with a date; the start is known as a time of day (%2 UTC) "
+                                          "only (give the date: --date YYYY-MM-DD)")
+                               .arg(file, formatTimeOfDay(base.t0Ns));
+    }
     StreamInfo info;
     info.kind = QStringLiteral("gnss");
     info.frame = QStringLiteral("WGS84");
-    info.columns = {{"lat", "deg"}, {"lon", "deg"}, {"alt", "m"}, {"vn", "m/s"}, {"ve", "m/s"}, {"vd", "m/s"}, {"hdop", "1"}, {"sats", "1"}};
+    info.columns = {{"lat", "deg"}, {"lon", "deg"}, {"alt", "m"},  {"vn", "m/s"}, {"ve", "m/s"},
+                    {"vd", "m/s"},  {"fix", "1"},   {"sats", "1"}, {"hdop", "1"}};
     info.attributes.insert(QStringLiteral("source_format"), QStringLiteral("nmea"));
+    info.attributes.insert(QStringLiteral("fix_codes"),
+                           QStringLiteral("GGA quality: 1 GPS, 2 DGPS, 4 RTK fixed, 5 RTK float, 6 dead reckoning"));
+    writeTimeAttributes(info.attributes, base, QStringLiteral("nmea"));
     result.items.push_back({QStringLiteral("gnss"), Stream(std::move(info), std::move(data))});
     return result;
 }

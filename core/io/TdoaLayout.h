@@ -6,6 +6,9 @@
 // instant, one column per beacon named "dt_<id>" (unit s), NaN where that beacon did not receive
 // the fix. attributes["beacon_ids"] lists the ids (text, as in the file) in column order.
 // Export writes the long form back (NaN cells are skipped), so CSV round-trips.
+//
+// Two-way ranging (kind "lps-range", long CSV `t,beacon,range`, m) is stored the same way with
+// "range_<id>" columns (unit m): the LongLayout of a kind says which.
 #include "core/model/Stream.h"
 #include "core/util/Expected.h"
 
@@ -19,9 +22,27 @@ namespace athlos {
 struct TdoaSample {
     double t = 0.0;      // s
     QString beacon;      // id as written in the file
-    double dt = 0.0;     // s
+    double dt = 0.0;     // s (the range in m for lps-range)
     long long line = 0;  // source line, for error messages (0 if unknown)
 };
+
+// A per-beacon measurement stored wide: kind, the long-form value column and its unit.
+struct LongLayout {
+    QString kind;    // "lps-tdoa", "lps-range"
+    QString value;   // "dt", "range": the long column; wide columns are "<value>_<id>"
+    QString unit;    // "s", "m"
+    QString columnName(const QString& beaconId) const { return value + QLatin1Char('_') + beaconId; }
+    QString beaconId(const QString& column) const;  // empty for other columns
+};
+// The layout of a long-format kind, or nullptr.
+const LongLayout* longLayoutOf(const QString& kind);
+
+// Groups long-form samples (ordered by non-decreasing t) into a wide stream of layout's kind.
+Expected<Stream> longStreamFromSamples(const std::vector<TdoaSample>& samples, const QString& file,
+                                       const LongLayout& layout);
+// Calls visit(t, beaconId, value) for every measurement of a wide stream in time order.
+void forEachLongSample(const LongLayout& layout, const StreamInfo& info, const StreamData& data,
+                       const std::function<void(double, const QString&, double)>& visit);
 
 inline QString tdoaColumnName(const QString& beaconId) { return QStringLiteral("dt_") + beaconId; }
 // Beacon id of a "dt_<id>" column, or empty for other columns.

@@ -29,9 +29,14 @@ const std::vector<StreamKind>& streamKinds() {
          {"beacon", "dt"},
          "Time differences of arrival. CSV in long format t, beacon (id), dt (s); stored wide, one dt_<id> "
          "column per beacon (core/io/TdoaLayout.h)."},
+        {"lps-range", "range", "lps", false,
+         {{"range", m}, {"range_", m}},
+         {"beacon", "range"},
+         "Two-way-ranging (time of arrival) distances tag-beacon. CSV in long format t, beacon (id), range (m); "
+         "stored wide, one range_<id> column per beacon (core/io/TdoaLayout.h)."},
         {"gnss", "gnss", "WGS84", false,
          {{"lat", "deg"}, {"lon", "deg"}, {"alt", m}, {"vn", mps}, {"ve", mps}, {"vd", mps},
-          {"x", m}, {"y", m}, {"z", m}, {"vx", mps}, {"vy", mps}, {"vz", mps}, {"hdop", one}, {"sats", one}},
+          {"x", m}, {"y", m}, {"z", m}, {"vx", mps}, {"vy", mps}, {"vz", mps}, {"hdop", one}, {"sats", one}, {"fix", one}},
          {},
          "Satellite fixes: lat, lon (deg), alt (m)[, vn, ve, vd (m/s)] or local x, y, z (m) in ENU."},
         {"beacons", "beacons", "lps", true,

@@ -1,7 +1,8 @@
 #pragma once
 // The known stream kinds: default stream name under a recording, default frame, and the SI unit
 // each known column must have. Importers use it to name streams and to check/convert units.
-// TDoA streams (kind "lps-tdoa") are stored wide, one dt_<id> column per beacon: see core/io/TdoaLayout.h.
+// TDoA streams (kind "lps-tdoa") are stored wide, one dt_<id> column per beacon, and so are ranges
+// (kind "lps-range", range_<id>): see core/io/TdoaLayout.h.
 #include <QString>
 #include <QStringList>
 #include <optional>

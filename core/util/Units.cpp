@@ -21,6 +21,7 @@ const QHash<QString, UnitDef>& unitTable() {
     static const QHash<QString, UnitDef> table{
         {"s", {"time", 1.0}},          {"ms", {"time", 1e-3}},       {"us", {"time", 1e-6}},
         {"ns", {"time", 1e-9}},        {"min", {"time", 60.0}},      {"h", {"time", 3600.0}},
+        {"d", {"time", 86400.0}},
         {"m", {"length", 1.0}},        {"mm", {"length", 1e-3}},     {"cm", {"length", 1e-2}},
         {"km", {"length", 1e3}},       {"m/s", {"speed", 1.0}},      {"km/h", {"speed", 1.0 / 3.6}},
         {"mm/s", {"speed", 1e-3}},     {"cm/s", {"speed", 1e-2}},    {"m/s^2", {"acceleration", 1.0}},
@@ -34,6 +35,10 @@ const QHash<QString, UnitDef>& unitTable() {
         {"%", {"ratio", 0.01}},        {"degC", {"temperature", 1.0}},
         {"K", {"temperature", 1.0, -273.15}},                        {"Hz", {"frequency", 1.0}},
         {"kHz", {"frequency", 1e3}},   {"dB", {"level", 1.0}},       {"dBm", {"power level", 1.0}},
+        {"bpm", {"frequency", 1.0 / 60.0}},                          {"mph", {"speed", 0.44704}},
+        {"ft", {"length", 0.3048}},    {"mi", {"length", 1609.344}}, {"ft/s", {"speed", 0.3048}},
+        {"Pa", {"pressure", 1.0}},     {"hPa", {"pressure", 100.0}}, {"kPa", {"pressure", 1e3}},
+        {"mbar", {"pressure", 100.0}}, {"bar", {"pressure", 1e5}},   {"lx", {"illuminance", 1.0}},
     };
     return table;
 }
@@ -44,6 +49,7 @@ const QHash<QString, QString>& aliases() {
     static const QHash<QString, QString> table{
         {"sec", "s"},         {"secs", "s"},         {"second", "s"},       {"seconds", "s"},
         {"msec", "ms"},       {"millisecond", "ms"}, {"milliseconds", "ms"}, {"usec", "us"},
+        {"day", "d"},          {"days", "d"},         {"hour", "h"},         {"hours", "h"},
         {"meter", "m"},       {"meters", "m"},       {"metre", "m"},        {"metres", "m"},
         {"m/s2", "m/s^2"},    {"m/s/s", "m/s^2"},    {"ms^-2", "m/s^2"},    {"m*s^-2", "m/s^2"},
         {"m s^-2", "m/s^2"},  {"m/sec^2", "m/s^2"},  {"deg/sec", "deg/s"},  {"dps", "deg/s"},
@@ -51,12 +57,27 @@ const QHash<QString, QString>& aliases() {
         {"degree", "deg"},    {"degrees", "deg"},    {"radian", "rad"},     {"radians", "rad"},
         {"gauss", "G"},       {"Gauss", "G"},        {"tesla", "T"},        {"microtesla", "uT"},
         {"-", "1"},           {"C", "degC"},         {"celsius", "degC"},   {"kmh", "km/h"},
-        {"kph", "km/h"},      {"m/sec", "m/s"},      {"Hertz", "Hz"},
+        {"kph", "km/h"},      {"m/sec", "m/s"},      {"Hertz", "Hz"},       {"lux", "lx"},
+        {"BPM", "bpm"},       {"beats/min", "bpm"},  {"1/min", "bpm"},      {"percent", "%"},
+        {"MPH", "mph"},       {"km/hr", "km/h"},     {"kmph", "km/h"},      {"hpa", "hPa"},
+        {"pa", "Pa"},         {"Lux", "lx"},         {"µs", "us"},     {"mins", "min"},
+        {"minute", "min"},    {"minutes", "min"},    {"nsec", "ns"},
     };
     return table;
 }
 
 }  // namespace
+
+QString knownUnitNames(const QString& sameQuantityAs) {
+    const auto& table = unitTable();
+    const auto ref = table.constFind(canonicalUnit(sameQuantityAs));
+    QStringList names;
+    for (auto it = table.cbegin(); it != table.cend(); ++it)
+        if (ref == table.cend() || qstrcmp(it->quantity, ref->quantity) == 0)
+            names << it.key();
+    names.sort(Qt::CaseInsensitive);
+    return names.join(QStringLiteral(", "));
+}
 
 void splitNameAndUnit(const QString& header, QString& name, QString& unit) {
     const QString cell = header.trimmed();
@@ -99,7 +120,7 @@ Expected<UnitConversion> conversionTo(const QString& unit, const QString& target
     const auto& table = unitTable();
     const auto f = table.constFind(from);
     if (f == table.cend())
-        return makeError(QStringLiteral("unknown unit '%1' (expected a unit convertible to '%2')").arg(unit, to));
+        return makeError(QStringLiteral("unknown unit '%1' (accepted for %2: %3)").arg(unit, to, knownUnitNames(to)));
     const auto t = table.constFind(to);
     if (t == table.cend())
         return makeError(QStringLiteral("unknown target unit '%1'").arg(to));

@@ -17,6 +17,8 @@ struct UnitConversion {
 void splitNameAndUnit(const QString& header, QString& name, QString& unit);
 // Canonical spelling of a unit ("m/s²" → "m/s^2", "°/s" → "deg/s", "µT" → "uT").
 QString canonicalUnit(const QString& unit);
+// The known units, sorted (only those of the same quantity as sameQuantityAs if it is a known unit).
+QString knownUnitNames(const QString& sameQuantityAs = {});
 // Conversion from unit to targetSi; error if they measure different quantities.
 Expected<UnitConversion> conversionTo(const QString& unit, const QString& targetSi);
 

@@ -136,7 +136,7 @@ TEST_F(ColumnMap, BadMappingsNameTheParameter) {
 
     o.timeColumn = "Time";
     o.timeUnit = "m";
-    expectError(importFile(file, o), "time unit: unit 'm' (length) cannot be converted to 's'");
+    expectError(importFile(file, o), "time column 'Time': unknown time format 'm' (accepted: s, ms");
 
     o.timeColumn.clear();  // no time column at all
     o.timeUnit.clear();

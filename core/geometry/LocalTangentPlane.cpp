@@ -1,10 +1,10 @@
-#include "plugins/inertial/LocalTangentPlane.h"
+#include "core/geometry/LocalTangentPlane.h"
 
 #include "core/math/Angles.h"
 
 #include <cmath>
 
-namespace athlos::inertial {
+namespace athlos {
 
 namespace {
 constexpr double kA = 6378137.0;                  // WGS84 semi-major axis (m)
@@ -46,4 +46,4 @@ Eigen::Vector3d LocalTangentPlane::toGeodetic(const Eigen::Vector3d& enu) const 
     return {lat / math::kDeg, lon / math::kDeg, h};
 }
 
-}  // namespace athlos::inertial
+}  // namespace athlos
