@@ -30,7 +30,8 @@ struct IsolatedRunParams {
 // `what` names the input for messages, e.g. "project 'p.athlos'".
 Status runIsolated(const QString& what, const std::function<Status()>& work, const IsolatedRunParams& params = {});
 
-// A timeout that grows with the size of the file to be read: base + 1 s per 20 MB.
+// A timeout that grows with the size of the file to be read: base + 1 s per 20 MB. The environment
+// variable ATHLOS_ISOLATION_TIMEOUT_S (seconds) replaces the base.
 std::chrono::milliseconds isolatedTimeoutFor(long long fileBytes,
                                              std::chrono::milliseconds base = std::chrono::seconds(20));
 
