@@ -221,7 +221,9 @@ void AnnotationLayer::onRelease(QMouseEvent* event)
 
 bool AnnotationLayer::eventFilter(QObject* watched, QEvent* event)
 {
-    if (watched == panel_ && event->type() == QEvent::KeyPress) {
+    // The type first: while the panel is being destroyed it still sends events, and converting the
+    // QPointer to a TimeSeriesPanel* then would be a bad downcast (UBSan vptr).
+    if (event->type() == QEvent::KeyPress && watched == panel_.data()) {
         auto* key = static_cast<QKeyEvent*>(event);
         if ((key->key() == Qt::Key_Delete || key->key() == Qt::Key_Backspace) && selected_ >= 0) {
             const Status removed = editor_->remove(recording_, selected_);
