@@ -2,6 +2,7 @@
 // reference (values and RMS in the legend) equals core's OrientationError metric.
 #include "GuiTestSupport.h"
 
+#include "core/math/Angles.h"
 #include "core/math/EulerAngles.h"
 #include "core/math/OrientationError.h"
 #include "ui/MainWindow.h"
@@ -19,7 +20,7 @@ using namespace athlos::ui;
 
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using math::kDeg;
 
 Stream quaternionStream(const QString& kind, const std::vector<math::Quat>& q, double rate = 100.0) {
     StreamInfo info;

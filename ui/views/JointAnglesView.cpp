@@ -1,5 +1,6 @@
 #include "ui/views/JointAnglesView.h"
 
+#include "core/math/Angles.h"
 #include "core/model/Project.h"
 #include "ui/PlotStyle.h"
 #include "ui/TimeController.h"
@@ -24,7 +25,6 @@ namespace athlos::ui {
 
 namespace {
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
 constexpr std::size_t kMaxPoints = 200000;  // per graph; thinned by a stride beyond
 const char* const kColumns[3] = {"flexion", "abduction", "rotation"};
 
@@ -53,7 +53,7 @@ Angles readAngles(const Stream& stream)
     for (int i = 0; i < 3; ++i) {
         const int c = stream.info().columnIndex(QLatin1String(kColumns[i]));
         out.deg[i].resize(d.rows());
-        for (std::size_t k = 0; k < d.rows(); ++k) out.deg[i][k] = d.at(k, c) * kDeg;
+        for (std::size_t k = 0; k < d.rows(); ++k) out.deg[i][k] = d.at(k, c) / math::kDeg;
     }
     return out;
 }

@@ -1,5 +1,6 @@
 #include "ui/views/OrientationAnglesView.h"
 
+#include "core/math/Angles.h"
 #include "core/math/EulerAngles.h"
 #include "core/model/Project.h"
 #include "ui/PlotStyle.h"
@@ -24,7 +25,6 @@ namespace athlos::ui {
 
 namespace {
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
 constexpr std::size_t kMaxPoints = 200000;  // per graph; thinned by a stride beyond
 
 struct Quats {
@@ -178,7 +178,7 @@ void OrientationAnglesView::refresh()
         QVector<double> t;
         std::array<QVector<double>, 3> angles;
         for (std::size_t k = 0; k < est.t.size(); k += stride) {
-            const math::Vec3 a = math::eulerFromQuaternion(est.q[k].normalized(), *sequence) * kDeg;
+            const math::Vec3 a = math::eulerFromQuaternion(est.q[k].normalized(), *sequence) / math::kDeg;
             // A wrap from +180° to −180° is a gap, not a vertical line across the plot.
             bool wrapped = false;
             for (int i = 0; i < 3 && !t.isEmpty(); ++i) wrapped |= std::abs(a[i] - angles[i].back()) > 180.0;
@@ -207,9 +207,9 @@ void OrientationAnglesView::refresh()
                 if (!ref[k].coeffs().allFinite() || !est.q[k].coeffs().allFinite()) continue;
                 const math::OrientationErrors e = math::orientationError(est.q[k], ref[k]);
                 te.append(est.t[k]);
-                err[0].append(e.total * kDeg);
-                err[1].append(e.heading * kDeg);
-                err[2].append(e.inclination * kDeg);
+                err[0].append(e.total / math::kDeg);
+                err[1].append(e.heading / math::kDeg);
+                err[2].append(e.inclination / math::kDeg);
             }
             addGraph(errorPlot_, 0, tr("total (RMS %1°)").arg(rms_.total, 0, 'f', 2), te, err[0]);
             addGraph(errorPlot_, 1, tr("heading (RMS %1°)").arg(rms_.heading, 0, 'f', 2), te, err[1]);
