@@ -239,7 +239,9 @@ Status applyImport(Project& project, ImportResult result, bool overwrite) {
         else
             project.putTable(item.path, std::move(std::get<Table>(item.item)));
     }
-    for (auto& [name, annotations] : result.annotations) {
+    for (auto& [name, imported] : result.annotations) {
+        // A plain reference: clang 14 cannot capture structured bindings in lambdas.
+        const Annotations& annotations = imported;
         if (annotations.empty())
             continue;
         Annotations& existing = project.ensureRecording(name).annotations;
