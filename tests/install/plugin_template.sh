@@ -72,13 +72,15 @@ export ATHLOS_PLUGIN_PATH="$WORK/plugin"
 # Row 11 (t = 0.10): acc_x 10 → 25, acc_y 1 → 2.5, acc_z -2 → -5.
 awk -F, 'NR==12 && !($2==25 && $3==2.5 && $4==-5) {print "row:", $0; exit 1}' "$WORK/scaled.csv" \
   || fail "example-scale did not scale by 2.5: $(sed -n 12p "$WORK/scaled.csv")"
-"$ATHLOS" info "$P" | grep -q "example-scale" || fail "provenance does not name example-scale"
+"$ATHLOS" info "$P" | grep "example-scale" >/dev/null || fail "provenance does not name example-scale"
 unset ATHLOS_PLUGIN_PATH
 
 if [ "$TEMP_PREFIX" = 1 ]; then
   step "cmake --install the template into the installed copy"
-  cmake --install "$WORK/plugin" >/dev/null || fail "install the template"
-  "$ATHLOS" processors 2>&1 | grep -q "^example-scale" || fail "installed template not found without ATHLOS_PLUGIN_PATH"
+  cmake --install "$WORK/plugin" >"$WORK/plugin-install.log" 2>&1 || fail "install the template: $(cat "$WORK/plugin-install.log")"
+  "$ATHLOS" processors >"$WORK/list2" 2>&1
+  grep -q "^example-scale" "$WORK/list2" \
+    || fail "installed template not found without ATHLOS_PLUGIN_PATH: $(cat "$WORK/plugin-install.log") $(grep -v "^ " "$WORK/list2" | tr '\n' ' ')"
 fi
 
 if [ "$FAILURES" -gt 0 ]; then echo "$FAILURES check(s) failed"; exit 1; fi
