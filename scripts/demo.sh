@@ -2,10 +2,19 @@
 # The embedded default: builds Athlos, makes a demo project from ../shared/data (a BROAD trial with
 # its optical reference and the gaitmap walk), runs the processors on it, and then opens the GUI
 # on it — or, without a display, prints a summary and writes screenshots.
+#
+# Against an installed copy (the .deb) instead of the build tree, nothing is built:
+#   ATHLOS_BIN=/usr/bin/athlos bash scripts/demo.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/setup.sh
-ATHLOS="${ATHLOS_BUILD_DIR:-build}/bin/athlos"
+if [ -n "${ATHLOS_BIN:-}" ]; then
+  ATHLOS="$ATHLOS_BIN"
+else
+  bash scripts/setup.sh
+  ATHLOS="${ATHLOS_BUILD_DIR:-build}/bin/athlos"
+fi
+# The pipelines (an installed copy also has them in <prefix>/share/athlos/demo).
+DEMO_DIR=resources/demo
 SHARED="${ATHLOS_SHARED_DIR:-$(cd .. && pwd)/shared}"
 OUT="${ATHLOS_DEMO_DIR:-out}"
 mkdir -p "$OUT"
@@ -14,9 +23,9 @@ P="$OUT/demo.athlos"
 "$ATHLOS" new "$P" --sport "lab" --force
 "$ATHLOS" import "$P" "$SHARED/data/broad/07_undisturbed_fast_rotation_B.hdf5" --as broad07 --format broad
 "$ATHLOS" import "$P" "$SHARED/data/gaitmap/imu_sample_ic_stride.csv" --as walk --format gaitmap
-"$ATHLOS" pipeline "$P" resources/demo/pipeline.json
+"$ATHLOS" pipeline "$P" "$DEMO_DIR/pipeline.json"
 # Each topic adds its own steps (team match, joint angles, gait events…) in pipeline-<topic>.json.
-for extra in resources/demo/pipeline-*.json; do
+for extra in "$DEMO_DIR"/pipeline-*.json; do
   [ -e "$extra" ] || continue
   "$ATHLOS" pipeline "$P" "$extra"
 done
