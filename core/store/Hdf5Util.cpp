@@ -246,10 +246,16 @@ void Handle::close(const QString& what) {
 }
 
 QString objectPath(hid_t object) {
+    // Callers build failure messages with this, and C++ leaves the order of argument evaluation
+    // open: `check(H5Dread(...), "cannot read " + objectPath(d))` may call H5Iget_name after the
+    // failed read (clang does), and every API call clears the error stack. Keep the stack intact so
+    // fail() still reports HDF5's reason (e.g. a checksum mismatch).
+    const hid_t pending = H5Eget_current_stack();
     const ssize_t size = H5Iget_name(object, nullptr, 0);
+    std::string name(std::size_t(std::max<ssize_t>(size, 0)) + 1, '\0');
+    if (size > 0) H5Iget_name(object, name.data(), name.size());
+    if (pending >= 0) H5Eset_current_stack(pending);
     if (size <= 0) return QStringLiteral("(unnamed object)");
-    std::string name(std::size_t(size) + 1, '\0');
-    H5Iget_name(object, name.data(), name.size());
     return QString::fromUtf8(name.c_str());
 }
 
