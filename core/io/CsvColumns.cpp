@@ -32,30 +32,30 @@ Status checkMapping(const ImportOptions& options, const QStringList& sources, co
             return makeError(QStringLiteral("%1:%2: column mapping: the file has no column '%3'; columns: %4")
                                  .arg(file).arg(line).arg(m.source, known));
         if (seen.contains(m.source))
-            return makeError(QStringLiteral("column mapping: column '%1' is mapped twice").arg(m.source));
+            return makeError(QStringLiteral("%1:%2: column mapping: column '%3' is mapped twice").arg(file).arg(line).arg(m.source));
         seen << m.source;
         if (!m.skip && !m.unit.trimmed().isEmpty() && siUnitOf(canonicalUnit(m.unit)).isEmpty())
-            return makeError(QStringLiteral("column mapping for '%1': unknown unit '%2' (accepted: %3)")
-                                 .arg(m.source, m.unit, knownUnitNames()));
+            return makeError(QStringLiteral("%1:%2: column mapping for '%3': unknown unit '%4' (accepted: %5)")
+                                 .arg(file).arg(line).arg(m.source, m.unit, knownUnitNames()));
     }
     if (!options.timeColumn.isEmpty()) {
         if (!sources.contains(options.timeColumn))
             return makeError(QStringLiteral("%1:%2: time column '%3' is not in the file; columns: %4")
                                  .arg(file).arg(line).arg(options.timeColumn, known));
         if (const ColumnMapping* m = findMapping(options, options.timeColumn); m && m->skip)
-            return makeError(QStringLiteral("time column '%1' is also marked to skip").arg(options.timeColumn));
+            return makeError(QStringLiteral("%1:%2: time column '%3' is also marked to skip").arg(file).arg(line).arg(options.timeColumn));
     }
     if (!options.labelColumn.isEmpty()) {
         if (!sources.contains(options.labelColumn))
             return makeError(QStringLiteral("%1:%2: label column '%3' is not in the file; columns: %4")
                                  .arg(file).arg(line).arg(options.labelColumn, known));
         if (const ColumnMapping* m = findMapping(options, options.labelColumn); m)
-            return makeError(QStringLiteral("label column '%1' is also mapped or skipped").arg(options.labelColumn));
+            return makeError(QStringLiteral("%1:%2: label column '%3' is also mapped or skipped").arg(file).arg(line).arg(options.labelColumn));
     }
     if (!options.timeUnit.isEmpty()) {
         const auto format = parseTimeFormat(options.timeUnit);
         if (!format)
-            return makeError(QStringLiteral("time column '%1': %2").arg(options.timeColumn, format.message()));
+            return makeError(QStringLiteral("%1:%2: time column '%3': %4").arg(file).arg(line).arg(options.timeColumn, format.message()));
     }
     return {};
 }
