@@ -352,18 +352,35 @@ void writeString(hid_t object, const char* name, const QString& value) {
     writeAttribute(object, name, type, type, scalarSpace(), buffer.data());
 }
 
-void writeStrings(hid_t object, const char* name, const QStringList& values) {
-    std::vector<QByteArray> bytes;
+namespace {
+
+// Strings as one fixed-length HDF5 string array: every element padded with NULs to the longest
+// (UTF-8 bytes, at least 1).
+struct FixedStrings {
+    std::vector<char> buffer;
     std::size_t width = 1;
+};
+
+FixedStrings packFixedStrings(const QStringList& values) {
+    std::vector<QByteArray> bytes;
+    FixedStrings packed;
     for (const auto& v : values) {
         bytes.push_back(v.toUtf8());
-        width = std::max(width, std::size_t(bytes.back().size()));
+        packed.width = std::max(packed.width, std::size_t(bytes.back().size()));
     }
-    std::vector<char> buffer(bytes.size() * width, '\0');
-    for (std::size_t i = 0; i < bytes.size(); ++i) std::copy(bytes[i].begin(), bytes[i].end(), buffer.begin() + i * width);
-    const hsize_t size = bytes.size();
-    Handle type = fixedStringType(width);
-    writeAttribute(object, name, type, type, simpleSpace(1, &size), buffer.data());
+    packed.buffer.assign(bytes.size() * packed.width, '\0');
+    for (std::size_t i = 0; i < bytes.size(); ++i)
+        std::copy(bytes[i].begin(), bytes[i].end(), packed.buffer.begin() + std::ptrdiff_t(i * packed.width));
+    return packed;
+}
+
+}  // namespace
+
+void writeStrings(hid_t object, const char* name, const QStringList& values) {
+    const FixedStrings packed = packFixedStrings(values);
+    const hsize_t size = hsize_t(values.size());
+    Handle type = fixedStringType(packed.width);
+    writeAttribute(object, name, type, type, simpleSpace(1, &size), packed.buffer.data());
 }
 
 void writeInt(hid_t object, const char* name, long long value) {
@@ -438,19 +455,12 @@ void writeNumberColumn(hid_t parent, const QString& name, const std::vector<doub
 }
 
 void writeTextColumn(hid_t parent, const QString& name, const QStringList& values) {
-    std::vector<QByteArray> bytes;
-    std::size_t width = 1;
-    for (const auto& v : values) {
-        bytes.push_back(v.toUtf8());
-        width = std::max(width, std::size_t(bytes.back().size()));
-    }
-    std::vector<char> buffer(bytes.size() * width, '\0');
-    for (std::size_t i = 0; i < bytes.size(); ++i) std::copy(bytes[i].begin(), bytes[i].end(), buffer.begin() + i * width);
-    const hsize_t size = bytes.size();
-    Handle type = fixedStringType(width);
+    const FixedStrings packed = packFixedStrings(values);
+    const hsize_t size = hsize_t(values.size());
+    Handle type = fixedStringType(packed.width);
     Handle dataset = createColumnDataset(parent, name, type, size);
     if (size > 0)
-        check(H5Dwrite(dataset, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer.data()),
+        check(H5Dwrite(dataset, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, packed.buffer.data()),
               QStringLiteral("cannot write ") + childPath(parent, name));
 }
 
