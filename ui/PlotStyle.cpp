@@ -72,18 +72,25 @@ void PlotStyle::applyPalette(QCustomPlot* plot, const QPalette& palette)
     const QColor text = palette.color(QPalette::Text);
     const bool dark = base.lightnessF() < 0.5;
     plot->setBackground(base);
-    QColor legend = base;
-    legend.setAlpha(210);
-    plot->legend->setBrush(legend);
-    plot->legend->setTextColor(text);
-    plot->legend->setBorderPen(QPen(dark ? base.lighter(250) : QColor(180, 180, 180)));
-    for (QCPAxis* axis : plot->axisRect()->axes()) {
-        axis->setBasePen(QPen(text, 0));
-        axis->setTickPen(QPen(text, 0));
-        axis->setSubTickPen(QPen(text, 0));
-        axis->setTickLabelColor(text);
-        axis->setLabelColor(text);
-        axis->grid()->setPen(QPen(dark ? base.lighter(220) : QColor(220, 220, 220), 0, Qt::DotLine));
+    QColor legendBrush = base;
+    legendBrush.setAlpha(210);
+    // Every axis rect (stacked panels have several), each with its legend if it has one.
+    for (QCPAxisRect* rect : plot->axisRects()) {
+        for (int i = 0; i < rect->insetLayout()->elementCount(); ++i) {
+            auto* legend = qobject_cast<QCPLegend*>(rect->insetLayout()->elementAt(i));
+            if (!legend) continue;
+            legend->setBrush(legendBrush);
+            legend->setTextColor(text);
+            legend->setBorderPen(QPen(dark ? base.lighter(250) : QColor(180, 180, 180)));
+        }
+        for (QCPAxis* axis : rect->axes()) {
+            axis->setBasePen(QPen(text, 0));
+            axis->setTickPen(QPen(text, 0));
+            axis->setSubTickPen(QPen(text, 0));
+            axis->setTickLabelColor(text);
+            axis->setLabelColor(text);
+            axis->grid()->setPen(QPen(dark ? base.lighter(220) : QColor(220, 220, 220), 0, Qt::DotLine));
+        }
     }
 }
 

@@ -86,6 +86,9 @@ bool ProjectSession::openProject(const QString& path)
     }
     const QStringList notes = (*opened)->notes();
     window_.setProject(std::shared_ptr<Project>(std::move(opened).value()));
+    // The data first: the first stream is selected and plotted, so an opened project never shows
+    // an empty plot (a panel restored from the saved layout keeps its own stream).
+    if (const QString first = window_.firstStream(); !first.isEmpty()) window_.selectItem(first);
     RecentProjects::add(path);
     window_.statusBar()->showMessage(tr("Opened %1").arg(QDir::toNativeSeparators(path)), 5000);
     // Information, not an error: the project is as it was last saved.

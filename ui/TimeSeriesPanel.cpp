@@ -1,6 +1,7 @@
 #include "ui/TimeSeriesPanel.h"
 
 #include "core/model/Stream.h"
+#include "ui/PlotLanes.h"
 #include "ui/PlotStyle.h"
 #include "ui/RangeStatistics.h"
 #include "ui/TimeController.h"
@@ -81,6 +82,9 @@ TimeSeriesPanel::TimeSeriesPanel(QWidget* parent) : QWidget(parent)
     cursorLine_->setSelectable(false);
     cursorLine_->setVisible(false);
     cursorLine_->setLayer(QStringLiteral("overlay"));
+    marginGroup_ = new QCPMarginGroup(plot_);
+    plot_->axisRect()->setMarginGroup(QCP::msLeft | QCP::msRight, marginGroup_);
+    lanes_.push_back({plot_->axisRect(), plot_->legend, cursorLine_});
 
     readout_ = new QLabel(this);
     readout_->setTextFormat(Qt::RichText);
@@ -149,6 +153,8 @@ void TimeSeriesPanel::clear()
     visible_.clear();
     requestedColumns_.clear();
     plot_->clearGraphs();
+    removeExtraLanes();
+    graphLane_.clear();
     plot_->legend->setVisible(false);
     plot_->yAxis->setLabel({});
     readout_->clear();
@@ -219,8 +225,7 @@ void TimeSeriesPanel::setAutoFitY(bool on)
     autoFitY_ = on;
     fitYBox_->setChecked(on);
     // With auto-fit the y range belongs to the panel; without it the user may drag it too.
-    plot_->axisRect()->setRangeDrag(on ? Qt::Horizontal : Qt::Horizontal | Qt::Vertical);
-    plot_->axisRect()->setRangeZoom(on ? Qt::Horizontal : Qt::Horizontal | Qt::Vertical);
+    applyRangeInteractions();
     if (on) {
         redecimate();
         plot_->replot(QCustomPlot::rpQueuedReplot);
@@ -252,22 +257,94 @@ void TimeSeriesPanel::rebuildColumnMenu()
 void TimeSeriesPanel::rebuildGraphs()
 {
     plot_->clearGraphs();
+    removeExtraLanes();
+    graphLane_.clear();
     if (!loaded_) return;
     const Columns& cols = stream_->info().columns;
-    QStringList units;
-    for (int c : visible_) {
+    std::vector<PlotLanes::Column> shown;
+    for (int c : visible_) shown.push_back({cols[std::size_t(c)].name, cols[std::size_t(c)].unit});
+    const PlotLanes::Assignment lanes = PlotLanes::assign(shown);
+    for (int l = 1; l < lanes.count(); ++l) addLane(lanes.unit[std::size_t(l)]);
+    for (std::size_t g = 0; g < visible_.size(); ++g) {
+        const int c = visible_[g];
         const Column& column = cols[std::size_t(c)];
-        QCPGraph* graph = plot_->addGraph();
+        const Lane& lane = lanes_[std::size_t(lanes.laneOf[g])];
+        QCPGraph* graph = plot_->addGraph(lane.rect->axis(QCPAxis::atBottom), lane.rect->axis(QCPAxis::atLeft));
         graph->setName(PlotStyle::columnLabel(column.name, column.unit));
         graph->setPen(QPen(PlotStyle::seriesColor(c), 1.2));
         // We hand over at most ~2 points per pixel already; QCustomPlot's own sampling would
         // only cost time.
         graph->setAdaptiveSampling(false);
-        if (!units.contains(column.unit)) units << column.unit;
+        if (lane.legend != plot_->legend) {
+            graph->removeFromLegend(plot_->legend);
+            graph->addToLegend(lane.legend);
+        }
+        graphLane_.push_back(lanes.laneOf[g]);
     }
     plot_->legend->setVisible(!visible_.empty());
-    // One shared unit labels the axis; mixed units are in the legend only.
-    plot_->yAxis->setLabel(units.size() == 1 ? PlotStyle::unitSuffix(units.front()).trimmed() : QString());
+    // A lane's one unit labels its axis; mixed units are in the legend only.
+    plot_->yAxis->setLabel(lanes.count() > 0 ? PlotStyle::unitSuffix(lanes.unit.front()).trimmed() : QString());
+    // The time axis is labelled once, under the bottom lane.
+    for (std::size_t l = 0; l < lanes_.size(); ++l) {
+        QCPAxis* x = lanes_[l].rect->axis(QCPAxis::atBottom);
+        const bool bottom = l + 1 == lanes_.size();
+        x->setTickLabels(bottom);
+        x->setLabel(bottom ? tr("t [s]") : QString());
+    }
+    PlotStyle::applyPalette(plot_, plot_->palette());
+}
+
+void TimeSeriesPanel::addLane(const QString& unit)
+{
+    auto* rect = new QCPAxisRect(plot_);
+    plot_->plotLayout()->addElement(int(lanes_.size()), 0, rect);
+    rect->setMarginGroup(QCP::msLeft | QCP::msRight, marginGroup_);
+    for (QCPAxis* axis : rect->axes()) axis->grid()->setSubGridVisible(false);
+    rect->axis(QCPAxis::atLeft)->setLabel(PlotStyle::unitSuffix(unit).trimmed());
+    QCPAxis* x = rect->axis(QCPAxis::atBottom);
+    x->setRange(plot_->xAxis->range());
+    // Dragging or zooming any lane moves the main time axis, which the other lanes follow.
+    connect(x, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this](const QCPRange& range) {
+        if (!syncingX_) plot_->xAxis->setRange(range);
+    });
+    auto* legend = new QCPLegend;
+    rect->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
+    legend->setLayer(QStringLiteral("legend"));
+    legend->setFont(plot_->legend->font());
+    auto* cursor = new QCPItemStraightLine(plot_);
+    cursor->setPen(cursorLine_->pen());
+    cursor->setSelectable(false);
+    cursor->setLayer(QStringLiteral("overlay"));
+    cursor->setClipAxisRect(rect);
+    for (QCPItemPosition* p : {cursor->point1, cursor->point2}) p->setAxes(x, rect->axis(QCPAxis::atLeft));
+    cursor->point1->setCoords(cursorLine_->point1->coords());
+    cursor->point2->setCoords(cursorLine_->point2->coords());
+    cursor->setVisible(cursorLine_->visible());
+    lanes_.push_back({rect, legend, cursor});
+    applyRangeInteractions();
+}
+
+void TimeSeriesPanel::removeExtraLanes()
+{
+    while (lanes_.size() > 1) {
+        const Lane lane = lanes_.back();
+        lanes_.pop_back();
+        plot_->removeItem(lane.cursor);
+        plot_->plotLayout()->remove(lane.rect);  // deletes the rect, its axes and its legend
+    }
+    plot_->plotLayout()->simplify();
+    plot_->xAxis->setTickLabels(true);
+    plot_->xAxis->setLabel(tr("t [s]"));
+}
+
+void TimeSeriesPanel::applyRangeInteractions()
+{
+    // With auto-fit the y range belongs to the panel; without it the user may drag it too.
+    const Qt::Orientations orientations = autoFitY_ ? Qt::Horizontal : Qt::Horizontal | Qt::Vertical;
+    for (const Lane& lane : lanes_) {
+        lane.rect->setRangeDrag(orientations);
+        lane.rect->setRangeZoom(orientations);
+    }
 }
 
 void TimeSeriesPanel::updateHeader()
@@ -299,9 +376,12 @@ void TimeSeriesPanel::showFullRange()
     plot_->xAxis->setRange(t0, t1);
     redecimate();  // also when the range did not change (no rangeChanged then)
     if (!autoFitY_) {
-        Extremes all;
-        for (int c : visible_) all = Extremes::combine(all, loaded_->pyramids[std::size_t(c)].rangeExtremes(0, data.rows()));
-        fitY(all);
+        std::vector<Extremes> all(lanes_.size());
+        for (std::size_t g = 0; g < visible_.size() && g < graphLane_.size(); ++g) {
+            Extremes& lane = all[std::size_t(graphLane_[g])];
+            lane = Extremes::combine(lane, loaded_->pyramids[std::size_t(visible_[g])].rangeExtremes(0, data.rows()));
+        }
+        fitAllY(all);
     }
     plot_->replot(QCustomPlot::rpQueuedReplot);
 }
@@ -320,7 +400,7 @@ void TimeSeriesPanel::redecimate()
     const QCPRange range = plot_->xAxis->range();
     const int pixels = plotWidthPixels();
     decimatedWidth_ = pixels;
-    Extremes visible;
+    std::vector<Extremes> visible(lanes_.size());
     for (int g = 0; g < plot_->graphCount() && g < int(visible_.size()); ++g) {
         const MinMaxPyramid& pyramid = loaded_->pyramids[std::size_t(visible_[std::size_t(g)])];
         const DecimatedSeries series = pyramid.decimate(range.lower, range.upper, pixels);
@@ -329,24 +409,34 @@ void TimeSeriesPanel::redecimate()
         const bool markers = series.raw && series.visibleSamples > 0
                              && pixels / double(series.visibleSamples) >= kMarkerSpacingPixels;
         graph->setScatterStyle(markers ? QCPScatterStyle(QCPScatterStyle::ssDisc, 4) : QCPScatterStyle());
-        visible = Extremes::combine(visible, series.visible);
+        Extremes& lane = visible[std::size_t(graphLane_[std::size_t(g)])];
+        lane = Extremes::combine(lane, series.visible);
     }
-    if (autoFitY_) fitY(visible);
+    if (autoFitY_) fitAllY(visible);
     decimating_ = false;
 }
 
-void TimeSeriesPanel::fitY(const Extremes& extremes)
+void TimeSeriesPanel::fitAllY(const std::vector<Extremes>& perLane)
+{
+    for (std::size_t l = 0; l < perLane.size() && l < lanes_.size(); ++l)
+        fitY(lanes_[l].rect->axis(QCPAxis::atLeft), perLane[l]);
+}
+
+void TimeSeriesPanel::fitY(QCPAxis* axis, const Extremes& extremes)
 {
     if (extremes.isEmpty() || !std::isfinite(extremes.min) || !std::isfinite(extremes.max)) return;
     double lo = extremes.min, hi = extremes.max;
     const double span = hi - lo;
     // A constant signal still gets a visible band around it.
     const double pad = span > 0 ? 0.05 * span : std::max(0.05 * std::abs(hi), 0.5);
-    plot_->yAxis->setRange(lo - pad, hi + pad);
+    axis->setRange(lo - pad, hi + pad);
 }
 
 void TimeSeriesPanel::onXRangeChanged(const QCPRange& range)
 {
+    syncingX_ = true;
+    for (std::size_t l = 1; l < lanes_.size(); ++l) lanes_[l].rect->axis(QCPAxis::atBottom)->setRange(range);
+    syncingX_ = false;
     redecimate();
     if (controller_ && !followingController_) controller_->setVisibleRange(range.lower, range.upper);
     if (controller_) readoutTimer_->start();
@@ -378,7 +468,7 @@ void TimeSeriesPanel::setTimeController(TimeController* controller)
 {
     if (controller_) disconnect(controller_, nullptr, this, nullptr);
     controller_ = controller;
-    cursorLine_->setVisible(controller_ != nullptr);
+    for (const Lane& lane : lanes_) lane.cursor->setVisible(controller_ != nullptr);
     readout_->setVisible(controller_ != nullptr && loaded_);
     if (!controller_) return;
     connect(controller_, &TimeController::cursorChanged, this, &TimeSeriesPanel::onCursorChanged);
@@ -389,8 +479,10 @@ void TimeSeriesPanel::setTimeController(TimeController* controller)
 
 void TimeSeriesPanel::onCursorChanged(double t)
 {
-    cursorLine_->point1->setCoords(t, 0);
-    cursorLine_->point2->setCoords(t, 1);
+    for (const Lane& lane : lanes_) {
+        lane.cursor->point1->setCoords(t, 0);
+        lane.cursor->point2->setCoords(t, 1);
+    }
     // Only the cursor line changes: the overlay layer repaints without redrawing the graphs.
     // Its paint buffer exists only after the first full replot.
     if (replotted_) plot_->layer(QStringLiteral("overlay"))->replot();
@@ -412,7 +504,9 @@ void TimeSeriesPanel::onPlotClicked(QMouseEvent* event)
     // A click (not the end of a drag) puts the cursor there.
     if (!controller_ || event->button() != Qt::LeftButton || event->modifiers() != Qt::NoModifier) return;
     if ((event->pos() - pressPos_).manhattanLength() > 3) return;
-    if (!plot_->axisRect()->rect().contains(event->pos())) return;
+    const bool inLane = std::any_of(lanes_.begin(), lanes_.end(),
+                                    [&](const Lane& lane) { return lane.rect->rect().contains(event->pos()); });
+    if (!inLane) return;
     controller_->setCursor(plot_->xAxis->pixelToCoord(event->pos().x()));
 }
 

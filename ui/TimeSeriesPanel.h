@@ -1,5 +1,6 @@
 #pragma once
-// Plots columns of one stream against time with QCustomPlot. Samples load and their decimation
+// Plots columns of one stream against time with QCustomPlot, in stacked lanes (one axis rect per
+// channel family and unit, PlotLanes.h) that share the time axis. Samples load and their decimation
 // pyramids build on a worker thread; on every x-range change the plot is fed ~2 points per pixel
 // column (min and max, in time order), or the raw samples once few enough are visible. That keeps
 // dragging and zooming fluid with 10 million samples per column.
@@ -12,7 +13,11 @@
 #include <vector>
 
 class QCheckBox;
+class QCPAxis;
+class QCPAxisRect;
 class QCPItemStraightLine;
+class QCPLegend;
+class QCPMarginGroup;
 class QCPRange;
 class QCustomPlot;
 class QLabel;
@@ -70,6 +75,11 @@ public:
     const StreamData* data() const;
 
     QCustomPlot* plot() const { return plot_; }
+    // The stacked lanes, top to bottom; lane 0 is the plot's main axis rect (plot()->axisRect()).
+    int laneCount() const { return int(lanes_.size()); }
+    QCPAxisRect* laneRect(int lane) const { return lanes_.at(std::size_t(lane)).rect; }
+    // The lane of graph g (plot()->graph(g)).
+    int laneOfGraph(int graph) const { return graphLane_.at(std::size_t(graph)); }
     // Points currently handed to QCustomPlot, over all graphs.
     long long plottedPointCount() const;
     // Pixel columns the last decimation was computed for.
@@ -100,7 +110,16 @@ private:
     void rebuildGraphs();
     void rebuildColumnMenu();
     void updateHeader();
-    void fitY(const Extremes& extremes);
+    struct Lane {
+        QCPAxisRect* rect = nullptr;
+        QCPLegend* legend = nullptr;
+        QCPItemStraightLine* cursor = nullptr;
+    };
+    void fitY(QCPAxis* axis, const Extremes& extremes);
+    void fitAllY(const std::vector<Extremes>& perLane);
+    void addLane(const QString& unit);
+    void removeExtraLanes();
+    void applyRangeInteractions();
     void onXRangeChanged(const QCPRange& range);
     void onAfterLayout();
     int plotWidthPixels() const;
@@ -126,6 +145,10 @@ private:
     QString error_;
     QStringList requestedColumns_;
     std::vector<int> visible_;  // stream column indices with a graph, in graph order
+    std::vector<Lane> lanes_;  // lanes_[0] is the main axis rect, its legend and cursor line
+    std::vector<int> graphLane_;  // per graph
+    QCPMarginGroup* marginGroup_ = nullptr;
+    bool syncingX_ = false;  // copying the main x range into the other lanes
     std::shared_ptr<Loaded> loaded_;
     PanelLoader loader_;
     bool autoFitY_ = true;

@@ -83,6 +83,11 @@ void GuiMainWindowTest::opensProjectAndPlotsSelection()
     QCOMPARE(model->rowCount(), 2);
     QCOMPARE(model->rowCount(model->indexOf(QStringLiteral("run1"))), 3);
 
+    // Opening shows the data at once: the first stream is selected and plotted, in stacked lanes.
+    window.waitForPlots();
+    QCOMPARE(window.timeSeriesPanel()->title(), window.firstStream());
+    QVERIFY(window.timeSeriesPanel()->plot()->graphCount() > 0);
+
     // Selecting a stream plots it (samples load lazily from the file on a worker).
     QVERIFY(window.selectItem(QStringLiteral("run1/imu")));
     window.waitForPlots();

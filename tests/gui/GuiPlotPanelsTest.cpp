@@ -2,6 +2,7 @@
 // samples when zoomed in, peaks kept, y auto-fit, load errors; the trajectory with equal scaling
 // and start/end markers.
 #include "GuiTestSupport.h"
+#include "ui/PlotLanes.h"
 #include "ui/TimeSeriesPanel.h"
 #include "ui/TrajectoryPanel.h"
 
@@ -41,6 +42,8 @@ class GuiPlotPanelsTest : public QObject {
 
 private slots:
     void plotsEveryColumnWithUnits();
+    void groupsColumnsIntoLanes();
+    void stacksLanesSharingTheTimeAxis();
     void decimatesLargeStreamsWithoutLosingPeaks();
     void choosesColumns();
     void reportsLoadErrors();
@@ -63,7 +66,10 @@ void GuiPlotPanelsTest::plotsEveryColumnWithUnits()
     QCOMPARE(plot->graphCount(), 6);
     QCOMPARE(plot->graph(0)->name(), QStringLiteral("acc_x [m/s^2]"));
     QCOMPARE(plot->graph(5)->name(), QStringLiteral("gyr_z [rad/s]"));
-    QCOMPARE(plot->xAxis->label(), QStringLiteral("t [s]"));
+    // acc and gyr in two lanes: the time axis is labelled once, under the bottom lane.
+    QCOMPARE(panel.laneCount(), 2);
+    QCOMPARE(panel.laneRect(1)->axis(QCPAxis::atBottom)->label(), QStringLiteral("t [s]"));
+    QVERIFY(plot->xAxis->label().isEmpty());
     QVERIFY(plot->legend->visible());
     QCOMPARE(plot->xAxis->range().lower, 0.0);
     QCOMPARE(plot->xAxis->range().upper, 19.99);
@@ -76,6 +82,78 @@ void GuiPlotPanelsTest::plotsEveryColumnWithUnits()
         QVERIFY(plot->graph(g)->dataCount() <= 2 * width + 2);
     }
     QCOMPARE(panel.visibleColumns().size(), 6);
+}
+
+void GuiPlotPanelsTest::groupsColumnsIntoLanes()
+{
+    QCOMPARE(PlotLanes::family(QStringLiteral("acc_x")), QStringLiteral("acc"));
+    QCOMPARE(PlotLanes::family(QStringLiteral("left_gyr_z")), QStringLiteral("left_gyr"));
+    QCOMPARE(PlotLanes::family(QStringLiteral("Q.W")), QStringLiteral("q"));
+    QCOMPARE(PlotLanes::family(QStringLiteral("pos_e")), QStringLiteral("pos"));
+    QCOMPARE(PlotLanes::family(QStringLiteral("x")), QString());
+    QCOMPARE(PlotLanes::family(QStringLiteral("speed")), QString());
+    QCOMPARE(PlotLanes::family(QStringLiteral("max")), QString());
+
+    // Family and unit: acc | gyr | x, y [m] | lat, lon [deg] | hdop.
+    const auto gnssImu = PlotLanes::assign({{"acc_x", "m/s^2"}, {"acc_y", "m/s^2"}, {"gyr_x", "rad/s"}, {"x", "m"},
+                                            {"y", "m"}, {"lat", "deg"}, {"lon", "deg"}, {"hdop", "1"}});
+    QCOMPARE(gnssImu.laneOf, (std::vector<int>{0, 0, 1, 2, 2, 3, 3, 4}));
+    QCOMPARE(gnssImu.unit, (std::vector<QString>{"m/s^2", "rad/s", "m", "deg", "1"}));
+    // The same unit in another family is another lane (acc in g beside acc in m/s^2 too).
+    const auto twoFeet = PlotLanes::assign({{"left_acc_x", "m/s^2"}, {"right_acc_x", "m/s^2"}, {"left_acc_y", "m/s^2"}});
+    QCOMPARE(twoFeet.laneOf, (std::vector<int>{0, 1, 0}));
+    // More families than lanes: grouped by unit alone.
+    std::vector<PlotLanes::Column> many;
+    for (int i = 0; i < 8; ++i) many.push_back({QStringLiteral("s%1_x").arg(i), i % 2 ? "m" : "m/s"});
+    const auto byUnit = PlotLanes::assign(many);
+    QCOMPARE(byUnit.count(), 2);
+    QCOMPARE(byUnit.laneOf[2], 0);
+    QCOMPARE(byUnit.laneOf[3], 1);
+    // More units than lanes: the last lane takes the rest and shows no single unit.
+    std::vector<PlotLanes::Column> units;
+    for (const char* u : {"m", "s", "Hz", "K", "Pa", "V", "A", "lx"}) units.push_back({QStringLiteral("v"), u});
+    const auto capped = PlotLanes::assign(units);
+    QCOMPARE(capped.count(), PlotLanes::kMaxLanes);
+    QCOMPARE(capped.laneOf.back(), PlotLanes::kMaxLanes - 1);
+    QVERIFY(capped.unit.back().isEmpty());
+    QCOMPARE(capped.unit.front(), QStringLiteral("m"));
+}
+
+void GuiPlotPanelsTest::stacksLanesSharingTheTimeAxis()
+{
+    TimeSeriesPanel panel;
+    panel.resize(1000, 700);
+    panel.show();
+    QSignalSpy loaded(&panel, &TimeSeriesPanel::loaded);
+    panel.setStream(shared(testing::makeImuStream()), QStringLiteral("run1/imu"));
+    QVERIFY(loaded.wait(10000));
+    QCustomPlot* plot = panel.plot();
+    QCOMPARE(panel.laneCount(), 2);
+    QCOMPARE(panel.laneRect(0), plot->axisRect());
+    for (int g = 0; g < 3; ++g) QCOMPARE(panel.laneOfGraph(g), 0);
+    for (int g = 3; g < 6; ++g) QCOMPARE(panel.laneOfGraph(g), 1);
+    QCOMPARE(plot->graph(4)->valueAxis(), panel.laneRect(1)->axis(QCPAxis::atLeft));
+    QCOMPARE(plot->yAxis->label(), QStringLiteral("[m/s^2]"));
+    QCOMPARE(panel.laneRect(1)->axis(QCPAxis::atLeft)->label(), QStringLiteral("[rad/s]"));
+    // Each lane's y axis fits its own graphs: every plotted value of a lane lies inside its range.
+    for (int g = 0; g < plot->graphCount(); ++g) {
+        const QCPRange y = plot->graph(g)->valueAxis()->range();
+        for (auto it = plot->graph(g)->data()->constBegin(); it != plot->graph(g)->data()->constEnd(); ++it)
+            QVERIFY2(y.contains(it->value), qPrintable(plot->graph(g)->name()));
+    }
+    QVERIFY(plot->yAxis->range() != panel.laneRect(1)->axis(QCPAxis::atLeft)->range());
+    // One time axis: zooming the lower lane moves the upper one and re-decimates both.
+    panel.laneRect(1)->axis(QCPAxis::atBottom)->setRange(2.0, 4.0);
+    QCOMPARE(plot->xAxis->range().lower, 2.0);
+    QCOMPARE(plot->xAxis->range().upper, 4.0);
+    QVERIFY(plot->graph(0)->data()->constBegin()->key >= 1.9);
+    plot->xAxis->setRange(5.0, 6.0);
+    QCOMPARE(panel.laneRect(1)->axis(QCPAxis::atBottom)->range().lower, 5.0);
+    // A single family (one column chosen): one lane again, the time axis labelled on it.
+    panel.setVisibleColumns({QStringLiteral("gyr_x")});
+    QCOMPARE(panel.laneCount(), 1);
+    QCOMPARE(plot->xAxis->label(), QStringLiteral("t [s]"));
+    QCOMPARE(plot->axisRectCount(), 1);
 }
 
 void GuiPlotPanelsTest::decimatesLargeStreamsWithoutLosingPeaks()
