@@ -129,12 +129,9 @@ int cmdImport(const QStringList& args) {
     options.labelColumn = p.parser().value(QStringLiteral("labels")).trimmed();
     if (p.parser().isSet(QStringLiteral("label-names"))) {
         if (options.labelColumn.isEmpty()) return fail(QStringLiteral("--label-names needs --labels COL"), Usage);
-        for (const QString& pair : p.parser().value(QStringLiteral("label-names")).split(QLatin1Char(','), Qt::SkipEmptyParts)) {
-            const qsizetype eq = pair.indexOf(QLatin1Char('='));
-            if (eq <= 0 || pair.mid(eq + 1).trimmed().isEmpty())
-                return fail(QStringLiteral("--label-names: '%1' is not VALUE=NAME").arg(pair), Usage);
-            options.labelNames[pair.left(eq).trimmed()] = pair.mid(eq + 1).trimmed();
-        }
+        auto names = parseLabelNames(p.parser().value(QStringLiteral("label-names")));
+        if (!names) return fail(QStringLiteral("--") + QString(names.message()).replace(QStringLiteral("label names"), QStringLiteral("label-names")), Usage);
+        options.labelNames = std::move(*names);
     }
     if (const QString athlete = p.parser().value(QStringLiteral("athlete")).trimmed(); !athlete.isEmpty())
         options.metadata.insert(QStringLiteral("athlete"), athlete);

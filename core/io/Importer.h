@@ -39,9 +39,9 @@ struct ImportOptions {
     QString timeColumn;                      // csv: source column holding time ("" = the column 't')
     QString timeUnit;                        // csv: unit or time format of that column ("" = from its header,
                                              // else s); see core/io/TimeFormats.h (ms, unix_ns, iso, hh:mm:ss, excel…)
-    bool dropUnmapped = false;
+    bool dropUnmapped = false;               // csv: leave out columns neither mapped nor known to the kind
     QString labelColumn;                     // csv: per-sample labels → annotations (runs of equal labels)
-    std::map<QString, QString> labelNames;   // csv: label value → name ("0" → "rest"); numbers match numerically               // csv: leave out columns neither mapped nor known to the kind
+    std::map<QString, QString> labelNames;   // csv: label value → name ("0" → "rest"); numbers match numerically
     std::optional<GeodeticOrigin> origin;    // the project's geodetic origin, if it has none yet (Geodesy.h)
     QString date;                            // YYYY-MM-DD: the date of clock times (hh:mm:ss) without one
     QString start;                           // ISO 8601: the UTC instant of t = 0 for relative times
@@ -93,5 +93,9 @@ Expected<ImportResult> importFile(const QString& file, const ImportOptions& opti
 // All-or-nothing: checks every name before inserting any. recordingMetadata is merged into the
 // recordings' metadata (created if needed).
 Status applyImport(Project& project, ImportResult result, bool overwrite);
+
+// "0=rest,1=run" (the --label-names option, the import wizard's field) → value → name.
+// The error names the pair that is not VALUE=NAME.
+Expected<std::map<QString, QString>> parseLabelNames(const QString& text);
 
 }  // namespace athlos

@@ -181,6 +181,17 @@ Expected<ImportResult> importFile(const QString& file, const ImportOptions& opti
     return result;
 }
 
+Expected<std::map<QString, QString>> parseLabelNames(const QString& text) {
+    std::map<QString, QString> names;
+    for (const QString& pair : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        const qsizetype eq = pair.indexOf(QLatin1Char('='));
+        if (eq <= 0 || pair.left(eq).trimmed().isEmpty() || pair.mid(eq + 1).trimmed().isEmpty())
+            return makeError(QStringLiteral("label names: '%1' is not VALUE=NAME (e.g. 0=rest,1=run)").arg(pair.trimmed()));
+        names[pair.left(eq).trimmed()] = pair.mid(eq + 1).trimmed();
+    }
+    return names;
+}
+
 Status applyImport(Project& project, ImportResult result, bool overwrite) {
     QSet<QString> seen;
     for (const ImportedItem& item : result.items) {

@@ -16,6 +16,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFile>
+#include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QTableWidget>
@@ -185,6 +186,65 @@ private slots:
         QCOMPARE(project_->recording(QStringLiteral("anna"))->metadata.value("athlete").toString(), QStringLiteral("Anna Berg"));
         QCOMPARE(project_->recording(QStringLiteral("ben-run"))->metadata.value("athlete").toString(), QStringLiteral("ben"));
         QCOMPARE((**project_->stream(QStringLiteral("ben-run/imu"))->data()).at(1, 0), 4.0);
+    }
+
+    // Clock times with the date given, a text label column into annotations, a roster naming the
+    // athlete: the wizard offers what `athlos import` does (--time-column, --date, --labels,
+    // --label-names, --roster).
+    void clockTimesLabelsAndRoster()
+    {
+        QByteArray text = "Time,acc_x,acc_y,acc_z,label\n";
+        for (int i = 0; i < 6; ++i)
+            text += "10:00:00." + QByteArray::number(10 * i).rightJustified(3, '0') + ",0,0,9.81," + (i < 4 ? "0" : "1") + "\n";
+        const QString file = write(QStringLiteral("g/walk.csv"), text);
+        const QString roster = write(QStringLiteral("g/roster.csv"), QByteArray("file,athlete,number\nwalk,Anna Berg,7\nghost.csv,X,1\n"));
+        RecordingWorkspace ws(project_.get());
+        ImportWizard wizard(ws);
+        wizard.setShowProgress(false);
+        wizard.show();
+        QCOMPARE(wizard.addFolder(QFileInfo(file).absolutePath()), 2);  // the roster too, at first
+        const auto matched = wizard.applyRoster(roster);
+        QVERIFY(matched);
+        QCOMPARE(*matched, 1);
+        QCOMPARE(int(wizard.files().size()), 1);  // the roster is not a recording
+        QCOMPARE(wizard.files()[0].athlete, QStringLiteral("Anna Berg"));
+        QVERIFY(wizard.warnings().join('\n').contains(QStringLiteral("'ghost.csv' is in the roster")));
+        QVERIFY(!wizard.applyRoster(file));  // no 'file' column: refused, naming it
+
+        wizard.next();
+        child<QComboBox>(&wizard, "kindCombo")->setCurrentIndex(child<QComboBox>(&wizard, "kindCombo")->findData("imu"));
+        auto* timeColumn = child<QComboBox>(&wizard, "timeColumnCombo");
+        timeColumn->setCurrentIndex(timeColumn->findText(QStringLiteral("Time")));
+        child<QComboBox>(&wizard, "timeUnitCombo")->setCurrentText(QStringLiteral("hh:mm:ss.fff"));
+        child<QLineEdit>(&wizard, "dateEdit")->setText(QStringLiteral("2024-05-01"));
+        auto* labels = child<QComboBox>(&wizard, "labelCombo");
+        labels->setCurrentIndex(labels->findText(QStringLiteral("label")));
+        child<QLineEdit>(&wizard, "labelNamesEdit")->setText(QStringLiteral("stand,walk"));
+        QVERIFY(!wizard.mappingPage()->validatePage());  // not VALUE=NAME pairs
+        QVERIFY(child<QLabel>(&wizard, "previewErrorLabel")->text().contains(QStringLiteral("walk.csv: label names")));
+        child<QLineEdit>(&wizard, "labelNamesEdit")->setText(QStringLiteral("0=stand,1=walk"));
+        QVERIFY(wizard.mappingPage()->validatePage());
+        const ImportOptions options = wizard.optionsFor(0);
+        QCOMPARE(options.timeColumn, QStringLiteral("Time"));
+        QCOMPARE(options.date, QStringLiteral("2024-05-01"));
+        QCOMPARE(options.labelColumn, QStringLiteral("label"));
+        QCOMPARE(options.labelNames.at(QStringLiteral("1")), QStringLiteral("walk"));
+        QCOMPARE(options.metadata.value(QStringLiteral("number")).toInt(), 7);
+
+        wizard.next();
+        QVERIFY2(wizard.problems().isEmpty(), qPrintable(wizard.problems().join('\n')));
+        QVERIFY2(wizard.importAll(), qPrintable(wizard.lastError()));
+        const Stream* stream = project_->stream(QStringLiteral("walk/imu"));
+        QVERIFY(stream);
+        QCOMPARE(stream->info().columnNames(), (QStringList{"acc_x", "acc_y", "acc_z"}));
+        QCOMPARE(stream->info().attributes.value(QStringLiteral("t0_utc")).toString(), QStringLiteral("2024-05-01T10:00:00Z"));
+        QCOMPARE((**stream->data()).t[5], 0.05);
+        const Recording* recording = project_->recording(QStringLiteral("walk"));
+        QCOMPARE(recording->metadata.value(QStringLiteral("athlete")).toString(), QStringLiteral("Anna Berg"));
+        QCOMPARE(int(recording->annotations.size()), 2);
+        QCOMPARE(recording->annotations[0].label, QStringLiteral("stand"));
+        QCOMPARE(recording->annotations[1].label, QStringLiteral("walk"));
+        QCOMPARE(recording->annotations[1].tStart, 0.04);
     }
 
     void existingNamesAreFlaggedUntilOverwrite()

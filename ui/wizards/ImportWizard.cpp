@@ -1,6 +1,7 @@
 #include "ui/wizards/ImportWizard.h"
 
 #include "core/io/Importer.h"
+#include "core/io/MultiImport.h"
 #include "core/model/Project.h"
 #include "core/model/StreamKinds.h"
 #include "ui/ToolRegistry.h"
@@ -71,6 +72,39 @@ int ImportWizard::addFolder(const QString& dir)
     return added;
 }
 
+Expected<int> ImportWizard::applyRoster(const QString& roster)
+{
+    auto entries = readRoster(roster);
+    if (!entries) return entries.error();
+    std::vector<bool> used(entries->size(), false);
+    int matched = 0;
+    rosterWarnings_.clear();
+    // A roster kept in the folder of the recordings is not a recording.
+    const QString rosterPath = QFileInfo(roster).absoluteFilePath();
+    std::erase_if(files_, [&](const ImportFileSettings& s) { return s.file == rosterPath; });
+    const QString rosterName = QFileInfo(roster).fileName();
+    for (ImportFileSettings& s : files_) {
+        const QFileInfo f(s.file);
+        const auto entry = std::find_if(entries->begin(), entries->end(), [&](const RosterEntry& e) {
+            return e.file == f.fileName() || e.file == f.completeBaseName();
+        });
+        if (entry == entries->end()) {
+            rosterWarnings_ << tr("%1: not in the roster %2").arg(f.fileName(), rosterName);
+            continue;
+        }
+        used[std::size_t(entry - entries->begin())] = true;
+        s.roster = entry->attributes;
+        if (const QString athlete = entry->attributes.value(QStringLiteral("athlete")).toString(); !athlete.isEmpty())
+            s.athlete = athlete;
+        ++matched;
+    }
+    for (std::size_t i = 0; i < entries->size(); ++i)
+        if (!used[i]) rosterWarnings_ << tr("%1: '%2' is in the roster but not among the files").arg(rosterName, (*entries)[i].file);
+    validated_ = false;
+    emit filesChanged();
+    return matched;
+}
+
 void ImportWizard::removeFile(int index)
 {
     if (index < 0 || index >= int(files_.size())) return;
@@ -116,6 +150,7 @@ ImportOptions ImportWizard::optionsFor(int index) const
     options.target = s.stream.trimmed().isEmpty() ? s.recording.trimmed()
                                                   : s.recording.trimmed() + QLatin1Char('/') + s.stream.trimmed();
     options.overwrite = overwrite_;
+    for (auto it = s.roster.begin(); it != s.roster.end(); ++it) options.metadata.insert(it.key(), it.value());
     if (!s.athlete.trimmed().isEmpty()) options.metadata.insert(QStringLiteral("athlete"), s.athlete.trimmed());
     return options;
 }
@@ -164,7 +199,7 @@ bool ImportWizard::validateAll()
 void ImportWizard::updateProblems()
 {
     problems_.clear();
-    warnings_.clear();
+    warnings_ = rosterWarnings_;
     const Project* project = workspace_.project();
     QSet<QString> seen;
     for (size_t i = 0; i < files_.size() && i < checks_.size(); ++i) {
@@ -205,7 +240,15 @@ bool ImportWizard::importAll()
                 if (progress.isCancelled()) return makeError(QStringLiteral("cancelled"));
                 for (ImportedItem& item : result->items) merged->items.push_back(std::move(item));
                 merged->warnings << result->warnings;
-                for (auto& [recording, metadata] : result->recordingMetadata) merged->recordingMetadata[recording] = metadata;
+                for (auto& [recording, metadata] : result->recordingMetadata)
+                    for (auto it = metadata.begin(); it != metadata.end(); ++it)
+                        merged->recordingMetadata[recording].insert(it.key(), it.value());
+                // Label columns become annotations; the first GNSS file may set the project's origin.
+                for (auto& [recording, annotations] : result->annotations) {
+                    auto& list = merged->annotations[recording];
+                    list.insert(list.end(), annotations.begin(), annotations.end());
+                }
+                if (!merged->origin) merged->origin = result->origin;
                 progress.report(double(i + 1) / n);
             }
             return {};

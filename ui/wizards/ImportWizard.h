@@ -9,6 +9,7 @@
 #include "core/io/ImportPreview.h"
 #include "ui/BackgroundTask.h"
 
+#include <QJsonObject>
 #include <QWizard>
 #include <functional>
 #include <vector>
@@ -29,6 +30,7 @@ struct ImportFileSettings {
     QString recording;
     QString stream;          // empty: the kind's default name
     QString athlete;         // stored in the recording's metadata
+    QJsonObject roster;      // the file's roster row (number, team, position, mass_kg, ...), same place
 };
 
 class ImportWizard : public QWizard {
@@ -46,6 +48,10 @@ public:
     void addFiles(const QStringList& files);
     // Folder mode: every importable file of dir, one per athlete (recording and athlete from the file name).
     int addFolder(const QString& dir);
+    // Names the files' athletes from a roster CSV (file,athlete,number,team,position,mass_kg; the
+    // CLI's --roster): rows match a file by name with or without its extension. Returns how many
+    // files matched; warnings() lists files without a row and rows without a file.
+    Expected<int> applyRoster(const QString& roster);
     void removeFile(int index);
     void clearFiles();
 
@@ -63,7 +69,8 @@ public:
     bool validateAll();
     bool validated() const { return validated_; }
     QStringList problems() const { return problems_; }
-    QStringList warnings() const { return warnings_; }
+    // After validateAll(): the files' warnings and the roster's (applyRoster() sets those at once).
+    QStringList warnings() const { return validated_ ? warnings_ : rosterWarnings_; }
     // Imports every file in the background and applies the result all-or-nothing. On failure or
     // Cancel the project is unchanged and lastError() says why.
     bool importAll();
@@ -95,6 +102,7 @@ private:
     std::vector<ImportCheck> checks_;
     QStringList problems_;
     QStringList warnings_;
+    QStringList rosterWarnings_;  // from the last applyRoster()
     QStringList imported_;
     QString error_;
     bool validated_ = false;

@@ -9,6 +9,7 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QTableWidget>
@@ -35,10 +36,14 @@ ImportWizardFilesPage::ImportWizardFilesPage(ImportWizard& wizard) : wizard_(wiz
     addFiles->setObjectName(QStringLiteral("addFilesButton"));
     auto* addFolder = new QPushButton(tr("Add Folder (One File per Athlete)…"), this);
     addFolder->setObjectName(QStringLiteral("addFolderButton"));
+    auto* roster = new QPushButton(tr("Apply Roster…"), this);
+    roster->setObjectName(QStringLiteral("rosterButton"));
+    roster->setToolTip(tr("A CSV file,athlete,number,team,position,mass_kg naming the athlete of each file"));
     auto* remove = new QPushButton(tr("Remove"), this);
     remove->setObjectName(QStringLiteral("removeButton"));
     buttons->addWidget(addFiles);
     buttons->addWidget(addFolder);
+    buttons->addWidget(roster);
     buttons->addWidget(remove);
     buttons->addStretch();
     layout->addLayout(buttons);
@@ -57,6 +62,15 @@ ImportWizardFilesPage::ImportWizardFilesPage(ImportWizard& wizard) : wizard_(wiz
     connect(addFolder, &QPushButton::clicked, this, [this] {
         const QString dir = QFileDialog::getExistingDirectory(this, tr("Folder with One File per Athlete"));
         if (!dir.isEmpty()) wizard_.addFolder(dir);
+    });
+    connect(roster, &QPushButton::clicked, this, [this] {
+        const QString file = QFileDialog::getOpenFileName(this, tr("Roster"), QString(), tr("CSV files (*.csv);;All files (*)"));
+        if (file.isEmpty()) return;
+        const auto matched = wizard_.applyRoster(file);
+        if (!matched) QMessageBox::warning(this, tr("Roster"), matched.message());
+        else if (!wizard_.warnings().isEmpty())
+            QMessageBox::information(this, tr("Roster"), tr("%n file(s) named from the roster.", nullptr, *matched) +
+                                                             QStringLiteral("\n") + wizard_.warnings().join(QLatin1Char('\n')));
     });
     connect(remove, &QPushButton::clicked, this, [this] {
         QList<int> rows;

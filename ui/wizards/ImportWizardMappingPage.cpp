@@ -4,6 +4,7 @@
 #include "core/model/StreamKinds.h"
 #include "ui/wizards/ImportWizard.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QFileInfo>
 #include <QFormLayout>
@@ -34,6 +35,22 @@ QComboBox* makeUnitCombo(QWidget* parent, const QString& unit)
     combo->addItems(unitChoices());
     combo->setCurrentText(unit);
     return combo;
+}
+
+// The time column's unit or format (core/io/TimeFormats.h; any other spelling can be typed).
+const QStringList& timeFormatChoices()
+{
+    static const QStringList formats{QString(), "s", "ms", "us", "ns", "min", "h", "d", "uptime", "uptime_ms",
+                                     "uptime_us", "uptime_ns", "unix", "unix_ms", "unix_us", "unix_ns", "iso",
+                                     "hh:mm:ss", "hh:mm:ss.fff", "excel"};
+    return formats;
+}
+
+QString labelNamesText(const std::map<QString, QString>& names)
+{
+    QStringList pairs;
+    for (const auto& [value, name] : names) pairs << value + QLatin1Char('=') + name;
+    return pairs.join(QLatin1Char(','));
 }
 
 const ColumnMapping* findMapping(const ImportOptions& options, const QString& source)
@@ -93,12 +110,40 @@ ImportWizardMappingPage::ImportWizardMappingPage(ImportWizard& wizard) : wizard_
     auto* timeRow = new QHBoxLayout;
     timeColumnCombo_ = new QComboBox(this);
     timeColumnCombo_->setObjectName(QStringLiteral("timeColumnCombo"));
-    timeUnitCombo_ = makeUnitCombo(this, QString());
+    timeUnitCombo_ = new QComboBox(this);
+    timeUnitCombo_->setEditable(true);
+    timeUnitCombo_->addItems(timeFormatChoices());
     timeUnitCombo_->setObjectName(QStringLiteral("timeUnitCombo"));
+    timeUnitCombo_->setToolTip(tr("Durations (s, ms, …), device uptime, Unix epochs (unix, unix_ms, unix_ns), "
+                                  "ISO 8601 date-times, clock times (hh:mm:ss[.fff]) or Excel serial days"));
     timeRow->addWidget(timeColumnCombo_, 1);
-    timeRow->addWidget(new QLabel(tr("Unit:"), this));
+    timeRow->addWidget(new QLabel(tr("Unit or format:"), this));
     timeRow->addWidget(timeUnitCombo_);
     names->addRow(tr("Time column:"), timeRow);
+    auto* whenRow = new QHBoxLayout;
+    dateEdit_ = new QLineEdit(this);
+    dateEdit_->setObjectName(QStringLiteral("dateEdit"));
+    dateEdit_->setPlaceholderText(tr("YYYY-MM-DD, for clock times without a date"));
+    startEdit_ = new QLineEdit(this);
+    startEdit_->setObjectName(QStringLiteral("startEdit"));
+    startEdit_->setPlaceholderText(tr("ISO 8601 UTC instant of t = 0, for relative times"));
+    whenRow->addWidget(dateEdit_, 1);
+    whenRow->addWidget(new QLabel(tr("Start:"), this));
+    whenRow->addWidget(startEdit_, 2);
+    names->addRow(tr("Date:"), whenRow);
+    auto* labelRow = new QHBoxLayout;
+    labelCombo_ = new QComboBox(this);
+    labelCombo_->setObjectName(QStringLiteral("labelCombo"));
+    labelCombo_->setToolTip(tr("A per-sample label column (numbers or text): runs of equal labels become annotations"));
+    labelNamesEdit_ = new QLineEdit(this);
+    labelNamesEdit_->setObjectName(QStringLiteral("labelNamesEdit"));
+    labelNamesEdit_->setPlaceholderText(tr("names of number labels: 0=rest,1=run"));
+    labelRow->addWidget(labelCombo_, 1);
+    labelRow->addWidget(labelNamesEdit_, 2);
+    names->addRow(tr("Labels:"), labelRow);
+    dropUnmappedBox_ = new QCheckBox(tr("Leave out columns that are neither mapped nor known to the kind"), this);
+    dropUnmappedBox_->setObjectName(QStringLiteral("dropUnmappedBox"));
+    names->addRow(dropUnmappedBox_);
     recordingEdit_ = new QLineEdit(this);
     recordingEdit_->setObjectName(QStringLiteral("recordingEdit"));
     streamEdit_ = new QLineEdit(this);
@@ -146,7 +191,10 @@ void ImportWizardMappingPage::initializePage()
 bool ImportWizardMappingPage::validatePage()
 {
     store();
-    return true;
+    if (labelNamesError_.isEmpty()) return true;
+    errorLabel_->setText(labelNamesError_);
+    errorLabel_->setVisible(true);
+    return false;
 }
 
 void ImportWizardMappingPage::showFile(int index)
@@ -178,6 +226,7 @@ void ImportWizardMappingPage::load()
     previewTable_->clear();
     mappingTable_->setRowCount(0);
     timeColumnCombo_->clear();
+    labelCombo_->clear();
     if (current_ < 0 || current_ >= int(wizard_.files().size())) {
         previewTable_->setRowCount(0);
         previewTable_->setColumnCount(0);
@@ -213,11 +262,14 @@ void ImportWizardMappingPage::load()
     QString timeUnit = s.options.timeUnit;
     mappingTable_->setRowCount(int(p.columns.size()));
     timeColumnCombo_->addItem(tr("none (a table)"));
+    labelCombo_->addItem(tr("none"));
     for (int r = 0; r < int(p.columns.size()); ++r) {
         const PreviewColumn& c = p.columns[size_t(r)];
         const ColumnMapping* m = findMapping(s.options, c.source);
         const bool isTime = p.mappable ? c.source == timeSource : c.time;
         timeColumnCombo_->addItem(c.source);
+        labelCombo_->addItem(c.source);
+        if (p.mappable && c.source == s.options.labelColumn) labelCombo_->setCurrentIndex(r + 1);
         if (isTime) {
             timeColumnCombo_->setCurrentIndex(r + 1);
             if (timeUnit.isEmpty()) timeUnit = c.unit;
@@ -248,6 +300,12 @@ void ImportWizardMappingPage::load()
     timeColumnCombo_->setEnabled(p.mappable);
     timeUnitCombo_->setEnabled(p.mappable);
     timeUnitCombo_->setCurrentText(timeUnit);
+    for (QWidget* w : std::initializer_list<QWidget*>{dateEdit_, startEdit_, labelCombo_, labelNamesEdit_, dropUnmappedBox_})
+        w->setEnabled(p.mappable);
+    dateEdit_->setText(s.options.date);
+    startEdit_->setText(s.options.start);
+    labelNamesEdit_->setText(labelNamesText(s.options.labelNames));
+    dropUnmappedBox_->setChecked(s.options.dropUnmapped);
     mappingTable_->resizeColumnToContents(SourceColumn);
 
     recordingEdit_->setText(s.recording);
@@ -303,10 +361,20 @@ void ImportWizardMappingPage::store()
     const QString timeSource = time >= 0 ? p.columns[size_t(time)].source : QString();
     s.options.timeColumn = timeSource == QLatin1String("t") ? QString() : timeSource;
     s.options.timeUnit = timeUnitCombo_->currentText().trimmed();
+    s.options.date = dateEdit_->text().trimmed();
+    s.options.start = startEdit_->text().trimmed();
+    s.options.dropUnmapped = dropUnmappedBox_->isChecked();
+    const int label = labelCombo_->currentIndex() - 1;  // entry 0: none
+    s.options.labelColumn = label >= 0 && label < int(p.columns.size()) ? p.columns[size_t(label)].source : QString();
+    labelNamesError_.clear();
+    if (auto names = parseLabelNames(labelNamesEdit_->text()); !names)
+        labelNamesError_ = QFileInfo(s.file).fileName() + QStringLiteral(": ") + names.message();
+    else
+        s.options.labelNames = std::move(*names);
     s.options.columns.clear();
     for (int r = 0; r < mappingTable_->rowCount(); ++r) {
         const PreviewColumn& c = p.columns[size_t(r)];
-        if (r == time) continue;
+        if (r == time || r == label) continue;  // the label column becomes annotations, not a channel
         const QString channel = mappingTable_->item(r, ChannelColumn)->text().trimmed();
         const QString unit = unitCombo(r)->currentText().trimmed();
         if (mappingTable_->item(r, ImportColumn)->checkState() != Qt::Checked)

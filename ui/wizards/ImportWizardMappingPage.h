@@ -1,9 +1,12 @@
 #pragma once
 // Page 2 of the import wizard, per file: format and kind (detected), the first rows, the mapping of
 // each source column to a channel and the unit its values are in (auto-filled from the header and
-// common export names), the time column, and recording, stream and athlete names.
+// common export names), the time column and its format (durations, epochs, ISO, clock times, Excel
+// days; a date or start instant for relative times), a label column that becomes annotations, and
+// recording, stream and athlete names.
 #include <QWizardPage>
 
+class QCheckBox;
 class QComboBox;
 class QLabel;
 class QLineEdit;
@@ -51,6 +54,12 @@ private:
     QLineEdit* recordingEdit_ = nullptr;
     QLineEdit* streamEdit_ = nullptr;
     QLineEdit* athleteEdit_ = nullptr;
+    QLineEdit* dateEdit_ = nullptr;
+    QLineEdit* startEdit_ = nullptr;
+    QComboBox* labelCombo_ = nullptr;
+    QLineEdit* labelNamesEdit_ = nullptr;
+    QCheckBox* dropUnmappedBox_ = nullptr;
+    QString labelNamesError_;  // the label names as typed are not VALUE=NAME pairs
 };
 
 }  // namespace athlos::ui
