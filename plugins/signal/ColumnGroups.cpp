@@ -5,8 +5,13 @@
 namespace athlos::signal {
 
 bool ColumnGroups::isFlagName(const QString& name) {
-    return name == QLatin1String("movement") || name == QLatin1String("outlier") || name == QLatin1String("flag")
-        || name.endsWith(QLatin1String("_flag"));
+    // Satellite fix quality, satellite count and dilution of precision (NMEA GGA/GSA fields, vendor
+    // exports) are per-fix indicators: a value between two fixes was never observed (issue #13).
+    static const QStringList kGnssQuality{"fix", "fix_quality", "quality", "sats", "satellites", "num_sats",
+                                          "nsat", "hdop", "vdop", "pdop"};
+    const QString lower = name.toLower();
+    return lower == QLatin1String("movement") || lower == QLatin1String("outlier") || lower == QLatin1String("flag")
+        || lower.endsWith(QLatin1String("_flag")) || kGnssQuality.contains(lower);
 }
 
 ColumnGroups ColumnGroups::detect(const QStringList& names) {

@@ -192,6 +192,29 @@ TEST(SignalResampler, FlagColumnsUseNearestNeighbour) {
     EXPECT_TRUE(interpolatedSpeed);  // the ordinary column really was interpolated
 }
 
+// GNSS quality columns are per fix: resampled by nearest neighbour, never blended (issue #13).
+TEST(SignalResampler, GnssQualityColumnsAreNotInterpolated) {
+    const QStringList names = {"x", "fix", "sats", "HDOP"};
+    EXPECT_EQ(ColumnGroups::detect(names).flags, (std::vector<int>{1, 2, 3}));
+    const auto t = jitteredTimes(200, 0.1, 0.3);
+    StreamData in(t.size(), 4);
+    in.t = t;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        in.at(i, 0) = 0.5 * double(i);
+        in.at(i, 1) = i % 5 == 0 ? 1.0 : 4.0;    // GGA fix quality: GPS or RTK fixed
+        in.at(i, 2) = double(7 + (i / 9) % 4);   // satellites
+        in.at(i, 3) = 0.8 + 0.1 * double(i % 3);  // HDOP
+    }
+    const StreamData out = run(in, {23.0}, names);
+    for (std::size_t k = 0; k < out.rows(); ++k) {
+        EXPECT_TRUE(out.at(k, 1) == 1.0 || out.at(k, 1) == 4.0) << "t = " << out.t[k];
+        EXPECT_EQ(out.at(k, 2), std::round(out.at(k, 2))) << "t = " << out.t[k];
+        bool observed = false;
+        for (std::size_t i = 0; i < t.size(); ++i) observed |= out.at(k, 3) == in.at(i, 3);
+        EXPECT_TRUE(observed) << "HDOP " << out.at(k, 3) << " at t = " << out.t[k] << " was never observed";
+    }
+}
+
 TEST(SignalResampler, NaNNeighboursGiveNaNAndNothingElse) {
     std::vector<double> t;  // binary-exact times so that grid points hit samples exactly
     for (int i = 0; i < 40; ++i) t.push_back(i * 0.125);
