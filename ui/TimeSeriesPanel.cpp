@@ -1,6 +1,7 @@
 #include "ui/TimeSeriesPanel.h"
 
 #include "core/model/Stream.h"
+#include "ui/ClockTimeTicker.h"
 #include "ui/PlotLanes.h"
 #include "ui/PlotStyle.h"
 #include "ui/RangeStatistics.h"
@@ -46,6 +47,13 @@ TimeSeriesPanel::TimeSeriesPanel(QWidget* parent) : QWidget(parent)
     fitYBox_ = new QCheckBox(tr("Fit y to visible range"), this);
     fitYBox_->setChecked(autoFitY_);
     connect(fitYBox_, &QCheckBox::toggled, this, &TimeSeriesPanel::setAutoFitY);
+
+    clockBox_ = new QCheckBox(tr("Clock time"), this);
+    clockBox_->setObjectName(QStringLiteral("clockTimeBox"));
+    clockBox_->setToolTip(tr("Label the time axis with the time of day (UTC) the file gives, instead of seconds "
+                             "since the first sample"));
+    clockBox_->setEnabled(false);
+    connect(clockBox_, &QCheckBox::toggled, this, &TimeSeriesPanel::setClockTime);
 
     auto* resetButton = new QToolButton(this);
     resetButton->setText(tr("Full range"));
@@ -101,6 +109,7 @@ TimeSeriesPanel::TimeSeriesPanel(QWidget* parent) : QWidget(parent)
     header->setContentsMargins(6, 4, 6, 0);
     header->addWidget(titleLabel_, 1);
     header->addWidget(columnsButton_);
+    header->addWidget(clockBox_);
     header->addWidget(fitYBox_);
     header->addWidget(resetButton);
     auto* layout = new QVBoxLayout(this);
@@ -152,8 +161,11 @@ void TimeSeriesPanel::clear()
     error_.clear();
     visible_.clear();
     requestedColumns_.clear();
+    t0_.reset();
+    clockBox_->setEnabled(false);
     plot_->clearGraphs();
     removeExtraLanes();
+    applyTimeAxis();
     graphLane_.clear();
     plot_->legend->setVisible(false);
     plot_->yAxis->setLabel({});
@@ -183,6 +195,9 @@ void TimeSeriesPanel::applyLoaded(std::shared_ptr<Loaded> result)
         return;
     }
     loaded_ = std::move(result);
+    t0_ = ClockTimeTicker::t0Of(stream_->info().attributes);
+    t0IsTimeOfDay_ = !stream_->info().attributes.contains(QStringLiteral("t0_utc"));
+    clockBox_->setEnabled(t0_.has_value());
 
     visible_.clear();
     const StreamInfo& info = stream_->info();
@@ -284,14 +299,32 @@ void TimeSeriesPanel::rebuildGraphs()
     plot_->legend->setVisible(!visible_.empty());
     // A lane's one unit labels its axis; mixed units are in the legend only.
     plot_->yAxis->setLabel(lanes.count() > 0 ? PlotStyle::unitSuffix(lanes.unit.front()).trimmed() : QString());
-    // The time axis is labelled once, under the bottom lane.
+    applyTimeAxis();
+    PlotStyle::applyPalette(plot_, plot_->palette());
+}
+
+void TimeSeriesPanel::setClockTime(bool on)
+{
+    clockTime_ = on;
+    if (clockBox_->isChecked() != on) clockBox_->setChecked(on);
+    applyTimeAxis();
+    plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void TimeSeriesPanel::applyTimeAxis()
+{
+    const bool clock = clockTime_ && t0_.has_value();
+    // One ticker for every lane, so the grid lines line up; labelled once, under the bottom lane.
+    const QSharedPointer<QCPAxisTicker> ticker =
+        clock ? QSharedPointer<QCPAxisTicker>(new ClockTimeTicker(*t0_)) : QSharedPointer<QCPAxisTicker>(new QCPAxisTicker);
+    const QString label = !clock ? tr("t [s]") : t0IsTimeOfDay_ ? tr("time of day") : tr("time of day (UTC)");
     for (std::size_t l = 0; l < lanes_.size(); ++l) {
         QCPAxis* x = lanes_[l].rect->axis(QCPAxis::atBottom);
         const bool bottom = l + 1 == lanes_.size();
+        x->setTicker(ticker);
         x->setTickLabels(bottom);
-        x->setLabel(bottom ? tr("t [s]") : QString());
+        x->setLabel(bottom ? label : QString());
     }
-    PlotStyle::applyPalette(plot_, plot_->palette());
 }
 
 void TimeSeriesPanel::addLane(const QString& unit)

@@ -10,6 +10,7 @@
 #include <QStringList>
 #include <QWidget>
 #include <memory>
+#include <optional>
 #include <vector>
 
 class QCheckBox;
@@ -52,6 +53,12 @@ public:
 
     QStringList visibleColumns() const;
     void setVisibleColumns(const QStringList& columns);
+
+    // Time axis labels as clock time (t0_utc + t, or t0_time_of_day + t) instead of elapsed seconds;
+    // only for streams whose file gave an absolute time (canShowClockTime()).
+    bool canShowClockTime() const { return t0_.has_value(); }
+    bool clockTime() const { return clockTime_; }
+    void setClockTime(bool on);
 
     // Fit the y axis to what is visible after every x change (then y is not dragged by mouse).
     bool autoFitY() const { return autoFitY_; }
@@ -120,6 +127,7 @@ private:
     void addLane(const QString& unit);
     void removeExtraLanes();
     void applyRangeInteractions();
+    void applyTimeAxis();
     void onXRangeChanged(const QCPRange& range);
     void onAfterLayout();
     int plotWidthPixels() const;
@@ -132,6 +140,7 @@ private:
     QToolButton* columnsButton_ = nullptr;
     QMenu* columnsMenu_ = nullptr;
     QCheckBox* fitYBox_ = nullptr;
+    QCheckBox* clockBox_ = nullptr;
     QLabel* readout_ = nullptr;
     QCPItemStraightLine* cursorLine_ = nullptr;
     TimeController* controller_ = nullptr;
@@ -149,6 +158,9 @@ private:
     std::vector<int> graphLane_;  // per graph
     QCPMarginGroup* marginGroup_ = nullptr;
     bool syncingX_ = false;  // copying the main x range into the other lanes
+    std::optional<double> t0_;  // of the loaded stream: s since the epoch (or midnight) at t = 0
+    bool t0IsTimeOfDay_ = false;
+    bool clockTime_ = false;
     std::shared_ptr<Loaded> loaded_;
     PanelLoader loader_;
     bool autoFitY_ = true;

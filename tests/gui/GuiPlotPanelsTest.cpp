@@ -44,6 +44,7 @@ private slots:
     void plotsEveryColumnWithUnits();
     void groupsColumnsIntoLanes();
     void stacksLanesSharingTheTimeAxis();
+    void labelsTheTimeAxisWithClockTime();
     void decimatesLargeStreamsWithoutLosingPeaks();
     void choosesColumns();
     void reportsLoadErrors();
@@ -154,6 +155,46 @@ void GuiPlotPanelsTest::stacksLanesSharingTheTimeAxis()
     QCOMPARE(panel.laneCount(), 1);
     QCOMPARE(plot->xAxis->label(), QStringLiteral("t [s]"));
     QCOMPARE(plot->axisRectCount(), 1);
+}
+
+void GuiPlotPanelsTest::labelsTheTimeAxisWithClockTime()
+{
+    TimeSeriesPanel panel;
+    panel.resize(1000, 500);
+    panel.show();
+    QSignalSpy loaded(&panel, &TimeSeriesPanel::loaded);
+    // 20 s of samples from 10:00:00.25 UTC: ticks fall on whole clock seconds, i.e. t = k + 0.75.
+    Stream stream = bigStream(20000, 10);
+    stream.info().attributes.insert(QStringLiteral("t0_utc"), QStringLiteral("2024-05-01T10:00:00.25Z"));
+    panel.setStream(shared(std::move(stream)), QStringLiteral("watch/imu"));
+    QVERIFY(loaded.wait(10000));
+    QVERIFY(panel.canShowClockTime());
+    QCPAxis* x = panel.laneRect(panel.laneCount() - 1)->axis(QCPAxis::atBottom);
+    panel.plot()->replot();
+    QVERIFY(!x->tickVectorLabels().isEmpty());
+    QVERIFY(!x->tickVectorLabels().front().contains(QLatin1Char(':')));  // elapsed seconds first
+    panel.setClockTime(true);
+    panel.plot()->replot();
+    QCOMPARE(x->label(), QStringLiteral("time of day (UTC)"));
+    const QVector<double> ticks = x->tickVector();
+    const QVector<QString> labels = x->tickVectorLabels();
+    QVERIFY(ticks.size() >= 3);
+    for (int i = 0; i < ticks.size(); ++i) {
+        const double clock = ticks[i] + 0.25;  // seconds after 10:00:00
+        QVERIFY2(std::abs(clock - std::round(clock)) < 1e-6, qPrintable(QString::number(ticks[i])));
+        const int s = int(std::lround(clock));
+        QCOMPARE(labels[i], QStringLiteral("10:00:%1").arg(s, 2, 10, QLatin1Char('0')));
+    }
+    // Zoomed into one second: milliseconds.
+    panel.plot()->xAxis->setRange(5.0, 5.5);
+    panel.plot()->replot();
+    QVERIFY(x->tickVectorLabels().front().startsWith(QStringLiteral("10:00:05.")));
+    // A stream without an absolute start cannot show clock time and falls back to seconds.
+    panel.setStream(shared(bigStream(1000, 10)), QStringLiteral("plain"));
+    QVERIFY(loaded.wait(10000));
+    QVERIFY(!panel.canShowClockTime());
+    panel.plot()->replot();
+    QCOMPARE(panel.laneRect(panel.laneCount() - 1)->axis(QCPAxis::atBottom)->label(), QStringLiteral("t [s]"));
 }
 
 void GuiPlotPanelsTest::decimatesLargeStreamsWithoutLosingPeaks()
