@@ -8,6 +8,7 @@
 #include "plugins/lps/LpsCalibrationProcessor.h"
 #include "plugins/lps/LpsPositioningProcessor.h"
 #include "plugins/lps/SimulateLpsProcessor.h"
+#include "plugins/lps/TdoaStream.h"
 
 #include <QTemporaryDir>
 #include <gtest/gtest.h>
@@ -91,4 +92,28 @@ TEST(LpsProcessors, PositioningHonoursCancellation) {
     Status s = run(*project, LpsPositioningProcessor(), {"r/tdoa", "r/tdoa-beacons"}, "r/lps", {}, Progress({}, token));
     ASSERT_FALSE(s);
     EXPECT_EQ(project->stream("r/lps"), nullptr);
+}
+
+// Issue #13 item 8: a positioning run without a single fix fails with the reason (here: two beacons
+// per instant where a 2D fix needs four) and stores nothing, instead of an empty stream and exit 0.
+TEST(LpsProcessors, NoFixAtAllIsAnErrorWithTheReason) {
+    QTemporaryDir dir;
+    auto project = Project::create(dir.filePath("p.athlos"));
+    ASSERT_TRUE(run(*project, SimulateLpsProcessor(), {}, "w/tdoa", {{"laps", "0.1"}}));
+    auto layout = layoutFromTable(*project->table("w/tdoa-beacons"), "w/tdoa-beacons");
+    ASSERT_TRUE(layout.ok());
+    const Stream& full = *project->stream("w/tdoa");
+    auto epochs = epochsFromStream(full, **full.data(), *layout, "w/tdoa");
+    ASSERT_TRUE(epochs.ok());
+    for (auto& e : epochs->epochs) e.readings.resize(std::min<std::size_t>(e.readings.size(), 2));  // two beacons heard
+    project->putStream("w/few", streamFromEpochs(epochs->epochs, *layout, "few"));
+
+    const LpsPositioningProcessor positioning;
+    ASSERT_TRUE(run(*project, positioning, {"w/tdoa", "w/tdoa-beacons"}, "w/lps", {{"dimension", "2d"}}));  // the full one fixes
+    const Status s = run(*project, positioning, {"w/few", "w/tdoa-beacons"}, "w/lps-few", {{"dimension", "2d"}});
+    ASSERT_FALSE(s);
+    EXPECT_TRUE(s.message().startsWith("lps-positioning: no fix: no instant of TDoA stream 'w/few' had enough beacons: "
+                                       "need ≥4 (min_beacons, 2d), the most was 2"))
+        << s.message().toStdString();
+    EXPECT_EQ(project->stream("w/lps-few"), nullptr);
 }
