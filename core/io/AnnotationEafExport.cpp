@@ -3,7 +3,7 @@
 // Written against the EAF 3.0 schema (http://www.mpi.nl/tools/elan/EAFv3.0.xsd; Max Planck Institute
 // for Psycholinguistics, The Language Archive): ANNOTATION_DOCUMENT (DATE, AUTHOR, VERSION, FORMAT)
 // holds in this order HEADER (TIME_UNITS="milliseconds", PROPERTY lastUsedAnnotationId), TIME_ORDER
-// (TIME_SLOTs with TIME_VALUE in whole ms, xsd:unsignedInt), the TIERs with their
+// (TIME_SLOTs with TIME_VALUE in whole ms, xsd:unsignedInt, two per annotation), the TIERs with their
 // ALIGNABLE_ANNOTATIONs (ANNOTATION_VALUE) and the LINGUISTIC_TYPE the tiers refer to.
 //
 // Tiers ↔ classes: one tier per label, named after it, so ELAN shows one row per class. ELAN does not
@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <utility>
 
 namespace athlos {
 namespace {
@@ -67,14 +68,16 @@ Status exportAnnotationsEaf(const Annotations& annotations, const QString& file)
         tiers[*free].lastEnd = ms[i].second;
     }
 
-    // One time slot per distinct time, in increasing order.
-    std::map<qint64, QString> slotIds;
-    for (const auto& interval : ms) {
-        slotIds[interval.first];
-        slotIds[interval.second];
+    // Two time slots per annotation, as ELAN writes them (a shared slot would tie the boundaries of
+    // different annotations together when one is edited in ELAN), numbered in increasing time.
+    std::vector<std::pair<qint64, std::size_t>> order;  // (ms, 2·annotation + end)
+    for (std::size_t i = 0; i < ms.size(); ++i) {
+        order.emplace_back(ms[i].first, 2 * i);
+        order.emplace_back(ms[i].second, 2 * i + 1);
     }
-    int n = 0;
-    for (auto& [time, id] : slotIds) id = QStringLiteral("ts%1").arg(++n);
+    std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<QString> slotOf(order.size());  // by 2·annotation + end
+    for (std::size_t k = 0; k < order.size(); ++k) slotOf[order[k].second] = QStringLiteral("ts%1").arg(k + 1);
 
     QSaveFile out(file);
     if (!out.open(QIODevice::WriteOnly))
@@ -102,10 +105,10 @@ Status exportAnnotationsEaf(const Annotations& annotations, const QString& file)
     xml.writeEndElement();  // HEADER
 
     xml.writeStartElement(QStringLiteral("TIME_ORDER"));
-    for (const auto& [time, id] : slotIds) {
+    for (const auto& slot : order) {
         xml.writeEmptyElement(QStringLiteral("TIME_SLOT"));
-        xml.writeAttribute(QStringLiteral("TIME_SLOT_ID"), id);
-        xml.writeAttribute(QStringLiteral("TIME_VALUE"), QString::number(time));
+        xml.writeAttribute(QStringLiteral("TIME_SLOT_ID"), slotOf[slot.second]);
+        xml.writeAttribute(QStringLiteral("TIME_VALUE"), QString::number(slot.first));
     }
     xml.writeEndElement();  // TIME_ORDER
 
@@ -122,8 +125,8 @@ Status exportAnnotationsEaf(const Annotations& annotations, const QString& file)
             xml.writeStartElement(QStringLiteral("ANNOTATION"));
             xml.writeStartElement(QStringLiteral("ALIGNABLE_ANNOTATION"));
             xml.writeAttribute(QStringLiteral("ANNOTATION_ID"), QStringLiteral("a%1").arg(i + 1));
-            xml.writeAttribute(QStringLiteral("TIME_SLOT_REF1"), slotIds.at(ms[i].first));
-            xml.writeAttribute(QStringLiteral("TIME_SLOT_REF2"), slotIds.at(ms[i].second));
+            xml.writeAttribute(QStringLiteral("TIME_SLOT_REF1"), slotOf[2 * i]);
+            xml.writeAttribute(QStringLiteral("TIME_SLOT_REF2"), slotOf[2 * i + 1]);
             xml.writeTextElement(QStringLiteral("ANNOTATION_VALUE"), sorted[i].label);
             xml.writeEndElement();  // ALIGNABLE_ANNOTATION
             xml.writeEndElement();  // ANNOTATION
