@@ -146,14 +146,18 @@ int cmdInfo(const QStringList& args) {
 }
 
 int cmdExport(const QStringList& args) {
-    CommandParser p(QStringLiteral("export <project> <rec/stream>|<rec>/annotations --to <file.csv|file.h5|file.json|file.eaf>"),
-                    QStringLiteral("Export a stream or table to CSV (round-trips exactly) or HDF5; a recording's annotations "
-                                   "to CSV (start,end,label,confidence,source,annotator; s), JSON or ELAN .eaf (one tier per label)."));
+    CommandParser p(
+        QStringLiteral("export <project> <rec/stream>|<rec>/annotations --to <file.csv|file.h5|file.json|file.eaf>"),
+        QStringLiteral(
+            "Export a stream or table to CSV (round-trips exactly) or HDF5; a recording's annotations "
+            "to CSV (start,end,label,confidence,source,annotator; s), JSON or ELAN .eaf (one tier per label)."));
     p.addPositional(QStringLiteral("project"), QStringLiteral("The .athlos file."));
     p.addPositional(QStringLiteral("item"), QStringLiteral("Stream or table as <recording>/<name>."));
-    p.addOption({QStringLiteral("to"),
-                 QStringLiteral("Output file; the format follows the extension (.csv, .h5/.hdf5; annotations: .csv, .json, .eaf)."),
-                 QStringLiteral("file")});
+    p.addOption(
+        {QStringLiteral("to"),
+         QStringLiteral(
+             "Output file; the format follows the extension (.csv, .h5/.hdf5; annotations: .csv, .json, .eaf)."),
+         QStringLiteral("file")});
     if (auto code = p.parse(args, 2, 2)) return *code;
     const QString to = p.parser().value(QStringLiteral("to"));
     if (to.isEmpty()) return fail(QStringLiteral("export needs --to <file.csv|file.h5>"), Usage);
@@ -164,7 +168,8 @@ int cmdExport(const QStringList& args) {
     const bool json = suffix == u"json" && annotations;
     const bool eaf = suffix == u"eaf" && annotations;
     if (!csv && !h5 && !json && !eaf)
-        return fail(QStringLiteral("--to '%1': use a .csv or .h5 file name (.json or .eaf for annotations)").arg(to), Usage);
+        return fail(QStringLiteral("--to '%1': use a .csv or .h5 file name (.json or .eaf for annotations)").arg(to),
+                    Usage);
 
     auto project = Project::open(p.positional()[0]);
     if (!project) return fail(project.message());

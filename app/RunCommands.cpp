@@ -37,12 +37,13 @@ void printProcessor(const Processor& p) {
 // as imu-calibration's accept_implausible) carries the finding in its attribute "implausible".
 void warnImplausible(const Project& project, const QStringList& written) {
     for (const auto& path : written) {
-        const Stream* s = project.stream(path);
-        const Table* t = project.table(path);
-        const QString finding = (s ? s->info().attributes : t ? t->attributes : QJsonObject())
-                                    .value(QStringLiteral("implausible")).toString();
+        QJsonObject attributes;
+        if (const Stream* s = project.stream(path)) attributes = s->info().attributes;
+        if (const Table* t = project.table(path)) attributes = t->attributes;
+        const QString finding = attributes.value(QStringLiteral("implausible")).toString();
         if (!finding.isEmpty())
-            std::fprintf(stderr, "athlos: warning: %s is implausible: %s\n", qUtf8Printable(path), qUtf8Printable(finding));
+            std::fprintf(stderr, "athlos: warning: %s is implausible: %s\n", qUtf8Printable(path),
+                         qUtf8Printable(finding));
     }
 }
 }  // namespace

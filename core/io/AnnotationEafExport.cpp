@@ -26,8 +26,8 @@ namespace {
 
 struct Tier {
     QString id;
-    qint64 lastEnd = 0;                        // ms
-    std::vector<std::size_t> annotations;      // indices into the sorted list
+    qint64 lastEnd = 0;                    // ms
+    std::vector<std::size_t> annotations;  // indices into the sorted list
 };
 
 }  // namespace
@@ -42,10 +42,13 @@ Status exportAnnotationsEaf(const Annotations& annotations, const QString& file)
     for (const Annotation& a : sorted) {
         if (!std::isfinite(a.tStart) || !std::isfinite(a.tEnd) || a.tEnd < a.tStart)
             return makeError(QStringLiteral("%1: annotation '%2' has no valid interval (%3 … %4 s)")
-                                 .arg(file, a.label).arg(a.tStart).arg(a.tEnd));
+                                 .arg(file, a.label)
+                                 .arg(a.tStart)
+                                 .arg(a.tEnd));
         if (a.tStart < 0.0)
             return makeError(QStringLiteral("%1: ELAN times are milliseconds from 0; annotation '%2' starts at %3 s")
-                                 .arg(file, a.label).arg(a.tStart));
+                                 .arg(file, a.label)
+                                 .arg(a.tStart));
         ms.emplace_back(std::llround(a.tStart * 1e3), std::llround(a.tEnd * 1e3));
     }
 
@@ -55,10 +58,12 @@ Status exportAnnotationsEaf(const Annotations& annotations, const QString& file)
     QSet<QString> tierIds;
     for (std::size_t i = 0; i < sorted.size(); ++i) {
         auto& own = tiersOfLabel[sorted[i].label];
-        auto free = std::find_if(own.begin(), own.end(), [&](std::size_t t) { return tiers[t].lastEnd <= ms[i].first; });
+        auto free =
+            std::find_if(own.begin(), own.end(), [&](std::size_t t) { return tiers[t].lastEnd <= ms[i].first; });
         if (free == own.end()) {
             QString id = sorted[i].label;
-            for (int n = int(own.size()) + 1; tierIds.contains(id); ++n) id = QStringLiteral("%1 (%2)").arg(sorted[i].label).arg(n);
+            for (int n = int(own.size()) + 1; tierIds.contains(id); ++n)
+                id = QStringLiteral("%1 (%2)").arg(sorted[i].label).arg(n);
             tierIds.insert(id);
             tiers.push_back({id, 0, {}});
             own.push_back(tiers.size() - 1);
@@ -92,7 +97,8 @@ Status exportAnnotationsEaf(const Annotations& annotations, const QString& file)
     xml.writeAttribute(QStringLiteral("FORMAT"), QStringLiteral("3.0"));
     xml.writeAttribute(QStringLiteral("VERSION"), QStringLiteral("3.0"));
     xml.writeNamespace(QStringLiteral("http://www.w3.org/2001/XMLSchema-instance"), QStringLiteral("xsi"));
-    xml.writeAttribute(QStringLiteral("http://www.w3.org/2001/XMLSchema-instance"), QStringLiteral("noNamespaceSchemaLocation"),
+    xml.writeAttribute(QStringLiteral("http://www.w3.org/2001/XMLSchema-instance"),
+                       QStringLiteral("noNamespaceSchemaLocation"),
                        QStringLiteral("http://www.mpi.nl/tools/elan/EAFv3.0.xsd"));
 
     xml.writeStartElement(QStringLiteral("HEADER"));
@@ -118,8 +124,8 @@ Status exportAnnotationsEaf(const Annotations& annotations, const QString& file)
         xml.writeAttribute(QStringLiteral("LINGUISTIC_TYPE_REF"), type);
         xml.writeAttribute(QStringLiteral("TIER_ID"), tier.id);
         const QString& annotator = sorted[tier.annotations.front()].annotator;
-        if (!annotator.isEmpty() &&
-            std::all_of(tier.annotations.begin(), tier.annotations.end(), [&](std::size_t i) { return sorted[i].annotator == annotator; }))
+        if (!annotator.isEmpty() && std::all_of(tier.annotations.begin(), tier.annotations.end(),
+                                                [&](std::size_t i) { return sorted[i].annotator == annotator; }))
             xml.writeAttribute(QStringLiteral("ANNOTATOR"), annotator);
         for (std::size_t i : tier.annotations) {
             xml.writeStartElement(QStringLiteral("ANNOTATION"));

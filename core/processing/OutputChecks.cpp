@@ -8,7 +8,8 @@ namespace {
 
 Status checkStream(const Stream& stream, const QString& path) {
     if (stream.info().rows == 0)
-        return makeError(QStringLiteral("output '%1' would be empty (0 rows): the run produced nothing to store").arg(path));
+        return makeError(
+            QStringLiteral("output '%1' would be empty (0 rows): the run produced nothing to store").arg(path));
     if (!stream.isLoaded() || stream.info().columns.empty()) return {};  // file-backed: checked when it was written
     auto data = stream.data();
     if (!data) return data.error();
@@ -27,7 +28,8 @@ Status checkStream(const Stream& stream, const QString& path) {
 Status checkOutputUseful(const ProcessorOutput& output, const QString& path) {
     if (const auto* stream = std::get_if<Stream>(&output.item)) return checkStream(*stream, path);
     if (const auto* table = std::get_if<Table>(&output.item); table && table->rows() == 0)
-        return makeError(QStringLiteral("output table '%1' would be empty (0 rows): the run produced nothing to store").arg(path));
+        return makeError(
+            QStringLiteral("output table '%1' would be empty (0 rows): the run produced nothing to store").arg(path));
     return {};
 }
 

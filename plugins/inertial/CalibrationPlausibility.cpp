@@ -23,10 +23,11 @@ double medianFieldNorm(const double* mag, std::size_t rows, std::size_t stride) 
 
 QStringList checkMagnetometer(double fieldNorm, const PlausibilityLimits& limits) {
     if (std::isfinite(fieldNorm) && fieldNorm >= limits.magFieldMin && fieldNorm <= limits.magFieldMax) return {};
-    return {QStringLiteral("the magnetic field after calibration is %1 µT (median |m|), outside mag_field_min … "
-                           "mag_field_max = %2 … %3 µT, the geomagnetic total intensity at the Earth's surface (World "
-                           "Magnetic Model): check the magnetometer's unit and calibrate away from magnetic disturbances")
-                .arg(num(fieldNorm, 4), num(limits.magFieldMin), num(limits.magFieldMax))};
+    return {
+        QStringLiteral("the magnetic field after calibration is %1 µT (median |m|), outside mag_field_min … "
+                       "mag_field_max = %2 … %3 µT, the geomagnetic total intensity at the Earth's surface (World "
+                       "Magnetic Model): check the magnetometer's unit and calibrate away from magnetic disturbances")
+            .arg(num(fieldNorm, 4), num(limits.magFieldMin), num(limits.magFieldMax))};
 }
 
 QStringList checkAccelerometer(const AccCalibration& acc, const std::vector<Vec3>& staticMeans, double gravity,
@@ -35,8 +36,9 @@ QStringList checkAccelerometer(const AccCalibration& acc, const std::vector<Vec3
     const char* axes[] = {"x", "y", "z"};
     for (int i = 0; i < 3; ++i)
         if (!(std::abs(acc.scale[i] - 1.0) <= limits.accScaleTolerance))
-            findings << QStringLiteral("the fitted accelerometer scale factor %1 = %2 differs from 1 by more than "
-                                       "acc_scale_tolerance = %3")
+            findings << QStringLiteral(
+                            "the fitted accelerometer scale factor %1 = %2 differs from 1 by more than "
+                            "acc_scale_tolerance = %3")
                             .arg(QLatin1String(axes[i]), num(acc.scale[i], 4), num(limits.accScaleTolerance));
     double worst = 0.0, worstNorm = gravity;
     for (const Vec3& m : staticMeans) {
@@ -47,9 +49,11 @@ QStringList checkAccelerometer(const AccCalibration& acc, const std::vector<Vec3
         }
     }
     if (!(worst <= limits.accNormTolerance * gravity))
-        findings << QStringLiteral("|a| at rest after calibration is %1 m/s² in a static position, %2 % from gravity = "
-                                   "%3 m/s², more than acc_norm_tolerance = %4 of gravity")
-                        .arg(num(worstNorm, 4), num(100.0 * worst / gravity), num(gravity), num(limits.accNormTolerance));
+        findings << QStringLiteral(
+                        "|a| at rest after calibration is %1 m/s² in a static position, %2 % from gravity = "
+                        "%3 m/s², more than acc_norm_tolerance = %4 of gravity")
+                        .arg(num(worstNorm, 4), num(100.0 * worst / gravity), num(gravity),
+                             num(limits.accNormTolerance));
     return findings;
 }
 

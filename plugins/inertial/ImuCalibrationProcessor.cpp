@@ -77,11 +77,14 @@ ParameterSpecs ImuCalibrationProcessor::parameters() const {
     return {
         ParameterSpec::choice(QStringLiteral("gyr_offset"), modes, QStringLiteral("auto"),
                               tr("Estimate the gyroscope offset from rest periods (auto: when there is rest).")),
-        ParameterSpec::choice(QStringLiteral("acc_calibration"), modes, QStringLiteral("auto"),
-                              tr("Estimate accelerometer offset/scale (auto: when ≥ 6 static positions cover ±g on each axis).")),
-        ParameterSpec::choice(QStringLiteral("mag_calibration"), modes, QStringLiteral("auto"),
-                              tr("Fit magnetometer hard/soft iron (auto: when mag columns exist and the fit succeeds).")),
-        ParameterSpec::number(QStringLiteral("min_static"), 1.5, 0.1, 60.0, QStringLiteral("s"), tr("Shortest static position.")),
+        ParameterSpec::choice(
+            QStringLiteral("acc_calibration"), modes, QStringLiteral("auto"),
+            tr("Estimate accelerometer offset/scale (auto: when ≥ 6 static positions cover ±g on each axis).")),
+        ParameterSpec::choice(
+            QStringLiteral("mag_calibration"), modes, QStringLiteral("auto"),
+            tr("Fit magnetometer hard/soft iron (auto: when mag columns exist and the fit succeeds).")),
+        ParameterSpec::number(QStringLiteral("min_static"), 1.5, 0.1, 60.0, QStringLiteral("s"),
+                              tr("Shortest static position.")),
         ParameterSpec::number(QStringLiteral("gravity"), 9.81, 9.7, 9.9, QStringLiteral("m/s^2"), tr("Local gravity.")),
         ParameterSpec::number(QStringLiteral("acc_range"), 0.0, 0.0, 10000.0, QStringLiteral("m/s^2"),
                               tr("Accelerometer range for the saturation check (0: detect clipping).")),
@@ -221,14 +224,17 @@ Expected<std::vector<ProcessorOutput>> ImuCalibrationProcessor::run(const RunCon
         }
     }
     // Plausibility of what was estimated or applied (CalibrationPlausibility.h).
-    const auto limit = [&](const char* n, double fallback) { return c.has(QLatin1String(n)) ? c.number(QLatin1String(n)) : fallback; };
+    const auto limit = [&](const char* n, double fallback) {
+        return c.has(QLatin1String(n)) ? c.number(QLatin1String(n)) : fallback;
+    };
     const PlausibilityLimits limits{limit("mag_field_min", 22.0), limit("mag_field_max", 67.0),
                                     limit("acc_norm_tolerance", 0.03), limit("acc_scale_tolerance", 0.10)};
     const bool applied = attributes.contains(QStringLiteral("applied_from"));
     const bool accCalibrated = estimated.contains(QStringLiteral("acc")) ||
                                (applied && (cal.acc.offset != Vec3::Zero() || cal.acc.scale != Vec3::Ones()));
-    const bool magCalibrated = columns->mag >= 0 && (estimated.contains(QStringLiteral("mag")) ||
-                                                     (applied && (cal.mag.hardIron != Vec3::Zero() || cal.mag.softIron != Mat3::Identity())));
+    const bool magCalibrated =
+        columns->mag >= 0 && (estimated.contains(QStringLiteral("mag")) ||
+                              (applied && (cal.mag.hardIron != Vec3::Zero() || cal.mag.softIron != Mat3::Identity())));
     QStringList implausible;
     if (accCalibrated) implausible << checkAccelerometer(cal.acc, staticMeans, gravity, limits);
     if (magCalibrated) {
@@ -242,9 +248,10 @@ Expected<std::vector<ProcessorOutput>> ImuCalibrationProcessor::run(const RunCon
     }
     if (!implausible.isEmpty()) {
         if (!c.flag(QStringLiteral("accept_implausible")))
-            return makeError(QStringLiteral("implausible calibration of '%1': %2; nothing was stored (to store it anyway, "
-                                            "flagged, set accept_implausible=true)")
-                                 .arg(c.inputPath(0), implausible.join(QStringLiteral("; "))));
+            return makeError(
+                QStringLiteral("implausible calibration of '%1': %2; nothing was stored (to store it anyway, "
+                               "flagged, set accept_implausible=true)")
+                    .arg(c.inputPath(0), implausible.join(QStringLiteral("; "))));
         attributes.insert(QStringLiteral("implausible"), implausible.join(QStringLiteral("; ")));
     }
 

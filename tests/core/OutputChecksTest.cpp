@@ -30,7 +30,8 @@ public:
     }
     QList<InputSpec> inputs() const override { return {InputSpec{QStringLiteral("signal"), {}, false, false, {}}}; }
     QList<OutputSpec> outputs() const override {
-        return {OutputSpec{{}, false, QString(), {}}, OutputSpec{QStringLiteral("report"), true, QStringLiteral("report"), {}}};
+        return {OutputSpec{{}, false, QString(), {}},
+                OutputSpec{QStringLiteral("report"), true, QStringLiteral("report"), {}}};
     }
     Expected<std::vector<ProcessorOutput>> run(const RunContext& c) const override {
         auto input = c.samples(0);
@@ -40,7 +41,8 @@ public:
         if (result == QLatin1String("empty")) out = StreamData(0, out.columns);
         if (result == QLatin1String("nan") || result == QLatin1String("some-nan")) {
             for (std::size_t k = 0; k < out.values.size(); ++k)
-                out.values[k] = k % 2 ? std::numeric_limits<double>::quiet_NaN() : std::numeric_limits<double>::infinity();
+                out.values[k] =
+                    k % 2 ? std::numeric_limits<double>::quiet_NaN() : std::numeric_limits<double>::infinity();
             if (result == QLatin1String("some-nan")) out.values[3] = 1.0;
         }
         Table report;
@@ -61,7 +63,8 @@ protected:
         project_ = Project::create(dir_.filePath(QStringLiteral("p.athlos")));
         StreamInfo info;
         info.kind = QStringLiteral("imu");
-        info.columns = {{QStringLiteral("acc_x"), QStringLiteral("m/s^2")}, {QStringLiteral("acc_y"), QStringLiteral("m/s^2")}};
+        info.columns = {{QStringLiteral("acc_x"), QStringLiteral("m/s^2")},
+                        {QStringLiteral("acc_y"), QStringLiteral("m/s^2")}};
         StreamData d(10, 2);
         for (std::size_t k = 0; k < 10; ++k) {
             d.t[k] = 0.01 * double(k);
@@ -73,7 +76,9 @@ protected:
     }
     Expected<RunOutcome> run(const char* result) {
         return runProcessor(*project_, processor_,
-                            RunRequest{processor_.id(), {QStringLiteral("rec/imu")}, QStringLiteral("rec/out"),
+                            RunRequest{processor_.id(),
+                                       {QStringLiteral("rec/imu")},
+                                       QStringLiteral("rec/out"),
                                        {{QStringLiteral("result"), QString::fromLatin1(result)}}});
     }
     void expectUnchanged() {
@@ -91,24 +96,28 @@ protected:
 TEST_F(OutputChecks, EmptyStreamIsRefusedAndNothingStored) {
     auto outcome = run("empty");
     ASSERT_FALSE(outcome.ok());
-    EXPECT_EQ(outcome.message(),
-              QStringLiteral("test-shape: output 'rec/out' would be empty (0 rows): the run produced nothing to store"));
+    EXPECT_EQ(
+        outcome.message(),
+        QStringLiteral("test-shape: output 'rec/out' would be empty (0 rows): the run produced nothing to store"));
     expectUnchanged();
 }
 
 TEST_F(OutputChecks, AllNanStreamIsRefusedAndNothingStored) {
     auto outcome = run("nan");
     ASSERT_FALSE(outcome.ok());
-    EXPECT_EQ(outcome.message(), QStringLiteral("test-shape: output 'rec/out': every value of its 10 rows × 2 columns is "
-                                                "NaN or infinite: the run produced nothing to store"));
+    EXPECT_EQ(outcome.message(),
+              QStringLiteral("test-shape: output 'rec/out': every value of its 10 rows × 2 columns is "
+                             "NaN or infinite: the run produced nothing to store"));
     expectUnchanged();
 }
 
 TEST_F(OutputChecks, EmptyTableIsRefusedEvenAfterAUsefulStream) {
     auto outcome = run("empty-table");
     ASSERT_FALSE(outcome.ok());
-    EXPECT_EQ(outcome.message(),
-              QStringLiteral("test-shape: output table 'rec/out-report' would be empty (0 rows): the run produced nothing to store"));
+    EXPECT_EQ(
+        outcome.message(),
+        QStringLiteral(
+            "test-shape: output table 'rec/out-report' would be empty (0 rows): the run produced nothing to store"));
     expectUnchanged();  // the stream before it was not stored either
 }
 

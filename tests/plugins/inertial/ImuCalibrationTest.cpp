@@ -95,13 +95,17 @@ athlos::Stream turningImu(double field, double scale) {
     const std::size_t n = 2000;
     athlos::StreamInfo info;
     info.kind = QStringLiteral("imu");
-    for (const char* c : {"acc_x", "acc_y", "acc_z"}) info.columns.push_back({QString::fromLatin1(c), QStringLiteral("m/s^2")});
-    for (const char* c : {"gyr_x", "gyr_y", "gyr_z"}) info.columns.push_back({QString::fromLatin1(c), QStringLiteral("rad/s")});
-    for (const char* c : {"mag_x", "mag_y", "mag_z"}) info.columns.push_back({QString::fromLatin1(c), QStringLiteral("uT")});
+    for (const char* c : {"acc_x", "acc_y", "acc_z"})
+        info.columns.push_back({QString::fromLatin1(c), QStringLiteral("m/s^2")});
+    for (const char* c : {"gyr_x", "gyr_y", "gyr_z"})
+        info.columns.push_back({QString::fromLatin1(c), QStringLiteral("rad/s")});
+    for (const char* c : {"mag_x", "mag_y", "mag_z"})
+        info.columns.push_back({QString::fromLatin1(c), QStringLiteral("uT")});
     athlos::StreamData d(n, 9);
     const Vec3 hard(8.0, -5.0, 3.0);
     for (std::size_t k = 0; k < n; ++k) {
-        const double z = 1.0 - 2.0 * (double(k) + 0.5) / double(n), phi = 2.399963229728653 * double(k);  // golden angle
+        const double z = 1.0 - 2.0 * (double(k) + 0.5) / double(n),
+                     phi = 2.399963229728653 * double(k);  // golden angle
         const Vec3 u(std::sqrt(1 - z * z) * std::cos(phi), std::sqrt(1 - z * z) * std::sin(phi), z);
         d.t[k] = 0.01 * double(k);
         const Vec3 a = 9.81 * u.cross(Vec3::UnitX()).normalized(), g(1.0, -0.5, 0.8), m = scale * (field * u + hard);
@@ -116,7 +120,8 @@ athlos::Stream turningImu(double field, double scale) {
 
 athlos::Expected<athlos::RunOutcome> calibrate(athlos::Project& project, QVariantMap params = {}) {
     const ImuCalibrationProcessor p;
-    return athlos::runProcessor(project, p, athlos::RunRequest{p.id(), {QStringLiteral("rec/imu")}, QStringLiteral("rec/cal"), params});
+    return athlos::runProcessor(
+        project, p, athlos::RunRequest{p.id(), {QStringLiteral("rec/imu")}, QStringLiteral("rec/cal"), params});
 }
 
 }  // namespace
@@ -140,9 +145,10 @@ TEST(ImuCalibrationPlausibility, FieldOutsideTheGeomagneticRangeIsRefused) {
     project->setModified(false);
     const auto outcome = calibrate(*project);
     ASSERT_FALSE(outcome.ok());
-    EXPECT_TRUE(outcome.message().startsWith(
-        "imu-calibration: implausible calibration of 'rec/imu': the magnetic field after calibration is 480 µT (median |m|), "
-        "outside mag_field_min … mag_field_max = 22 … 67 µT"))
+    EXPECT_TRUE(
+        outcome.message().startsWith("imu-calibration: implausible calibration of 'rec/imu': the magnetic field after "
+                                     "calibration is 480 µT (median |m|), "
+                                     "outside mag_field_min … mag_field_max = 22 … 67 µT"))
         << outcome.message().toStdString();
     EXPECT_TRUE(outcome.message().endsWith("(to store it anyway, flagged, set accept_implausible=true)"));
     EXPECT_EQ(project->stream(QStringLiteral("rec/cal")), nullptr);
@@ -172,7 +178,8 @@ TEST(ImuCalibrationPlausibility, OverrideStoresTheResultFlagged) {
     // A wider, explicit range accepts it unflagged.
     const auto wide = calibrate(*project, {{QStringLiteral("mag_field_max"), QStringLiteral("600")}});
     ASSERT_TRUE(wide.ok()) << wide.message().toStdString();
-    EXPECT_FALSE(project->table(QStringLiteral("rec/cal-calibration"))->attributes.contains(QStringLiteral("implausible")));
+    EXPECT_FALSE(
+        project->table(QStringLiteral("rec/cal-calibration"))->attributes.contains(QStringLiteral("implausible")));
 }
 
 TEST(ImuCalibrationPlausibility, AccelerometerScaleAndRestMagnitude) {
@@ -188,12 +195,14 @@ TEST(ImuCalibrationPlausibility, AccelerometerScaleAndRestMagnitude) {
     ASSERT_TRUE(fitted.has_value());
     const QStringList scale = checkAccelerometer(*fitted, means, 9.81, limits);
     ASSERT_EQ(scale.size(), 3) << scale.join("\n").toStdString();  // one per axis, none for |a| (the fit matched g)
-    EXPECT_EQ(scale[0], "the fitted accelerometer scale factor x = 0.8 differs from 1 by more than acc_scale_tolerance = 0.1");
+    EXPECT_EQ(scale[0],
+              "the fitted accelerometer scale factor x = 0.8 differs from 1 by more than acc_scale_tolerance = 0.1");
     // Identity calibration of that sensor: the rest magnitude is 20 % off.
     const QStringList rest = checkAccelerometer(AccCalibration{}, means, 9.81, limits);
     ASSERT_EQ(rest.size(), 1);
-    EXPECT_EQ(rest[0], "|a| at rest after calibration is 7.848 m/s² in a static position, 20 % from gravity = 9.81 m/s², "
-                       "more than acc_norm_tolerance = 0.03 of gravity");
+    EXPECT_EQ(rest[0],
+              "|a| at rest after calibration is 7.848 m/s² in a static position, 20 % from gravity = 9.81 m/s², "
+              "more than acc_norm_tolerance = 0.03 of gravity");
     // A 2 % sensor is plausible either way.
     for (Vec3& m : means) m *= 1.02 / 0.8;
     EXPECT_TRUE(checkAccelerometer(*calibrateAccelerometer(means, 9.81), means, 9.81, limits).isEmpty());

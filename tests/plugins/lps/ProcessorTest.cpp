@@ -109,11 +109,13 @@ TEST(LpsProcessors, NoFixAtAllIsAnErrorWithTheReason) {
     project->putStream("w/few", streamFromEpochs(epochs->epochs, *layout, "few"));
 
     const LpsPositioningProcessor positioning;
-    ASSERT_TRUE(run(*project, positioning, {"w/tdoa", "w/tdoa-beacons"}, "w/lps", {{"dimension", "2d"}}));  // the full one fixes
+    ASSERT_TRUE(run(*project, positioning, {"w/tdoa", "w/tdoa-beacons"}, "w/lps",
+                    {{"dimension", "2d"}}));  // the full one fixes
     const Status s = run(*project, positioning, {"w/few", "w/tdoa-beacons"}, "w/lps-few", {{"dimension", "2d"}});
     ASSERT_FALSE(s);
-    EXPECT_TRUE(s.message().startsWith("lps-positioning: no fix: no instant of TDoA stream 'w/few' had enough beacons: "
-                                       "need ≥4 (min_beacons, 2d), the most was 2"))
+    EXPECT_TRUE(
+        s.message().startsWith("lps-positioning: no fix: no instant of TDoA stream 'w/few' had enough beacons: "
+                               "need ≥4 (min_beacons, 2d), the most was 2"))
         << s.message().toStdString();
     EXPECT_EQ(project->stream("w/lps-few"), nullptr);
 }
