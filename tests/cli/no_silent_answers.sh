@@ -22,6 +22,14 @@ expect_fail "no fix" "^athlos: lps-positioning: no fix: no instant of TDoA strea
   "$ATHLOS" run "$P" lps-positioning --input few/tdoa,venue/beacons --output few/lps --param dimension=2d
 cmp -s "$P" "$WORK/before.athlos" || fail "no fix: the project changed"
 
+# --- any processor: an output of only NaN is refused by the run contract (core OutputChecks).
+printf 't,acc_x\n0,nan\n0.01,nan\n0.02,nan\n0.03,nan\n0.05,nan\n' > "$WORK/nan.csv"
+expect_ok "import nan" "$ATHLOS" import "$P" "$WORK/nan.csv" --as blank --kind imu
+cp "$P" "$WORK/before.athlos"
+expect_fail "all NaN" "^athlos: resample: output 'blank/rs': every value of its 6 rows × 1 columns is NaN or infinite" \
+  "$ATHLOS" run "$P" resample --input blank/imu --output blank/rs --param rate=100
+cmp -s "$P" "$WORK/before.athlos" || fail "all NaN: the project changed"
+
 # --- imu-calibration of a magnetometer whose numbers are milligauss read as µT: 48 µT becomes
 # 480 "µT", outside the geomagnetic range. The sensor turns through every direction (Fibonacci
 # spiral over the sphere) so that the ellipsoid fit itself succeeds.
