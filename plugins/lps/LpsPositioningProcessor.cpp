@@ -21,26 +21,23 @@ Error noFixError(const RunContext& context, const std::vector<TdoaEpoch>& epochs
         most = std::max(most, e.readings.size());
         enough += e.readings.size() >= std::size_t(minBeacons);
     }
-    const QString needed = QStringLiteral("need ≥%1 (min_beacons, %2)")
-                               .arg(minBeacons)
-                               .arg(spatial ? QStringLiteral("3d") : QStringLiteral("2d"));
+    const QString least = QStringLiteral("≥%1").arg(minBeacons);
+    const QString why = QStringLiteral("min_beacons, %1").arg(spatial ? QStringLiteral("3d") : QStringLiteral("2d"));
     if (epochs.empty())
         return makeError(
             QStringLiteral("no fix: TDoA stream '%1' has no readings (every dt is NaN)").arg(context.inputPath(0)));
     if (enough == 0)
-        return makeError(
-            QStringLiteral("no fix: no instant of TDoA stream '%1' had enough beacons: %2, the most was %3 "
-                           "(%4 instants, beacon table '%5')")
-                .arg(context.inputPath(0), needed)
-                .arg(most)
-                .arg(epochs.size())
-                .arg(context.inputPath(1)));
-    return makeError(
-        QStringLiteral("no fix: %1 of %2 instants of TDoA stream '%3' had enough beacons (%4) but none gave a "
-                       "converged, accepted solution (check the beacon table '%5' and the stream's frame)")
-            .arg(enough)
-            .arg(epochs.size())
-            .arg(context.inputPath(0), needed, context.inputPath(1)));
+        return makeError(QStringLiteral("no fix: no instant of TDoA stream '%1' had enough beacons: need %2 (%3), the "
+                                        "most was %4 (%5 instants, beacon table '%6')")
+                             .arg(context.inputPath(0), least, why)
+                             .arg(most)
+                             .arg(epochs.size())
+                             .arg(context.inputPath(1)));
+    return makeError(QStringLiteral("no fix: %1 of %2 instants of TDoA stream '%3' had %4 beacons (%5) but none gave a "
+                                    "converged, accepted solution (check the beacon table '%6' and the stream's frame)")
+                         .arg(enough)
+                         .arg(epochs.size())
+                         .arg(context.inputPath(0), least, why, context.inputPath(1)));
 }
 }  // namespace
 

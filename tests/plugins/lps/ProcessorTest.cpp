@@ -12,6 +12,7 @@
 
 #include <QTemporaryDir>
 #include <gtest/gtest.h>
+#include <random>
 
 using namespace athlos;
 using namespace athlos::lps;
@@ -118,4 +119,19 @@ TEST(LpsProcessors, NoFixAtAllIsAnErrorWithTheReason) {
                                "need ≥4 (min_beacons, 2d), the most was 2"))
         << s.message().toStdString();
     EXPECT_EQ(project->stream("w/lps-few"), nullptr);
+
+    // Enough beacons, but readings of ±0.5 ms (±150 km): no instant gives a converged, accepted fix.
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> garbage(-0.5e-3, 0.5e-3);
+    auto noise = epochsFromStream(full, **full.data(), *layout, "w/tdoa");
+    ASSERT_TRUE(noise.ok());
+    for (auto& e : noise->epochs)
+        for (auto& r : e.readings) r.dt = garbage(rng);
+    project->putStream("w/noise", streamFromEpochs(noise->epochs, *layout, "noise"));
+    const Status n = run(*project, positioning, {"w/noise", "w/tdoa-beacons"}, "w/lps-noise", {{"dimension", "2d"}});
+    ASSERT_FALSE(n);
+    EXPECT_TRUE(n.message().contains(QStringLiteral("instants of TDoA stream 'w/noise' had ≥4 beacons (min_beacons, 2d) "
+                                                    "but none gave a converged, accepted solution")))
+        << n.message().toStdString();
+    EXPECT_EQ(project->stream("w/lps-noise"), nullptr);
 }
