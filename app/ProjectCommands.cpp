@@ -146,20 +146,30 @@ int cmdInfo(const QStringList& args) {
 }
 
 int cmdExport(const QStringList& args) {
-    CommandParser p(QStringLiteral("export <project> <rec/stream>|<rec>/annotations --to <file.csv|file.h5|file.json>"),
-                    QStringLiteral("Export a stream or table to CSV (round-trips exactly) or HDF5; a recording's annotations "
-                                   "to CSV (start,end,label,confidence,source,annotator; s) or JSON."));
+    CommandParser p(
+        QStringLiteral("export <project> <rec/stream>|<rec>/annotations --to <file.csv|file.h5|file.json|file.eaf>"),
+        QStringLiteral(
+            "Export a stream or table to CSV (round-trips exactly) or HDF5; a recording's annotations "
+            "to CSV (start,end,label,confidence,source,annotator; s), JSON or ELAN .eaf (one tier per label)."));
     p.addPositional(QStringLiteral("project"), QStringLiteral("The .athlos file."));
     p.addPositional(QStringLiteral("item"), QStringLiteral("Stream or table as <recording>/<name>."));
-    p.addOption({QStringLiteral("to"), QStringLiteral("Output file; the format follows the extension (.csv, .h5/.hdf5)."), QStringLiteral("file")});
+    p.addOption(
+        {QStringLiteral("to"),
+         QStringLiteral(
+             "Output file; the format follows the extension (.csv, .h5/.hdf5; annotations: .csv, .json, .eaf)."),
+         QStringLiteral("file")});
     if (auto code = p.parse(args, 2, 2)) return *code;
     const QString to = p.parser().value(QStringLiteral("to"));
     if (to.isEmpty()) return fail(QStringLiteral("export needs --to <file.csv|file.h5>"), Usage);
     const QString suffix = QFileInfo(to).suffix().toLower();
     const bool csv = suffix == u"csv" || suffix == u"txt";
     const bool h5 = suffix == u"h5" || suffix == u"hdf5";
-    const bool json = suffix == u"json" && p.positional()[1].endsWith(QStringLiteral("/annotations"));
-    if (!csv && !h5 && !json) return fail(QStringLiteral("--to '%1': use a .csv or .h5 file name (.json for annotations)").arg(to), Usage);
+    const bool annotations = p.positional()[1].endsWith(QStringLiteral("/annotations"));
+    const bool json = suffix == u"json" && annotations;
+    const bool eaf = suffix == u"eaf" && annotations;
+    if (!csv && !h5 && !json && !eaf)
+        return fail(QStringLiteral("--to '%1': use a .csv or .h5 file name (.json or .eaf for annotations)").arg(to),
+                    Usage);
 
     auto project = Project::open(p.positional()[0]);
     if (!project) return fail(project.message());
@@ -172,7 +182,7 @@ int cmdExport(const QStringList& args) {
         status = csv ? exportTableCsv(*t, to) : exportTableHdf5(*t, to);
     } else if (const Recording* rec = (*project)->recording(item.section(QLatin1Char('/'), 0, 0));
                rec && item.section(QLatin1Char('/'), 1) == QLatin1String("annotations")) {
-        if (h5) return fail(QStringLiteral("--to '%1': annotations export to .csv or .json").arg(to), Usage);
+        if (h5) return fail(QStringLiteral("--to '%1': annotations export to .csv, .json or .eaf").arg(to), Usage);
         status = exportAnnotations(rec->annotations, to);
     } else {
         return fail(QStringLiteral("'%1' has no stream or table '%2' (see athlos info)").arg(p.positional()[0], item));

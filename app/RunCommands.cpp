@@ -33,6 +33,19 @@ void printProcessor(const Processor& p) {
     }
 }
 
+// An output a processor stored although a plausibility check failed (accepted with a parameter such
+// as imu-calibration's accept_implausible) carries the finding in its attribute "implausible".
+void warnImplausible(const Project& project, const QStringList& written) {
+    for (const auto& path : written) {
+        QJsonObject attributes;
+        if (const Stream* s = project.stream(path)) attributes = s->info().attributes;
+        if (const Table* t = project.table(path)) attributes = t->attributes;
+        const QString finding = attributes.value(QStringLiteral("implausible")).toString();
+        if (!finding.isEmpty())
+            std::fprintf(stderr, "athlos: warning: %s is implausible: %s\n", qUtf8Printable(path),
+                         qUtf8Printable(finding));
+    }
+}
 }  // namespace
 
 int cmdProcessors(const QStringList& args) {
@@ -89,6 +102,7 @@ int cmdRun(const QStringList& args) {
     bar.finish();
     for (const auto& w : outcome->written) std::printf("wrote %s\n", qUtf8Printable(w));
     for (const auto& a : outcome->annotated) std::printf("annotated %s\n", qUtf8Printable(a));
+    warnImplausible(**project, outcome->written);
     return Ok;
 }
 

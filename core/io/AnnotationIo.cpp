@@ -77,7 +77,9 @@ Status exportAnnotations(const Annotations& annotations, const QString& file) {
         return exportAnnotationsJson(annotations, file);
     if (suffix == QLatin1String("csv") || suffix == QLatin1String("txt"))
         return exportAnnotationsCsv(annotations, file);
-    return makeError(QStringLiteral("%1: annotations export to .csv or .json").arg(file));
+    if (suffix == QLatin1String("eaf"))
+        return exportAnnotationsEaf(annotations, file);
+    return makeError(QStringLiteral("%1: annotations export to .csv, .json or .eaf (ELAN)").arg(file));
 }
 
 Expected<Annotations> readAnnotationsCsv(const QString& file) {

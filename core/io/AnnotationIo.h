@@ -2,8 +2,8 @@
 // Annotations as files: CSV `start,end,label,confidence,source,annotator` (times in s, one row per
 // annotation; confidence, source and annotator optional on import), JSON {"annotations": [{"start",
 // "end", "label", "confidence", "source", "annotator"}]}, and ELAN .eaf (read: every tier's
-// time-aligned annotations, the tier name as annotator). Errors name the file and line (and column)
-// or the JSON entry.
+// time-aligned annotations, the tier name as annotator; write: EAF 3.0, one tier per label, times in
+// whole ms, see AnnotationEafExport.cpp). Errors name the file and line (and column) or the JSON entry.
 //
 // labelRuns() turns a per-sample label column into intervals: runs of equal labels, each from its
 // first sample to the first sample of the next run (the last run to the last sample); an empty
@@ -19,7 +19,9 @@ namespace athlos {
 
 Status exportAnnotationsCsv(const Annotations& annotations, const QString& file);
 Status exportAnnotationsJson(const Annotations& annotations, const QString& file);
-// By extension: .csv/.txt, .json.
+// ELAN Annotation Format 3.0; refuses negative times (ELAN's axis starts at 0).
+Status exportAnnotationsEaf(const Annotations& annotations, const QString& file);
+// By extension: .csv/.txt, .json, .eaf.
 Status exportAnnotations(const Annotations& annotations, const QString& file);
 
 Expected<Annotations> readAnnotationsCsv(const QString& file);

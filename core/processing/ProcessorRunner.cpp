@@ -1,5 +1,6 @@
 #include "core/processing/ProcessorRunner.h"
 
+#include "core/processing/OutputChecks.h"
 #include "core/processing/ProcessorRegistry.h"
 #include "core/util/Version.h"
 
@@ -129,6 +130,10 @@ Expected<RunOutcome> runProcessor(Project& project, const Processor& processor, 
     auto produced = processor.run(context);
     if (progress.isCancelled()) return cancelledError();
     if (!produced) return makeError(QStringLiteral("%1: %2").arg(pid, produced.message()));
+    // Nothing is stored unless every output holds something (OutputChecks.h).
+    for (const auto& item : *produced)
+        if (Status useful = checkOutputUseful(item, outputPathFor(request.output, item.suffix)); !useful)
+            return makeError(QStringLiteral("%1: %2").arg(pid, useful.message()));
 
     Provenance provenance;
     provenance.processorId = pid;

@@ -1,7 +1,8 @@
 #pragma once
 // Runs a processor against a project the same way for the GUI, the CLI and pipelines:
-// resolves and type-checks inputs, validates parameters, runs, attaches provenance and stores the
-// outputs. On any error or cancellation the project is left unchanged.
+// resolves and type-checks inputs, validates parameters, runs, refuses outputs that hold nothing
+// (OutputChecks.h), attaches provenance and stores the outputs. On any error or cancellation the
+// project is left unchanged.
 #include "core/model/Project.h"
 #include "core/processing/Processor.h"
 #include "core/util/Expected.h"

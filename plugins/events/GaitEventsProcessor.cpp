@@ -136,6 +136,14 @@ Expected<std::vector<ProcessorOutput>> GaitEventsProcessor::run(const RunContext
         }
     }
     detector.finish();
+    // Nothing found is refused with the likely causes, not stored as an empty table (issue #13 item 8).
+    if (detector.events().empty())
+        return context.inputError(0, QStringLiteral("no gait event found in %1 s of data (ml_axis = %2, swing_threshold = "
+                                                    "%3 rad/s): is it a foot-mounted IMU during walking or running, "
+                                                    "with the medio-lateral axis as ml_axis?")
+                                         .arg(d.rows() ? d.t.back() - d.t.front() : 0.0, 0, 'g', 4)
+                                         .arg(context.text(QStringLiteral("ml_axis")))
+                                         .arg(plan->params.swingThreshold));
 
     Table table;
     table.kind = QStringLiteral("gait-events");

@@ -2,6 +2,8 @@
 
 #include "core/processing/OutputStreams.h"
 #include "core/processing/Translator.h"
+#include "core/util/Units.h"
+#include "plugins/inertial/CalibrationPlausibility.h"
 #include "plugins/inertial/ImuCalibration.h"
 #include "plugins/inertial/ImuColumns.h"
 
@@ -75,16 +77,35 @@ ParameterSpecs ImuCalibrationProcessor::parameters() const {
     return {
         ParameterSpec::choice(QStringLiteral("gyr_offset"), modes, QStringLiteral("auto"),
                               tr("Estimate the gyroscope offset from rest periods (auto: when there is rest).")),
-        ParameterSpec::choice(QStringLiteral("acc_calibration"), modes, QStringLiteral("auto"),
-                              tr("Estimate accelerometer offset/scale (auto: when ≥ 6 static positions cover ±g on each axis).")),
-        ParameterSpec::choice(QStringLiteral("mag_calibration"), modes, QStringLiteral("auto"),
-                              tr("Fit magnetometer hard/soft iron (auto: when mag columns exist and the fit succeeds).")),
-        ParameterSpec::number(QStringLiteral("min_static"), 1.5, 0.1, 60.0, QStringLiteral("s"), tr("Shortest static position.")),
+        ParameterSpec::choice(
+            QStringLiteral("acc_calibration"), modes, QStringLiteral("auto"),
+            tr("Estimate accelerometer offset/scale (auto: when ≥ 6 static positions cover ±g on each axis).")),
+        ParameterSpec::choice(
+            QStringLiteral("mag_calibration"), modes, QStringLiteral("auto"),
+            tr("Fit magnetometer hard/soft iron (auto: when mag columns exist and the fit succeeds).")),
+        ParameterSpec::number(QStringLiteral("min_static"), 1.5, 0.1, 60.0, QStringLiteral("s"),
+                              tr("Shortest static position.")),
         ParameterSpec::number(QStringLiteral("gravity"), 9.81, 9.7, 9.9, QStringLiteral("m/s^2"), tr("Local gravity.")),
         ParameterSpec::number(QStringLiteral("acc_range"), 0.0, 0.0, 10000.0, QStringLiteral("m/s^2"),
                               tr("Accelerometer range for the saturation check (0: detect clipping).")),
         ParameterSpec::number(QStringLiteral("gyr_range"), 0.0, 0.0, 1000.0, QStringLiteral("rad/s"),
                               tr("Gyroscope range for the saturation check (0: detect clipping).")),
+        // Plausibility of the result; defaults and sources in CalibrationPlausibility.h.
+        ParameterSpec::number(QStringLiteral("mag_field_min"), 22.0, 0.0, 1e4, QStringLiteral("uT"),
+                              tr("Smallest plausible magnetic field after calibration (median |m|); default: the "
+                                 "minimum geomagnetic total intensity at the Earth's surface (World Magnetic Model).")),
+        ParameterSpec::number(QStringLiteral("mag_field_max"), 67.0, 0.0, 1e4, QStringLiteral("uT"),
+                              tr("Largest plausible magnetic field after calibration; default: the maximum geomagnetic "
+                                 "total intensity at the Earth's surface (World Magnetic Model).")),
+        ParameterSpec::number(QStringLiteral("acc_norm_tolerance"), 0.03, 0.0, 1.0, QStringLiteral("1"),
+                              tr("Largest plausible deviation of |a| at rest from gravity after calibration, as a "
+                                 "fraction of gravity; default: the ±3 % factory tolerance of MEMS accelerometers.")),
+        ParameterSpec::number(QStringLiteral("acc_scale_tolerance"), 0.10, 0.0, 10.0, QStringLiteral("1"),
+                              tr("Largest plausible |scale − 1| of a fitted accelerometer axis (datasheet tolerances, "
+                                 "rounded up).")),
+        ParameterSpec::boolean(QStringLiteral("accept_implausible"), false,
+                               tr("Store a calibration that fails the plausibility checks, flagged in the attribute "
+                                  "'implausible' of both outputs, instead of refusing it.")),
     };
 }
 
@@ -117,15 +138,19 @@ Expected<std::vector<ProcessorOutput>> ImuCalibrationProcessor::run(const RunCon
     Calibration cal;
     QJsonObject attributes;
     QStringList estimated;
+    std::vector<Vec3> staticMeans;  // raw accelerometer means of the rest segments
     if (c.inputCount() > 1 && c.table(1)) {
         auto given = fromTable(*c.table(1), c.inputPath(1));
         if (!given) return given.error();
         cal = *given;
         attributes.insert(QStringLiteral("applied_from"), c.inputPath(1));
+        const double minStatic = c.has(QStringLiteral("min_static")) ? c.number(QStringLiteral("min_static")) : 1.5;
+        for (const auto& s : findStaticSegments(batch, *ts, minStatic)) staticMeans.push_back(s.acc);
     } else {
         c.report(0.1, QStringLiteral("finding static periods"));
         const double minStatic = c.has(QStringLiteral("min_static")) ? c.number(QStringLiteral("min_static")) : 1.5;
         const auto segments = findStaticSegments(batch, *ts, minStatic);
+        for (const auto& s : segments) staticMeans.push_back(s.acc);
         attributes.insert(QStringLiteral("static_segments"), static_cast<int>(segments.size()));
         if (c.isCancelled()) return cancelledError();
         if (mode("gyr_offset") != QLatin1String("off")) {
@@ -198,8 +223,42 @@ Expected<std::vector<ProcessorOutput>> ImuCalibrationProcessor::run(const RunCon
             for (int i = 0; i < 3; ++i) row[columns->mag + i] = m[i];
         }
     }
+    // Plausibility of what was estimated or applied (CalibrationPlausibility.h).
+    const auto limit = [&](const char* n, double fallback) {
+        return c.has(QLatin1String(n)) ? c.number(QLatin1String(n)) : fallback;
+    };
+    const PlausibilityLimits limits{limit("mag_field_min", 22.0), limit("mag_field_max", 67.0),
+                                    limit("acc_norm_tolerance", 0.03), limit("acc_scale_tolerance", 0.10)};
+    const bool applied = attributes.contains(QStringLiteral("applied_from"));
+    const bool accCalibrated = estimated.contains(QStringLiteral("acc")) ||
+                               (applied && (cal.acc.offset != Vec3::Zero() || cal.acc.scale != Vec3::Ones()));
+    const bool magCalibrated =
+        columns->mag >= 0 && (estimated.contains(QStringLiteral("mag")) ||
+                              (applied && (cal.mag.hardIron != Vec3::Zero() || cal.mag.softIron != Mat3::Identity())));
+    QStringList implausible;
+    if (accCalibrated) implausible << checkAccelerometer(cal.acc, staticMeans, gravity, limits);
+    if (magCalibrated) {
+        // Stored in µT by the importers (SI-ish convention of Column.h); another declared unit is converted.
+        double toMicroTesla = 1.0;
+        if (const QString unit = input->info().columns[std::size_t(columns->mag)].unit; !unit.isEmpty())
+            if (auto conversion = conversionTo(unit, QStringLiteral("uT"))) toMicroTesla = conversion->scale;
+        const double field = toMicroTesla * medianFieldNorm(out.values.data() + columns->mag, out.rows(), stride);
+        attributes.insert(QStringLiteral("mag_field_median"), field);
+        implausible << checkMagnetometer(field, limits);
+    }
+    if (!implausible.isEmpty()) {
+        if (!c.flag(QStringLiteral("accept_implausible")))
+            return makeError(
+                QStringLiteral("implausible calibration of '%1': %2; nothing was stored (to store it anyway, "
+                               "flagged, set accept_implausible=true)")
+                    .arg(c.inputPath(0), implausible.join(QStringLiteral("; "))));
+        attributes.insert(QStringLiteral("implausible"), implausible.join(QStringLiteral("; ")));
+    }
+
     Stream calibrated = derivedStream(*input->stream, std::move(out));
     calibrated.info().attributes.insert(QStringLiteral("calibrated"), true);
+    if (!implausible.isEmpty())
+        calibrated.info().attributes.insert(QStringLiteral("implausible"), implausible.join(QStringLiteral("; ")));
     std::vector<ProcessorOutput> outputs;
     outputs.push_back({QString(), std::move(calibrated)});
     outputs.push_back({QStringLiteral("calibration"), toTable(cal, attributes)});

@@ -12,7 +12,7 @@ public:
     QString id() const override { return QStringLiteral("imu-calibration"); }
     QString name() const override;
     QString description() const override;
-    QString version() const override { return QStringLiteral("1.0"); }
+    QString version() const override { return QStringLiteral("1.1"); }  // 1.1: plausibility checks
     ParameterSpecs parameters() const override;
     QList<InputSpec> inputs() const override;
     QList<OutputSpec> outputs() const override;

@@ -11,6 +11,34 @@ namespace athlos::lps {
 
 namespace {
 constexpr Translator tr{"athlos::lps"};
+
+// Why a run gave no fix at all (issue #13 item 8: a run that produces nothing fails with the reason,
+// naming the stream and the numbers): too few beacons at every instant, or enough beacons but no
+// converged, accepted solution.
+Error noFixError(const RunContext& context, const std::vector<TdoaEpoch>& epochs, int minBeacons, bool spatial) {
+    std::size_t most = 0, enough = 0;
+    for (const auto& e : epochs) {
+        most = std::max(most, e.readings.size());
+        enough += e.readings.size() >= std::size_t(minBeacons);
+    }
+    const QString least = QStringLiteral("≥%1").arg(minBeacons);
+    const QString why = QStringLiteral("min_beacons, %1").arg(spatial ? QStringLiteral("3d") : QStringLiteral("2d"));
+    if (epochs.empty())
+        return makeError(
+            QStringLiteral("no fix: TDoA stream '%1' has no readings (every dt is NaN)").arg(context.inputPath(0)));
+    if (enough == 0)
+        return makeError(QStringLiteral("no fix: no instant of TDoA stream '%1' had enough beacons: need %2 (%3), the "
+                                        "most was %4 (%5 instants, beacon table '%6')")
+                             .arg(context.inputPath(0), least, why)
+                             .arg(most)
+                             .arg(epochs.size())
+                             .arg(context.inputPath(1)));
+    return makeError(QStringLiteral("no fix: %1 of %2 instants of TDoA stream '%3' had %4 beacons (%5) but none gave a "
+                                    "converged, accepted solution (check the beacon table '%6' and the stream's frame)")
+                         .arg(enough)
+                         .arg(epochs.size())
+                         .arg(context.inputPath(0), least, why, context.inputPath(1)));
+}
 }  // namespace
 
 struct LpsPositioningProcessor::Plan {
@@ -200,6 +228,9 @@ Expected<std::vector<ProcessorOutput>> LpsPositioningProcessor::run(const RunCon
                     {QStringLiteral("rms_residual"), QStringLiteral("m")}, {QStringLiteral("n_beacons"), QStringLiteral("1")}};
     std::size_t valid = 0;
     for (const auto& f : *fixes) valid += f.valid;
+    if (valid == 0)
+        return noFixError(context, plan->epochs.epochs, plan->params.selection.minBeacons,
+                          plan->params.solver.geometry == TdoaSolver::Geometry::Spatial);
     StreamData data(valid, 6);
     std::size_t r = 0;
     for (const auto& f : *fixes) {

@@ -7,6 +7,8 @@
 
 #include <QFile>
 #include <QTemporaryDir>
+#include <algorithm>
+#include <cmath>
 #include <gtest/gtest.h>
 
 using namespace athlos;
@@ -145,4 +147,50 @@ TEST_F(Labels, ElanEaf) {
     const auto broken = readAnnotationsEaf(write("t.eaf", "<ANNOTATION_DOCUMENT>\n<TIER>\n</ANNOTATION_DOCUMENT>\n"));
     ASSERT_FALSE(broken.ok());
     EXPECT_TRUE(broken.message().contains("t.eaf:3:")) << qPrintable(broken.message());
+}
+
+// ELAN export (issue #13 item 7): EAF 3.0 with one tier per label; read back by the ELAN import the
+// intervals and labels are the same to 1 ms. Overlapping annotations of one label go to a second
+// tier (ELAN forbids overlaps on a tier); negative times are refused.
+TEST_F(Labels, ElanEafExportRoundTrip) {
+    const Annotations list{ann("sprint", 1.5, 3.2504, "coach"),
+                           ann("walk", 0.0, 1.5, "coach"),
+                           {"jump", 4.0, 4.0, "model", 0.75, "gait-events"},
+                           ann("walk", 5.1234, 9.0, "coach"),
+                           ann("walk", 6.0, 7.0, "analyst"),
+                           ann("sprint, fast <&>", 10.0, 12.5, "coach")};
+    ASSERT_TRUE(exportAnnotations(list, path("a.eaf")).ok());
+    QFile file(path("a.eaf"));
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    const QByteArray xml = file.readAll();
+    for (const char* part :
+         {"<ANNOTATION_DOCUMENT AUTHOR=\"\" DATE=\"", "FORMAT=\"3.0\" VERSION=\"3.0\"",
+          "xsi:noNamespaceSchemaLocation=\"http://www.mpi.nl/tools/elan/EAFv3.0.xsd\"",
+          "<HEADER MEDIA_FILE=\"\" TIME_UNITS=\"milliseconds\">", "<TIME_SLOT TIME_SLOT_ID=\"ts1\" TIME_VALUE=\"0\"/>",
+          "<TIER LINGUISTIC_TYPE_REF=\"default-lt\" TIER_ID=\"walk\" ANNOTATOR=\"coach\">",
+          "<TIER LINGUISTIC_TYPE_REF=\"default-lt\" TIER_ID=\"walk (2)\" ANNOTATOR=\"analyst\">",
+          "<ANNOTATION_VALUE>sprint, fast &lt;&amp;&gt;</ANNOTATION_VALUE>",
+          "<LINGUISTIC_TYPE GRAPHIC_REFERENCES=\"false\" LINGUISTIC_TYPE_ID=\"default-lt\" TIME_ALIGNABLE=\"true\"/>"})
+        EXPECT_TRUE(xml.contains(part)) << part << "\n" << xml.toStdString();
+    EXPECT_LT(xml.indexOf("</TIME_ORDER>"), xml.indexOf("<TIER "));          // schema order: HEADER, TIME_ORDER,
+    EXPECT_LT(xml.lastIndexOf("</TIER>"), xml.indexOf("<LINGUISTIC_TYPE"));  // TIER*, LINGUISTIC_TYPE*
+
+    auto back = readAnnotationsEaf(path("a.eaf"));
+    ASSERT_TRUE(back.ok()) << qPrintable(back.message());
+    ASSERT_EQ(back->size(), list.size());
+    for (const Annotation& a : list) {
+        const auto same = std::count_if(back->begin(), back->end(), [&](const Annotation& b) {
+            return b.label == a.label && std::abs(b.tStart - a.tStart) <= 0.5e-3 && std::abs(b.tEnd - a.tEnd) <= 0.5e-3;
+        });
+        EXPECT_EQ(same, 1) << a.label.toStdString() << " " << a.tStart;
+    }
+    // The tiers are the classes: the tier name comes back as the annotator.
+    for (const Annotation& b : *back) EXPECT_TRUE(b.annotator.startsWith(b.label)) << b.annotator.toStdString();
+
+    const auto negative = exportAnnotations({ann("walk", -0.5, 1.0)}, path("n.eaf"));
+    ASSERT_FALSE(negative.ok());
+    EXPECT_TRUE(
+        negative.message().endsWith("n.eaf: ELAN times are milliseconds from 0; annotation 'walk' starts at -0.5 s"))
+        << qPrintable(negative.message());
+    EXPECT_FALSE(QFile::exists(path("n.eaf")));
 }

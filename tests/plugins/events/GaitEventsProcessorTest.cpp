@@ -115,4 +115,16 @@ TEST_F(GaitEventsProcessorTest, ClearErrors) {
     ASSERT_FALSE(missing.ok());
     EXPECT_TRUE(missing.message().contains(QStringLiteral("gyr_x"))) << qPrintable(missing.message());
     EXPECT_TRUE(project_->recording(QStringLiteral("walk"))->annotations.empty());  // nothing written on failure
+
+    // Standing still: no event is an error with the reason, not an empty events table.
+    info.columns = {{"gyr_x", "rad/s"}, {"gyr_y", "rad/s"}, {"gyr_z", "rad/s"}};
+    StreamData still(500, 3);
+    for (std::size_t k = 0; k < 500; ++k) still.t[k] = 0.01 * double(k);
+    project_->putStream(QStringLiteral("walk/still"), Stream(info, still));
+    auto none = run(QStringLiteral("walk/still"), QStringLiteral("walk/g"));
+    ASSERT_FALSE(none.ok());
+    EXPECT_TRUE(none.message().startsWith(QStringLiteral("gait-events: input 'walk/still' (imu): no gait event found in "
+                                                         "4.99 s of data (ml_axis = y, swing_threshold = ")))
+        << qPrintable(none.message());
+    EXPECT_EQ(project_->table(QStringLiteral("walk/g")), nullptr);
 }

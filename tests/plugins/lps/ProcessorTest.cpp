@@ -8,9 +8,11 @@
 #include "plugins/lps/LpsCalibrationProcessor.h"
 #include "plugins/lps/LpsPositioningProcessor.h"
 #include "plugins/lps/SimulateLpsProcessor.h"
+#include "plugins/lps/TdoaStream.h"
 
 #include <QTemporaryDir>
 #include <gtest/gtest.h>
+#include <random>
 
 using namespace athlos;
 using namespace athlos::lps;
@@ -91,4 +93,45 @@ TEST(LpsProcessors, PositioningHonoursCancellation) {
     Status s = run(*project, LpsPositioningProcessor(), {"r/tdoa", "r/tdoa-beacons"}, "r/lps", {}, Progress({}, token));
     ASSERT_FALSE(s);
     EXPECT_EQ(project->stream("r/lps"), nullptr);
+}
+
+// Issue #13 item 8: a positioning run without a single fix fails with the reason (here: two beacons
+// per instant where a 2D fix needs four) and stores nothing, instead of an empty stream and exit 0.
+TEST(LpsProcessors, NoFixAtAllIsAnErrorWithTheReason) {
+    QTemporaryDir dir;
+    auto project = Project::create(dir.filePath("p.athlos"));
+    ASSERT_TRUE(run(*project, SimulateLpsProcessor(), {}, "w/tdoa", {{"laps", "0.1"}}));
+    auto layout = layoutFromTable(*project->table("w/tdoa-beacons"), "w/tdoa-beacons");
+    ASSERT_TRUE(layout.ok());
+    const Stream& full = *project->stream("w/tdoa");
+    auto epochs = epochsFromStream(full, **full.data(), *layout, "w/tdoa");
+    ASSERT_TRUE(epochs.ok());
+    for (auto& e : epochs->epochs) e.readings.resize(std::min<std::size_t>(e.readings.size(), 2));  // two beacons heard
+    project->putStream("w/few", streamFromEpochs(epochs->epochs, *layout, "few"));
+
+    const LpsPositioningProcessor positioning;
+    ASSERT_TRUE(run(*project, positioning, {"w/tdoa", "w/tdoa-beacons"}, "w/lps",
+                    {{"dimension", "2d"}}));  // the full one fixes
+    const Status s = run(*project, positioning, {"w/few", "w/tdoa-beacons"}, "w/lps-few", {{"dimension", "2d"}});
+    ASSERT_FALSE(s);
+    EXPECT_TRUE(
+        s.message().startsWith("lps-positioning: no fix: no instant of TDoA stream 'w/few' had enough beacons: "
+                               "need ≥4 (min_beacons, 2d), the most was 2"))
+        << s.message().toStdString();
+    EXPECT_EQ(project->stream("w/lps-few"), nullptr);
+
+    // Enough beacons, but readings of ±0.5 ms (±150 km): no instant gives a converged, accepted fix.
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> garbage(-0.5e-3, 0.5e-3);
+    auto noise = epochsFromStream(full, **full.data(), *layout, "w/tdoa");
+    ASSERT_TRUE(noise.ok());
+    for (auto& e : noise->epochs)
+        for (auto& r : e.readings) r.dt = garbage(rng);
+    project->putStream("w/noise", streamFromEpochs(noise->epochs, *layout, "noise"));
+    const Status n = run(*project, positioning, {"w/noise", "w/tdoa-beacons"}, "w/lps-noise", {{"dimension", "2d"}});
+    ASSERT_FALSE(n);
+    EXPECT_TRUE(n.message().contains(QStringLiteral("instants of TDoA stream 'w/noise' had ≥4 beacons (min_beacons, 2d) "
+                                                    "but none gave a converged, accepted solution")))
+        << n.message().toStdString();
+    EXPECT_EQ(project->stream("w/lps-noise"), nullptr);
 }
