@@ -1419,8 +1419,8 @@
         </translation>
     </message>
     <message>
-        <source> · pitch &apos;%1&apos; %2 × %3 m</source>
-        <translation> · Feld &apos;%1&apos; %2 × %3 m</translation>
+        <source>Pitch &apos;%1&apos; %2 × %3 m</source>
+        <translation>Feld &apos;%1&apos; %2 × %3 m</translation>
     </message>
 </context>
 <context>

@@ -10,6 +10,7 @@
 #include "ui/views/PlaybackView.h"
 
 #include <Eigen/Geometry>
+#include <QComboBox>
 #include <QImage>
 #include <QPainter>
 #include <QTemporaryDir>
@@ -118,6 +119,7 @@ private slots:
         canvas->frameAll();
         QCOMPARE(view.venue(), VenueDrawing::Venue::Football);
         QCOMPARE(canvas->venueSize(), (VenueDrawing::Size{pitch.length(), pitch.width()}));
+        QCOMPARE(view.venueCombo()->currentText(), QStringLiteral("Pitch 'main' 100.0 × 64.0 m"));
 
         // Positions in the pitch frame: the GNSS athlete runs along x at y = 10 m.
         QCOMPARE(int(canvas->tracks().size()), 2);

@@ -119,10 +119,18 @@ Status PlaybackView::setRecording(const QString& recording)
     double begin = tracks->front().t.empty() ? 0 : tracks->front().t.front(), end = begin;
     for (const AthleteTrack& tr : *tracks)
         if (!tr.t.empty()) begin = std::min(begin, tr.t.front()), end = std::max(end, tr.t.back());
-    QString info = tr("%n athlete(s)", nullptr, int(tracks->size()));
-    if (pitch_)
-        info += tr(" · pitch '%1' %2 × %3 m").arg(pitch_->name()).arg(pitch_->length(), 0, 'f', 1).arg(pitch_->width(), 0, 'f', 1);
-    info_->setText(info);
+    // The surveyed pitch is named with its real size in the venue list (its kind's standard entry).
+    for (int i = 0; i < venueCombo_->count(); ++i) {
+        const auto v = VenueDrawing::fromId(venueCombo_->itemData(i).toString());
+        if (!v) continue;
+        const bool surveyed = pitch_ && VenueDrawing::ofPitch(pitch_->kind()) == *v;
+        venueCombo_->setItemText(i, surveyed ? tr("Pitch '%1' %2 × %3 m")
+                                                   .arg(pitch_->name())
+                                                   .arg(pitch_->length(), 0, 'f', 1)
+                                                   .arg(pitch_->width(), 0, 'f', 1)
+                                             : VenueDrawing::displayName(*v));
+    }
+    info_->setText(tr("%n athlete(s)", nullptr, int(tracks->size())));
     applyVenue(venue);
     canvas_->setTracks(std::move(tracks));
     canvas_->frameAll();
