@@ -25,6 +25,16 @@ TEST(TrackPlacement, OvalPoseFromTheHomeStraight) {
     // The finish line (s = 0) is where it was surveyed, to the residual.
     EXPECT_LT((placed->track.pointAt(0.0, 0.0).position - b).norm(), 0.02);
 
+    // Stored as a track document (athlos venue adds frame, units and the surveyed points), a
+    // processor's `track` parameter resolves it with its pose.
+    QJsonObject doc = placed->track.toJson();
+    doc.insert("name", "track");
+    doc.insert("frame", "enu");
+    auto resolved = TrackGeometry::resolve({{"track", doc}}, "track");
+    ASSERT_TRUE(resolved.ok()) << qPrintable(resolved.message());
+    EXPECT_NEAR(resolved->pose().rotation, 0.4, 1e-12);
+    EXPECT_LT((resolved->pointAt(0.0, 0.0).position - b).norm(), 0.02);
+
     auto refused = athlos::placeOval(TrackGeometry::iaaf400m(), a, a + Vector2d(70.0, 0.0), 1.0);
     ASSERT_FALSE(refused.ok());
     EXPECT_TRUE(refused.message().contains("the home straight of 'iaaf-400m' is 84.39 m")) << qPrintable(refused.message());
