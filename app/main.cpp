@@ -33,6 +33,8 @@ const char* kUsage =
     "  screenshot <project> --view <name> --to <file.png>   render a view offscreen\n"
     "  video <project> <recording> <file> [--offset S] | --detach | --info\n"
     "                                            attach a video to a recording\n"
+    "  venue <project> --corners \"LAT,LON;…\" | --corners-xy \"X,Y;…\" [--kind football|rugby|rectangle]\n"
+    "                                            place a pitch from its 4 corners (no corners: list venues)\n"
     "\n"
     "Every command has --help. Exit code 0 on success, non-zero with a one-line reason otherwise.\n";
 
@@ -63,6 +65,7 @@ int main(int argc, char** argv) {
         {QStringLiteral("info"), cmdInfo},       {QStringLiteral("processors"), cmdProcessors},
         {QStringLiteral("run"), cmdRun},         {QStringLiteral("export"), cmdExport},
         {QStringLiteral("pipeline"), cmdPipeline}, {QStringLiteral("video"), cmdVideo},
+        {QStringLiteral("venue"), cmdVenue},
     };
     const QString command = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QString();
 

@@ -1418,6 +1418,10 @@
             <numerusform>%n Athleten</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Pitch &apos;%1&apos; %2 × %3 m</source>
+        <translation>Feld &apos;%1&apos; %2 × %3 m</translation>
+    </message>
 </context>
 <context>
     <name>athlos::ui::PlotExporter</name>
@@ -1872,6 +1876,10 @@
     <message>
         <source>400 m track</source>
         <translation>400-m-Bahn</translation>
+    </message>
+    <message>
+        <source>Rectangle (surveyed pitch)</source>
+        <translation>Rechteck (vermessenes Feld)</translation>
     </message>
     <message>
         <source>None</source>

@@ -80,11 +80,11 @@ void grass(Pen& pen, double halfLength, double halfWidth, int stripes)
         pen.fill(rect(-halfLength + i * w, -halfWidth, -halfLength + (i + 1) * w, halfWidth), kGrassStripe);
 }
 
-void drawFootball(QPainter& painter, const QTransform& t)
+void drawFootball(QPainter& painter, const QTransform& t, VenueDrawing::Size size)
 {
     using V = VenueDrawing;
     Pen pen(painter, t);
-    const double hl = V::kPitchLength / 2, hw = V::kPitchWidth / 2;
+    const double hl = size.length / 2, hw = size.width / 2;
     grass(pen, hl, hw, 18);
     painter.setPen(linePen(t.m11()));
     painter.setBrush(Qt::NoBrush);
@@ -116,11 +116,11 @@ void drawFootball(QPainter& painter, const QTransform& t)
     }
 }
 
-void drawRugby(QPainter& painter, const QTransform& t)
+void drawRugby(QPainter& painter, const QTransform& t, VenueDrawing::Size size)
 {
     using V = VenueDrawing;
     Pen pen(painter, t);
-    const double hl = V::kRugbyLength / 2, hw = V::kRugbyWidth / 2, dead = hl + V::kRugbyInGoal;
+    const double hl = size.length / 2, hw = size.width / 2, dead = hl + V::kRugbyInGoal;
     grass(pen, dead, hw, 12);
     QPen solid = linePen(t.m11());
     QPen dashed = solid;
@@ -142,6 +142,19 @@ void drawRugby(QPainter& painter, const QTransform& t)
         painter.setPen(solid);
         for (const double u : {-2.8, 2.8}) pen.spot(s * hl, u, 0.25);
     }
+}
+
+// A surveyed rectangle without markings: its outline, the halfway line and the centre spot.
+void drawRectangle(QPainter& painter, const QTransform& t, VenueDrawing::Size size)
+{
+    Pen pen(painter, t);
+    const double hl = size.length / 2, hw = size.width / 2;
+    grass(pen, hl, hw, std::max(2, int(std::lround(size.length / 6.0))));
+    painter.setPen(linePen(t.m11()));
+    painter.setBrush(Qt::NoBrush);
+    pen.poly(rect(-hl, -hw, hl, hw));
+    pen.line(0, -hw, 0, hw);
+    pen.spot(0, 0, 0.22);
 }
 
 void drawTrack(QPainter& painter, const QTransform& t)
@@ -191,20 +204,21 @@ QString VenueDrawing::id(Venue venue)
     case Venue::Football: return QStringLiteral("football");
     case Venue::Rugby: return QStringLiteral("rugby");
     case Venue::Track: return QStringLiteral("track");
+    case Venue::Rectangle: return QStringLiteral("rectangle");
     default: return QStringLiteral("none");
     }
 }
 
 std::optional<VenueDrawing::Venue> VenueDrawing::fromId(const QString& id)
 {
-    for (Venue v : {Venue::None, Venue::Football, Venue::Rugby, Venue::Track})
+    for (Venue v : {Venue::None, Venue::Football, Venue::Rugby, Venue::Track, Venue::Rectangle})
         if (VenueDrawing::id(v) == id) return v;
     return std::nullopt;
 }
 
 QStringList VenueDrawing::ids()
 {
-    return {id(Venue::Football), id(Venue::Rugby), id(Venue::Track), id(Venue::None)};
+    return {id(Venue::Football), id(Venue::Rugby), id(Venue::Track), id(Venue::Rectangle), id(Venue::None)};
 }
 
 QString VenueDrawing::displayName(Venue venue)
@@ -213,17 +227,40 @@ QString VenueDrawing::displayName(Venue venue)
     case Venue::Football: return QCoreApplication::translate("athlos::ui::VenueDrawing", "Football pitch 105 × 68 m");
     case Venue::Rugby: return QCoreApplication::translate("athlos::ui::VenueDrawing", "Rugby pitch 100 × 70 m");
     case Venue::Track: return QCoreApplication::translate("athlos::ui::VenueDrawing", "400 m track");
+    case Venue::Rectangle: return QCoreApplication::translate("athlos::ui::VenueDrawing", "Rectangle (surveyed pitch)");
     default: return QCoreApplication::translate("athlos::ui::VenueDrawing", "None");
     }
 }
 
-QRectF VenueDrawing::bounds(Venue venue)
+VenueDrawing::Size VenueDrawing::sizeOf(Venue venue, Size size)
 {
+    if (size.length > 0 && size.width > 0) return size;
     switch (venue) {
-    case Venue::Football: return QRectF(-kPitchLength / 2 - 3, -kPitchWidth / 2 - 3, kPitchLength + 6, kPitchWidth + 6);
+    case Venue::Football: return {kPitchLength, kPitchWidth};
+    case Venue::Rugby: return {kRugbyLength, kRugbyWidth};
+    case Venue::Rectangle: return {100.0, 64.0};
+    default: return {};
+    }
+}
+
+VenueDrawing::Venue VenueDrawing::ofPitch(PitchGeometry::Kind kind)
+{
+    switch (kind) {
+    case PitchGeometry::Kind::Football: return Venue::Football;
+    case PitchGeometry::Kind::Rugby: return Venue::Rugby;
+    default: return Venue::Rectangle;
+    }
+}
+
+QRectF VenueDrawing::bounds(Venue venue, Size requested)
+{
+    const Size size = sizeOf(venue, requested);
+    switch (venue) {
+    case Venue::Football: return QRectF(-size.length / 2 - 3, -size.width / 2 - 3, size.length + 6, size.width + 6);
+    case Venue::Rectangle: return QRectF(-size.length / 2 - 2, -size.width / 2 - 2, size.length + 4, size.width + 4);
     case Venue::Rugby: {
-        const double hl = kRugbyLength / 2 + kRugbyInGoal + 2;
-        return QRectF(-hl, -kRugbyWidth / 2 - 2, 2 * hl, kRugbyWidth + 4);
+        const double hl = size.length / 2 + kRugbyInGoal + 2;
+        return QRectF(-hl, -size.width / 2 - 2, 2 * hl, size.width + 4);
     }
     case Venue::Track: {
         const TrackGeometry track = TrackGeometry::iaaf400m();
@@ -246,15 +283,16 @@ VenueDrawing::Venue VenueDrawing::guess(const QRectF& extent)
     return Venue::None;
 }
 
-void VenueDrawing::draw(QPainter& painter, const QTransform& worldToScreen, Venue venue, const QRectF& screen)
+void VenueDrawing::draw(QPainter& painter, const QTransform& worldToScreen, Venue venue, const QRectF& screen, Size size)
 {
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing, true);
     painter.fillRect(screen, venue == Venue::None ? QColor(250, 250, 250)
                              : venue == Venue::Track ? QColor(96, 140, 90) : kSurround);
     switch (venue) {
-    case Venue::Football: drawFootball(painter, worldToScreen); break;
-    case Venue::Rugby: drawRugby(painter, worldToScreen); break;
+    case Venue::Football: drawFootball(painter, worldToScreen, sizeOf(venue, size)); break;
+    case Venue::Rugby: drawRugby(painter, worldToScreen, sizeOf(venue, size)); break;
+    case Venue::Rectangle: drawRectangle(painter, worldToScreen, sizeOf(venue, size)); break;
     case Venue::Track: drawTrack(painter, worldToScreen); break;
     default: drawGrid(painter, worldToScreen, screen); break;
     }

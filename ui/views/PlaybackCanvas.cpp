@@ -60,6 +60,14 @@ void PlaybackCanvas::setVenue(VenueDrawing::Venue venue)
     update();
 }
 
+void PlaybackCanvas::setVenueSize(VenueDrawing::Size size)
+{
+    if (size == venueSize_) return;
+    venueSize_ = size;
+    if (!userView_) framed_ = false;
+    update();
+}
+
 void PlaybackCanvas::setTrailSeconds(double seconds)
 {
     trail_ = std::max(0.0, seconds);
@@ -81,7 +89,7 @@ QTransform PlaybackCanvas::worldToScreen() const
 
 void PlaybackCanvas::frameAll()
 {
-    QRectF region = VenueDrawing::bounds(venue_);
+    QRectF region = VenueDrawing::bounds(venue_, venueSize_);
     const QRectF data = PlaybackTracks::extent(tracks());
     if (region.isEmpty()) region = data.isValid() ? data.adjusted(-2, -2, 2, 2) : QRectF(-50, -35, 100, 70);
     if (region.width() <= 0) region.adjust(-5, 0, 5, 0);
@@ -126,15 +134,16 @@ void PlaybackCanvas::drawVenue(QPainter& painter)
 {
     const qreal dpr = devicePixelRatioF();
     if (venuePixmap_.isNull() || cacheSize_ != size() || cacheCentre_ != centre_ || cacheScale_ != scale_ ||
-        cacheVenue_ != venue_ || cacheDpr_ != dpr) {
+        cacheVenue_ != venue_ || cacheVenueSize_ != venueSize_ || cacheDpr_ != dpr) {
         venuePixmap_ = QPixmap(size() * dpr);
         venuePixmap_.setDevicePixelRatio(dpr);
         QPainter p(&venuePixmap_);
-        VenueDrawing::draw(p, worldToScreen(), venue_, QRectF(QPointF(0, 0), QSizeF(size())));
+        VenueDrawing::draw(p, worldToScreen(), venue_, QRectF(QPointF(0, 0), QSizeF(size())), venueSize_);
         cacheSize_ = size();
         cacheCentre_ = centre_;
         cacheScale_ = scale_;
         cacheVenue_ = venue_;
+        cacheVenueSize_ = venueSize_;
         cacheDpr_ = dpr;
     }
     painter.drawPixmap(0, 0, venuePixmap_);

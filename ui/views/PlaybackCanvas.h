@@ -30,6 +30,9 @@ public:
     const std::vector<AthleteTrack>& tracks() const;
     void setVenue(VenueDrawing::Venue venue);
     VenueDrawing::Venue venue() const { return venue_; }
+    // The real size of the pitch (a surveyed one); {} = the venue's standard size.
+    void setVenueSize(VenueDrawing::Size size);
+    VenueDrawing::Size venueSize() const { return venueSize_; }
     void setTrailSeconds(double seconds);
     double trailSeconds() const { return trail_; }
     double time() const { return cursor_; }
@@ -65,6 +68,7 @@ private:
 
     std::shared_ptr<const std::vector<AthleteTrack>> tracks_;
     VenueDrawing::Venue venue_ = VenueDrawing::Venue::None;
+    VenueDrawing::Size venueSize_;
     double trail_ = 10.0;
     double cursor_ = 0.0;
     // View: world point at the widget centre and pixels per metre; framed until the user zooms/pans.
@@ -80,6 +84,7 @@ private:
     QPointF cacheCentre_;
     double cacheScale_ = 0.0;
     VenueDrawing::Venue cacheVenue_ = VenueDrawing::Venue::None;
+    VenueDrawing::Size cacheVenueSize_;
     qreal cacheDpr_ = 0.0;
     // Per-bin segment buffers, kept between frames to avoid allocations.
     std::array<std::vector<QLineF>, PlaybackTracks::kBins> segments_;

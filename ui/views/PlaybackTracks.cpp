@@ -1,5 +1,6 @@
 #include "ui/views/PlaybackTracks.h"
 
+#include "core/geometry/PitchGeometry.h"
 #include "core/model/Project.h"
 #include "ui/TrajectoryPanel.h"
 
@@ -77,7 +78,13 @@ QString PlaybackTracks::teamRecording(const Project& project, int minAthletes)
     return best;
 }
 
-bool PlaybackTracks::read(const Stream& stream, const QString& path, AthleteTrack& out)
+bool PlaybackTracks::isEnu(const Stream& stream)
+{
+    const StreamInfo& info = stream.info();
+    return info.attributes.contains(QStringLiteral("enu_origin")) || info.frame.compare(QLatin1String("enu"), Qt::CaseInsensitive) == 0;
+}
+
+bool PlaybackTracks::read(const Stream& stream, const QString& path, AthleteTrack& out, const PitchGeometry* pitch)
 {
     const StreamInfo& info = stream.info();
     const int cx = info.columnIndex(QStringLiteral("x")), cy = info.columnIndex(QStringLiteral("y"));
@@ -97,16 +104,23 @@ bool PlaybackTracks::read(const Stream& stream, const QString& path, AthleteTrac
         out.x[k] = float(d.at(k, std::size_t(cx)));
         out.y[k] = float(d.at(k, std::size_t(cy)));
     }
+    if (pitch && isEnu(stream))
+        for (std::size_t k = 0; k < n; ++k) {
+            const Eigen::Vector2d q = pitch->toPitch({d.at(k, std::size_t(cx)), d.at(k, std::size_t(cy))});
+            out.x[k] = float(q.x());
+            out.y[k] = float(q.y());
+        }
     computeSpeed(out);
     return true;
 }
 
-std::vector<AthleteTrack> PlaybackTracks::readRecording(const Project& project, const QString& recording)
+std::vector<AthleteTrack> PlaybackTracks::readRecording(const Project& project, const QString& recording,
+                                                        const PitchGeometry* pitch)
 {
     std::vector<AthleteTrack> tracks;
     for (const QString& path : positionStreams(project, recording)) {
         AthleteTrack track;
-        if (const Stream* s = project.stream(path); s && read(*s, path, track)) tracks.push_back(std::move(track));
+        if (const Stream* s = project.stream(path); s && read(*s, path, track, pitch)) tracks.push_back(std::move(track));
     }
     return tracks;
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 namespace athlos {
+class PitchGeometry;
 class Project;
 class Stream;
 }
@@ -45,10 +46,16 @@ public:
     // stream), more position streams breaking ties; empty if none.
     static QString teamRecording(const Project& project, int minAthletes);
 
-    // Reads one stream (loads its samples) into a track; false if it has no x/y.
-    static bool read(const Stream& stream, const QString& path, AthleteTrack& out);
-    // The tracks of every position stream of a recording.
-    static std::vector<AthleteTrack> readRecording(const Project& project, const QString& recording);
+    // Reads one stream (loads its samples) into a track; false if it has no x/y. With a pitch,
+    // positions in the project's ENU frame (GNSS x, y: attribute enu_origin, or frame "enu") are
+    // moved into the pitch frame (centre spot, x along the length); other frames (LPS, a simulated
+    // pitch) are taken as they are.
+    static bool read(const Stream& stream, const QString& path, AthleteTrack& out, const PitchGeometry* pitch = nullptr);
+    // Whether a stream's x, y are in the project's ENU frame.
+    static bool isEnu(const Stream& stream);
+    // The tracks of every position stream of a recording (in the pitch frame when given, see read()).
+    static std::vector<AthleteTrack> readRecording(const Project& project, const QString& recording,
+                                                   const PitchGeometry* pitch = nullptr);
     // Speed by central differences over about ±0.2 s (noise of single fixes is not speed), and its bin.
     static void computeSpeed(AthleteTrack& track);
 

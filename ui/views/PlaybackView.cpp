@@ -105,7 +105,9 @@ void PlaybackView::setTimeController(TimeController* controller)
 Status PlaybackView::setRecording(const QString& recording)
 {
     if (!project_ || !project_->recording(recording)) return makeError(tr("no recording '%1' in this project").arg(recording));
-    auto tracks = std::make_shared<std::vector<AthleteTrack>>(PlaybackTracks::readRecording(*project_, recording));
+    pitch_ = PitchGeometry::firstOf(project_->geometry());
+    auto tracks = std::make_shared<std::vector<AthleteTrack>>(
+        PlaybackTracks::readRecording(*project_, recording, pitch_ ? &*pitch_ : nullptr));
     if (tracks->empty())
         return makeError(tr("recording '%1' has no position stream (lps-position, trajectory or gnss with x, y)").arg(recording));
     loading_ = true;
@@ -117,8 +119,19 @@ Status PlaybackView::setRecording(const QString& recording)
     double begin = tracks->front().t.empty() ? 0 : tracks->front().t.front(), end = begin;
     for (const AthleteTrack& tr : *tracks)
         if (!tr.t.empty()) begin = std::min(begin, tr.t.front()), end = std::max(end, tr.t.back());
+    // The surveyed pitch is named with its real size in the venue list (its kind's standard entry).
+    for (int i = 0; i < venueCombo_->count(); ++i) {
+        const auto v = VenueDrawing::fromId(venueCombo_->itemData(i).toString());
+        if (!v) continue;
+        const bool surveyed = pitch_ && VenueDrawing::ofPitch(pitch_->kind()) == *v;
+        venueCombo_->setItemText(i, surveyed ? tr("Pitch '%1' %2 × %3 m")
+                                                   .arg(pitch_->name())
+                                                   .arg(pitch_->length(), 0, 'f', 1)
+                                                   .arg(pitch_->width(), 0, 'f', 1)
+                                             : VenueDrawing::displayName(*v));
+    }
     info_->setText(tr("%n athlete(s)", nullptr, int(tracks->size())));
-    canvas_->setVenue(venue);
+    applyVenue(venue);
     canvas_->setTracks(std::move(tracks));
     canvas_->frameAll();
     // The cursor can only reach the recording if the window's time range covers it: plot one of its
@@ -145,7 +158,7 @@ void PlaybackView::onVenueChosen()
 {
     const auto venue = VenueDrawing::fromId(venueCombo_->currentData().toString());
     if (!venue) return;
-    canvas_->setVenue(*venue);
+    applyVenue(*venue);
     canvas_->frameAll();
     if (loading_ || !project_) return;
     // A choice of the user is kept with the recording.
@@ -156,11 +169,21 @@ void PlaybackView::onVenueChosen()
     if (workspace_) workspace_->projectModified();
 }
 
+void PlaybackView::applyVenue(VenueDrawing::Venue venue)
+{
+    // The surveyed pitch has its real size when it is the venue shown.
+    const bool real = pitch_ && VenueDrawing::ofPitch(pitch_->kind()) == venue;
+    canvas_->setVenue(venue);
+    canvas_->setVenueSize(real ? VenueDrawing::Size{pitch_->length(), pitch_->width()} : VenueDrawing::Size{});
+}
+
 VenueDrawing::Venue PlaybackView::venueFor(const Project& project, const QString& recording, const QRectF* extent)
 {
     const Recording* rec = project.recording(recording);
     if (!rec) return VenueDrawing::Venue::None;
     if (auto stored = VenueDrawing::fromId(rec->metadata.value(QLatin1String(kVenueKey)).toString())) return *stored;
+    // A pitch placed from its corners is where the project's sessions are.
+    if (const auto pitch = PitchGeometry::firstOf(project.geometry())) return VenueDrawing::ofPitch(pitch->kind());
     // The streams' own word (a simulator or an import that knows the venue), by majority.
     std::map<QString, int> votes;
     for (const QString& path : PlaybackTracks::positionStreams(project, recording))

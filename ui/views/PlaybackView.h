@@ -1,11 +1,15 @@
 #pragma once
 // Team playback: every position stream of a recording (one per athlete) on a drawn venue, moving
 // with the window's time cursor (TimeController), with trails of the last N seconds coloured by
-// speed. The venue (football, rugby, 400 m track, none) defaults to a guess from the streams'
-// "venue" attribute, the project's sport or the data extent; a choice is stored in the recording's
-// metadata ("venue") and so persists with the project. Tool "View → Team playback…" (a dock) and
+// speed. The venue (football, rugby, 400 m track, rectangle, none) defaults to the project's pitch
+// (a pitch placed from its corners, `athlos venue`), else a guess from the streams' "venue"
+// attribute, the project's sport or the data extent; a choice is stored in the recording's
+// metadata ("venue") and so persists with the project. With a pitch, the view shows the pitch frame
+// (centre spot at the origin, x along the length): the pitch is drawn with its real length and
+// width, and positions in the project's ENU frame (GNSS) are moved into the pitch frame. Tool "View → Team playback…" (a dock) and
 // screenshot views "playback" and "team"; the built-in "trajectory" screenshot shows "team" when
 // the project has a team.
+#include "core/geometry/PitchGeometry.h"
 #include "core/util/Expected.h"
 #include "ui/venue/VenueDrawing.h"
 
@@ -13,6 +17,7 @@
 #include <QRectF>
 #include <QString>
 #include <QWidget>
+#include <optional>
 
 class QComboBox;
 class QDoubleSpinBox;
@@ -61,9 +66,11 @@ public:
 
 private:
     void onVenueChosen();
+    void applyVenue(VenueDrawing::Venue venue);
     void refreshRecordings();
 
     Project* project_;
+    std::optional<PitchGeometry> pitch_;  // the project's pitch, if one was placed
     QPointer<TimeController> time_;
     Workspace* workspace_ = nullptr;
     QComboBox* recordingCombo_ = nullptr;
