@@ -382,6 +382,14 @@
 
 %1</translation>
     </message>
+    <message>
+        <source>%1: not in the roster %2</source>
+        <translation>%1: nicht in der Kaderliste %2</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is in the roster but not among the files</source>
+        <translation>%1: „%2“ steht in der Kaderliste, aber nicht unter den Dateien</translation>
+    </message>
 </context>
 <context>
     <name>athlos::ui::ImportWizardCheckPage</name>
@@ -472,6 +480,29 @@
         <source>unreadable</source>
         <translation>nicht lesbar</translation>
     </message>
+    <message>
+        <source>Apply Roster…</source>
+        <translation>Kaderliste anwenden …</translation>
+    </message>
+    <message>
+        <source>A CSV file,athlete,number,team,position,mass_kg naming the athlete of each file</source>
+        <translation>Eine CSV-Datei file,athlete,number,team,position,mass_kg, die den Athleten jeder Datei nennt</translation>
+    </message>
+    <message>
+        <source>Roster</source>
+        <translation>Kaderliste</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv);;All files (*)</source>
+        <translation>CSV-Dateien (*.csv);;Alle Dateien (*)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n file(s) named from the roster.</source>
+        <translation>
+            <numerusform>%n Datei aus der Kaderliste benannt.</numerusform>
+            <numerusform>%n Dateien aus der Kaderliste benannt.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>athlos::ui::ImportWizardMappingPage</name>
@@ -520,10 +551,6 @@
         <translation>Importieren</translation>
     </message>
     <message>
-        <source>Unit:</source>
-        <translation>Einheit:</translation>
-    </message>
-    <message>
         <source>Time column:</source>
         <translation>Zeitspalte:</translation>
     </message>
@@ -550,6 +577,50 @@
     <message>
         <source>error</source>
         <translation>Fehler</translation>
+    </message>
+    <message>
+        <source>Durations (s, ms, …), device uptime, Unix epochs (unix, unix_ms, unix_ns), ISO 8601 date-times, clock times (hh:mm:ss[.fff]) or Excel serial days</source>
+        <translation>Dauern (s, ms, …), Gerätelaufzeit, Unix-Zeitstempel (unix, unix_ms, unix_ns), ISO-8601-Zeitpunkte, Uhrzeiten (hh:mm:ss[.fff]) oder Excel-Seriendatum</translation>
+    </message>
+    <message>
+        <source>Unit or format:</source>
+        <translation>Einheit oder Format:</translation>
+    </message>
+    <message>
+        <source>YYYY-MM-DD, for clock times without a date</source>
+        <translation>JJJJ-MM-TT, für Uhrzeiten ohne Datum</translation>
+    </message>
+    <message>
+        <source>ISO 8601 UTC instant of t = 0, for relative times</source>
+        <translation>ISO-8601-Zeitpunkt (UTC) von t = 0, für relative Zeiten</translation>
+    </message>
+    <message>
+        <source>Start:</source>
+        <translation>Beginn:</translation>
+    </message>
+    <message>
+        <source>Date:</source>
+        <translation>Datum:</translation>
+    </message>
+    <message>
+        <source>A per-sample label column (numbers or text): runs of equal labels become annotations</source>
+        <translation>Eine Label-Spalte pro Messwert (Zahlen oder Text): Folgen gleicher Labels werden zu Annotationen</translation>
+    </message>
+    <message>
+        <source>names of number labels: 0=rest,1=run</source>
+        <translation>Namen von Zahlen-Labels: 0=Ruhe,1=Laufen</translation>
+    </message>
+    <message>
+        <source>Labels:</source>
+        <translation>Labels:</translation>
+    </message>
+    <message>
+        <source>Leave out columns that are neither mapped nor known to the kind</source>
+        <translation>Spalten weglassen, die weder zugeordnet noch der Art bekannt sind</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
     </message>
 </context>
 <context>
@@ -1271,6 +1342,10 @@
         <source>Export View…</source>
         <translation>Ansicht exportieren…</translation>
     </message>
+    <message>
+        <source>Opened after an interrupted save</source>
+        <translation>Nach einem unterbrochenen Speichern geöffnet</translation>
+    </message>
 </context>
 <context>
     <name>athlos::ui::OrientationAnglesView</name>
@@ -1736,6 +1811,22 @@
     <message>
         <source>max</source>
         <translation>Max.</translation>
+    </message>
+    <message>
+        <source>Clock time</source>
+        <translation>Uhrzeit</translation>
+    </message>
+    <message>
+        <source>Label the time axis with the time of day (UTC) the file gives, instead of seconds since the first sample</source>
+        <translation>Die Zeitachse mit der Uhrzeit (UTC) aus der Datei beschriften statt mit Sekunden seit dem ersten Messwert</translation>
+    </message>
+    <message>
+        <source>time of day</source>
+        <translation>Uhrzeit</translation>
+    </message>
+    <message>
+        <source>time of day (UTC)</source>
+        <translation>Uhrzeit (UTC)</translation>
     </message>
 </context>
 <context>
