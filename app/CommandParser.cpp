@@ -14,12 +14,16 @@ CommandParser::CommandParser(const QString& usage, const QString& description) :
     parser_.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
 }
 
-void CommandParser::addPositional(const QString& name, const QString& help) { parser_.addPositionalArgument(name, help); }
+void CommandParser::addPositional(const QString& name, const QString& help) {
+    parser_.addPositionalArgument(name, help);
+}
 
 std::optional<int> CommandParser::parse(const QStringList& args, int positionalMin, int positionalMax) {
     QStringList full = args;
     full[0] = QStringLiteral("athlos ") + args[0];
-    if (!parser_.parse(full)) return fail(parser_.errorText() + QStringLiteral(" (see: athlos ") + usage_ + QStringLiteral(" --help)"), Usage);
+    if (!parser_.parse(full))
+        return fail(parser_.errorText() + QStringLiteral(" (see: athlos ") + usage_ + QStringLiteral(" --help)"),
+                    Usage);
     if (parser_.isSet(QStringLiteral("help"))) {
         QString help = parser_.helpText();
         help.replace(QRegularExpression(QStringLiteral("^Usage: [^\\n]*")), QStringLiteral("Usage: athlos ") + usage_);

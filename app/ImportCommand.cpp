@@ -19,53 +19,68 @@ namespace athlos::cli {
 int cmdImport(const QStringList& args) {
     QStringList formats;
     for (const auto& importer : importers()) formats << importer->format();
-    CommandParser p(QStringLiteral("import <project> <file>... | <folder> --as <rec>[/<stream>] [--format F] [--kind K] "
-                                   "[--column SRC=CHANNEL[:UNIT]]... [--skip COL]... [--drop-unmapped] [--time-column COL[:FORMAT]] [--date D] [--start T]"),
-                    QStringLiteral("Import a recording into a project. Nothing is written unless the whole import "
-                                   "succeeds; errors name the file, line and column."));
+    CommandParser p(
+        QStringLiteral("import <project> <file>... | <folder> --as <rec>[/<stream>] [--format F] [--kind K] "
+                       "[--column SRC=CHANNEL[:UNIT]]... [--skip COL]... [--drop-unmapped] [--time-column "
+                       "COL[:FORMAT]] [--date D] [--start T]"),
+        QStringLiteral("Import a recording into a project. Nothing is written unless the whole import "
+                       "succeeds; errors name the file, line and column."));
     p.addPositional(QStringLiteral("project"), QStringLiteral("The .athlos file (create it with athlos new)."));
-    p.addPositional(QStringLiteral("file"),
-                    QStringLiteral("The recording to import. Several files of one kind become one stream (the ranges of "
-                                   "several anchors, pieces of one recording); a folder gives one stream per file."));
-    p.addOption({QStringLiteral("as"), QStringLiteral("Recording name, or <rec>/<stream> to name the stream too."), QStringLiteral("rec")});
-    p.addOption({QStringLiteral("format"), QStringLiteral("auto (default) or one of: ") + formats.join(QStringLiteral(", ")),
-                 QStringLiteral("F"), QStringLiteral("auto")});
-    p.addOption({QStringLiteral("kind"), QStringLiteral("Stream kind for CSV: ") + streamKindNames().join(QStringLiteral(", ")),
+    p.addPositional(
+        QStringLiteral("file"),
+        QStringLiteral("The recording to import. Several files of one kind become one stream (the ranges of "
+                       "several anchors, pieces of one recording); a folder gives one stream per file."));
+    p.addOption({QStringLiteral("as"), QStringLiteral("Recording name, or <rec>/<stream> to name the stream too."),
+                 QStringLiteral("rec")});
+    p.addOption({QStringLiteral("format"),
+                 QStringLiteral("auto (default) or one of: ") + formats.join(QStringLiteral(", ")), QStringLiteral("F"),
+                 QStringLiteral("auto")});
+    p.addOption({QStringLiteral("kind"),
+                 QStringLiteral("Stream kind for CSV: ") + streamKindNames().join(QStringLiteral(", ")),
                  QStringLiteral("K")});
     p.addOption({QStringLiteral("time-repair"),
-                 QStringLiteral("Non-increasing time stamps: reject (default), sort (sort, drop duplicates) or drop (drop them)."),
+                 QStringLiteral(
+                     "Non-increasing time stamps: reject (default), sort (sort, drop duplicates) or drop (drop them)."),
                  QStringLiteral("mode"), QStringLiteral("reject")});
-    p.addOption({QStringLiteral("frame"), QStringLiteral("Coordinate frame, overriding the kind's default."), QStringLiteral("name")});
-    p.addOption({QStringLiteral("beacons"), QStringLiteral("A beacon table (id,x,y,z) to import alongside, as <rec>/beacons."),
+    p.addOption({QStringLiteral("frame"), QStringLiteral("Coordinate frame, overriding the kind's default."),
+                 QStringLiteral("name")});
+    p.addOption({QStringLiteral("beacons"),
+                 QStringLiteral("A beacon table (id,x,y,z) to import alongside, as <rec>/beacons."),
                  QStringLiteral("file")});
     p.addOption({QStringLiteral("overwrite"), QStringLiteral("Replace existing streams of the same name.")});
     p.addOption({QStringLiteral("column"),
                  QStringLiteral("CSV: store column SRC as CHANNEL, its values in UNIT (converted to SI); repeatable. "
                                 "SRC=:UNIT keeps the name."),
                  QStringLiteral("SRC=CHANNEL[:UNIT]")});
-    p.addOption({QStringLiteral("skip"), QStringLiteral("CSV: leave column COL out; repeatable."), QStringLiteral("COL")});
-    p.addOption({QStringLiteral("drop-unmapped"),
-                 QStringLiteral("CSV: leave out every column that is neither mapped with --column nor known to the kind.")});
+    p.addOption(
+        {QStringLiteral("skip"), QStringLiteral("CSV: leave column COL out; repeatable."), QStringLiteral("COL")});
+    p.addOption(
+        {QStringLiteral("drop-unmapped"),
+         QStringLiteral("CSV: leave out every column that is neither mapped with --column nor known to the kind.")});
     p.addOption({QStringLiteral("time-column"),
-                 QStringLiteral("CSV: the column with the time stamps (default t, in s) and their format: ") + timeFormatNames() + QStringLiteral("."),
+                 QStringLiteral("CSV: the column with the time stamps (default t, in s) and their format: ") +
+                     timeFormatNames() + QStringLiteral("."),
                  QStringLiteral("COL[:FORMAT]")});
     p.addOption({QStringLiteral("date"), QStringLiteral("The date of clock times (hh:mm:ss) when the file has none."),
                  QStringLiteral("YYYY-MM-DD")});
     p.addOption({QStringLiteral("start"), QStringLiteral("UTC date-time of t = 0 for relative times (ISO 8601)."),
                  QStringLiteral("datetime")});
-    p.addOption({QStringLiteral("labels"),
-                 QStringLiteral("CSV: a per-sample label column (numbers or text) that becomes annotations: runs of equal "
-                                "labels; an empty cell is no annotation."),
-                 QStringLiteral("COL")});
+    p.addOption(
+        {QStringLiteral("labels"),
+         QStringLiteral("CSV: a per-sample label column (numbers or text) that becomes annotations: runs of equal "
+                        "labels; an empty cell is no annotation."),
+         QStringLiteral("COL")});
     p.addOption({QStringLiteral("label-names"), QStringLiteral("Names of number labels: 0=rest,1=run,..."),
                  QStringLiteral("V=NAME,...")});
-    p.addOption({QStringLiteral("origin"),
-                 QStringLiteral("The project's geodetic origin for local ENU x, y, z of GNSS streams (default: the first fix "
-                                "of the first GNSS import)."),
-                 QStringLiteral("LAT,LON[,H]")});
-    p.addOption({QStringLiteral("roster"),
-                 QStringLiteral("Folder import: a CSV file,athlete,number,team,position,mass_kg naming each file's athlete."),
-                 QStringLiteral("file")});
+    p.addOption(
+        {QStringLiteral("origin"),
+         QStringLiteral("The project's geodetic origin for local ENU x, y, z of GNSS streams (default: the first fix "
+                        "of the first GNSS import)."),
+         QStringLiteral("LAT,LON[,H]")});
+    p.addOption(
+        {QStringLiteral("roster"),
+         QStringLiteral("Folder import: a CSV file,athlete,number,team,position,mass_kg naming each file's athlete."),
+         QStringLiteral("file")});
     p.addOption({QStringLiteral("athlete"), QStringLiteral("Athlete name, stored in the recording's metadata."),
                  QStringLiteral("name")});
     if (auto code = p.parse(args, 2, 100000)) return *code;
@@ -85,7 +100,8 @@ int cmdImport(const QStringList& args) {
     options.overwrite = p.parser().isSet(QStringLiteral("overwrite"));
     options.dropUnmapped = p.parser().isSet(QStringLiteral("drop-unmapped"));
     if (options.target.isEmpty()) options.target = folder ? QDir(file).dirName() : QFileInfo(file).completeBaseName();
-    if (!QStringList{QStringLiteral("reject"), QStringLiteral("sort"), QStringLiteral("drop")}.contains(options.timeRepair))
+    if (!QStringList{QStringLiteral("reject"), QStringLiteral("sort"), QStringLiteral("drop")}.contains(
+            options.timeRepair))
         return fail(QStringLiteral("--time-repair '%1': use reject, sort or drop").arg(options.timeRepair), Usage);
 
     for (const QString& spec : p.parser().values(QStringLiteral("column"))) {
@@ -109,7 +125,8 @@ int cmdImport(const QStringList& args) {
         if (!split) return fail(QStringLiteral("--time-column '%1': %2").arg(spec, split.message()), Usage);
         options.timeColumn = split->first;
         options.timeUnit = split->second;
-        if (options.timeColumn.isEmpty()) return fail(QStringLiteral("--time-column '%1': expected COL[:FORMAT]").arg(spec), Usage);
+        if (options.timeColumn.isEmpty())
+            return fail(QStringLiteral("--time-column '%1': expected COL[:FORMAT]").arg(spec), Usage);
     }
     if (p.parser().isSet(QStringLiteral("date"))) {
         options.date = p.parser().value(QStringLiteral("date")).trimmed();
@@ -130,7 +147,11 @@ int cmdImport(const QStringList& args) {
     if (p.parser().isSet(QStringLiteral("label-names"))) {
         if (options.labelColumn.isEmpty()) return fail(QStringLiteral("--label-names needs --labels COL"), Usage);
         auto names = parseLabelNames(p.parser().value(QStringLiteral("label-names")));
-        if (!names) return fail(QStringLiteral("--") + QString(names.message()).replace(QStringLiteral("label names"), QStringLiteral("label-names")), Usage);
+        if (!names)
+            return fail(
+                QStringLiteral("--") +
+                    QString(names.message()).replace(QStringLiteral("label names"), QStringLiteral("label-names")),
+                Usage);
         options.labelNames = std::move(*names);
     }
     if (const QString athlete = p.parser().value(QStringLiteral("athlete")).trimmed(); !athlete.isEmpty())
@@ -142,8 +163,9 @@ int cmdImport(const QStringList& args) {
     if (!project) return fail(project.message());
 
     TerminalProgress bar(QStringLiteral("import"));
-    auto result = folder ? importFolder(file, options, p.parser().value(QStringLiteral("roster")), bar.progress().sub(0.0, 0.7))
-                         : importFiles(files, options, bar.progress().sub(0.0, 0.7));
+    auto result =
+        folder ? importFolder(file, options, p.parser().value(QStringLiteral("roster")), bar.progress().sub(0.0, 0.7))
+               : importFiles(files, options, bar.progress().sub(0.0, 0.7));
     if (!result) return fail(result.message(), result.message() == u"cancelled" ? Cancelled : Failed);
     if (p.parser().isSet(QStringLiteral("beacons"))) {
         ImportOptions beaconOptions = options;

@@ -22,14 +22,16 @@ int fail(const QString& message, int code) {
 Expected<std::unique_ptr<Project>> openForChange(const QString& path) {
     auto project = Project::openForChange(path);
     if (project)
-        for (const QString& note : (*project)->notes()) std::fprintf(stderr, "athlos: note: %s\n", qUtf8Printable(note));
+        for (const QString& note : (*project)->notes())
+            std::fprintf(stderr, "athlos: note: %s\n", qUtf8Printable(note));
     return project;
 }
 
 int cmdNew(const QStringList& args) {
     CommandParser p(QStringLiteral("new <project> [--sport S]"), QStringLiteral("Create an empty project file."));
     p.addPositional(QStringLiteral("project"), QStringLiteral("The .athlos file to create."));
-    p.addOption({QStringLiteral("sport"), QStringLiteral("Sport of the project (e.g. athletics, football)."), QStringLiteral("S")});
+    p.addOption({QStringLiteral("sport"), QStringLiteral("Sport of the project (e.g. athletics, football)."),
+                 QStringLiteral("S")});
     p.addOption({QStringLiteral("force"), QStringLiteral("Replace an existing file.")});
     if (auto code = p.parse(args, 1, 1)) return *code;
     const QString path = p.positional()[0];
@@ -45,7 +47,8 @@ namespace {
 QJsonObject streamJson(const QString& rec, const Stream& s) {
     const auto& i = s.info();
     QJsonArray columns;
-    for (const auto& c : i.columns) columns.append(QJsonObject{{QStringLiteral("name"), c.name}, {QStringLiteral("unit"), c.unit}});
+    for (const auto& c : i.columns)
+        columns.append(QJsonObject{{QStringLiteral("name"), c.name}, {QStringLiteral("unit"), c.unit}});
     QJsonObject json{{QStringLiteral("path"), rec + QLatin1Char('/') + i.name},
                      {QStringLiteral("kind"), i.kind},
                      {QStringLiteral("frame"), i.frame},
@@ -62,8 +65,8 @@ QJsonObject streamJson(const QString& rec, const Stream& s) {
 QJsonObject tableJson(const QString& rec, const Table& t) {
     QJsonArray columns;
     for (const auto& c : t.columns)
-        columns.append(QJsonObject{{QStringLiteral("name"), c.name}, {QStringLiteral("unit"), c.unit},
-                                   {QStringLiteral("text"), c.isText}});
+        columns.append(QJsonObject{
+            {QStringLiteral("name"), c.name}, {QStringLiteral("unit"), c.unit}, {QStringLiteral("text"), c.isText}});
     QJsonObject json{{QStringLiteral("path"), rec + QLatin1Char('/') + t.name},
                      {QStringLiteral("kind"), t.kind},
                      {QStringLiteral("rows"), double(t.rows())},
@@ -102,15 +105,16 @@ QJsonObject projectJson(const Project& project) {
 
 void printText(const Project& project) {
     const auto& m = project.meta();
-    std::printf("%s\n  format %d, written by Athlos %s, modified %s%s\n", qUtf8Printable(project.path()), m.formatVersion,
-                qUtf8Printable(m.appVersion), qUtf8Printable(m.modified),
+    std::printf("%s\n  format %d, written by Athlos %s, modified %s%s\n", qUtf8Printable(project.path()),
+                m.formatVersion, qUtf8Printable(m.appVersion), qUtf8Printable(m.modified),
                 m.sport.isEmpty() ? "" : qUtf8Printable(QStringLiteral(", sport ") + m.sport));
     for (const auto& [name, rec] : project.recordings()) {
         std::printf("%s\n", qUtf8Printable(name));
         for (const auto& [n, s] : rec.streams) {
             const auto& i = s.info();
             QStringList cols;
-            for (const auto& c : i.columns) cols << (c.unit.isEmpty() ? c.name : QStringLiteral("%1[%2]").arg(c.name, c.unit));
+            for (const auto& c : i.columns)
+                cols << (c.unit.isEmpty() ? c.name : QStringLiteral("%1[%2]").arg(c.name, c.unit));
             const double rate = i.rows > 1 && i.tEnd > i.tBegin ? (i.rows - 1) / (i.tEnd - i.tBegin) : 0.0;
             std::printf("  %-24s %-14s %10lld samples  %.3f..%.3f s  ~%.4g Hz  frame %s\n    columns: %s\n",
                         qUtf8Printable(name + QLatin1Char('/') + n), qUtf8Printable(i.kind), i.rows, i.tBegin, i.tEnd,
@@ -119,20 +123,23 @@ void printText(const Project& project) {
             if (!i.provenance.isEmpty())
                 std::printf("    from: %s %s %s\n", qUtf8Printable(i.provenance.processorId),
                             qUtf8Printable(i.provenance.processorVersion),
-                            qUtf8Printable(QString::fromUtf8(QJsonDocument(i.provenance.parameters).toJson(QJsonDocument::Compact))));
+                            qUtf8Printable(QString::fromUtf8(
+                                QJsonDocument(i.provenance.parameters).toJson(QJsonDocument::Compact))));
         }
         for (const auto& [n, t] : rec.tables)
             std::printf("  %-24s %-14s %10lld rows (table)\n", qUtf8Printable(name + QLatin1Char('/') + n),
                         qUtf8Printable(t.kind), t.rows());
         if (!rec.annotations.empty()) std::printf("  %zu annotations\n", rec.annotations.size());
     }
-    if (!project.pipelineHistory().isEmpty()) std::printf("%lld pipeline run(s) recorded\n", qlonglong(project.pipelineHistory().size()));
+    if (!project.pipelineHistory().isEmpty())
+        std::printf("%lld pipeline run(s) recorded\n", qlonglong(project.pipelineHistory().size()));
 }
 
 }  // namespace
 
 int cmdInfo(const QStringList& args) {
-    CommandParser p(QStringLiteral("info <project> [--json]"), QStringLiteral("Describe a project without reading its samples."));
+    CommandParser p(QStringLiteral("info <project> [--json]"),
+                    QStringLiteral("Describe a project without reading its samples."));
     p.addPositional(QStringLiteral("project"), QStringLiteral("The .athlos file."));
     p.addOption({QStringLiteral("json"), QStringLiteral("Machine-readable output.")});
     if (auto code = p.parse(args, 1, 1)) return *code;

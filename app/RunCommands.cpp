@@ -17,7 +17,8 @@ namespace {
 int exitFor(const Error& error) { return error.message == u"cancelled" ? Cancelled : Failed; }
 
 void printProcessor(const Processor& p) {
-    std::printf("%s  (version %s)\n  %s\n", qUtf8Printable(p.id()), qUtf8Printable(p.version()), qUtf8Printable(p.description()));
+    std::printf("%s  (version %s)\n  %s\n", qUtf8Printable(p.id()), qUtf8Printable(p.version()),
+                qUtf8Printable(p.description()));
     for (const auto& in : p.inputs())
         std::printf("  input  %-12s %s%s%s\n", qUtf8Printable(in.name), in.table ? "table " : "",
                     qUtf8Printable(in.kinds.isEmpty() ? QStringLiteral("any") : in.kinds.join(QLatin1Char('|'))),
@@ -25,11 +26,13 @@ void printProcessor(const Processor& p) {
     for (const auto& s : p.parameters()) {
         QString detail = s.typeName();
         if (s.type == ParameterSpec::Type::Choice) detail = s.choices.join(QLatin1Char('|'));
-        if (s.defaultValue.isValid()) detail += QStringLiteral(", default ") + s.defaultValue.toString();
-        else if (!s.optional) detail += QStringLiteral(", required");
+        if (s.defaultValue.isValid())
+            detail += QStringLiteral(", default ") + s.defaultValue.toString();
+        else if (!s.optional)
+            detail += QStringLiteral(", required");
         if (!s.unit.isEmpty()) detail += QStringLiteral(", ") + s.unit;
-        std::printf("  --param %-14s %s\n      %s\n", qUtf8Printable(s.name + QStringLiteral("=…")), qUtf8Printable(detail),
-                    qUtf8Printable(s.help));
+        std::printf("  --param %-14s %s\n      %s\n", qUtf8Printable(s.name + QStringLiteral("=…")),
+                    qUtf8Printable(detail), qUtf8Printable(s.help));
     }
 }
 
@@ -49,11 +52,13 @@ void warnImplausible(const Project& project, const QStringList& written) {
 }  // namespace
 
 int cmdProcessors(const QStringList& args) {
-    CommandParser p(QStringLiteral("processors [--json]"), QStringLiteral("List processors with their parameter schemas."));
+    CommandParser p(QStringLiteral("processors [--json]"),
+                    QStringLiteral("List processors with their parameter schemas."));
     p.addOption({QStringLiteral("json"), QStringLiteral("Machine-readable output.")});
     if (auto code = p.parse(args, 0, 0)) return *code;
     auto& registry = ProcessorRegistry::instance();
-    for (const auto& e : registry.loadErrors()) std::fprintf(stderr, "athlos: warning: plugin not loaded: %s\n", qUtf8Printable(e));
+    for (const auto& e : registry.loadErrors())
+        std::fprintf(stderr, "athlos: warning: plugin not loaded: %s\n", qUtf8Printable(e));
     if (p.parser().isSet(QStringLiteral("json"))) {
         QJsonArray list;
         for (const auto& id : registry.ids()) list.append(registry.find(id)->describe());
@@ -68,13 +73,17 @@ int cmdProcessors(const QStringList& args) {
 }
 
 int cmdRun(const QStringList& args) {
-    CommandParser p(QStringLiteral("run <project> <processor> --input <rec/stream>[,…] --output <rec/stream> [--param k=v …]"),
-                    QStringLiteral("Run a processor and store its result with provenance. The project is saved only "
-                                   "when the run succeeds; Ctrl-C cancels and leaves it untouched."));
+    CommandParser p(
+        QStringLiteral("run <project> <processor> --input <rec/stream>[,…] --output <rec/stream> [--param k=v …]"),
+        QStringLiteral("Run a processor and store its result with provenance. The project is saved only "
+                       "when the run succeeds; Ctrl-C cancels and leaves it untouched."));
     p.addPositional(QStringLiteral("project"), QStringLiteral("The .athlos file."));
     p.addPositional(QStringLiteral("processor"), QStringLiteral("Processor id (see athlos processors)."));
-    p.addOption({QStringLiteral("input"), QStringLiteral("Input streams/tables, comma-separated, in the processor's order."), QStringLiteral("items")});
-    p.addOption({QStringLiteral("output"), QStringLiteral("Name of the result: <recording>/<name>."), QStringLiteral("item")});
+    p.addOption({QStringLiteral("input"),
+                 QStringLiteral("Input streams/tables, comma-separated, in the processor's order."),
+                 QStringLiteral("items")});
+    p.addOption(
+        {QStringLiteral("output"), QStringLiteral("Name of the result: <recording>/<name>."), QStringLiteral("item")});
     p.addOption({QStringLiteral("param"), QStringLiteral("Parameter, repeatable."), QStringLiteral("k=v")});
     if (auto code = p.parse(args, 2, 2)) return *code;
 
@@ -107,10 +116,11 @@ int cmdRun(const QStringList& args) {
 }
 
 int cmdPipeline(const QStringList& args) {
-    CommandParser p(QStringLiteral("pipeline <project> <pipeline.json>"),
-                    QStringLiteral("Run the steps of a pipeline file in order and record the pipeline in the project. "
-                                   "Format: {\"name\": …, \"steps\": [{\"processor\": id, \"input\": \"rec/a\" or [..], "
-                                   "\"output\": \"rec/b\", \"params\": {…}}]}. If any step fails nothing is saved."));
+    CommandParser p(
+        QStringLiteral("pipeline <project> <pipeline.json>"),
+        QStringLiteral("Run the steps of a pipeline file in order and record the pipeline in the project. "
+                       "Format: {\"name\": …, \"steps\": [{\"processor\": id, \"input\": \"rec/a\" or [..], "
+                       "\"output\": \"rec/b\", \"params\": {…}}]}. If any step fails nothing is saved."));
     p.addPositional(QStringLiteral("project"), QStringLiteral("The .athlos file."));
     p.addPositional(QStringLiteral("pipeline"), QStringLiteral("The pipeline JSON file."));
     if (auto code = p.parse(args, 2, 2)) return *code;

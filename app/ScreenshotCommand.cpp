@@ -13,12 +13,13 @@ int cmdScreenshot(const QStringList& args) {
     CommandParser p(QStringLiteral("screenshot <project> --view <name> --to <file.png>"),
                     QStringLiteral("Render a view of the project offscreen into a PNG (for CI and documentation)."));
     p.addPositional(QStringLiteral("project"), QStringLiteral("The .athlos file."));
-    p.addOption({QStringLiteral("view"), QStringLiteral("One of: ") + views.join(QStringLiteral(", ")), QStringLiteral("name"),
-                 QStringLiteral("main")});
+    p.addOption({QStringLiteral("view"), QStringLiteral("One of: ") + views.join(QStringLiteral(", ")),
+                 QStringLiteral("name"), QStringLiteral("main")});
     p.addOption({QStringLiteral("to"), QStringLiteral("PNG file to write."), QStringLiteral("file")});
     p.addOption({QStringLiteral("size"), QStringLiteral("Window size WxH (default 1280x800)."), QStringLiteral("WxH"),
                  QStringLiteral("1280x800")});
-    p.addOption({QStringLiteral("list"), QStringLiteral("Print the view names, one per line (for scripts), and exit.")});
+    p.addOption(
+        {QStringLiteral("list"), QStringLiteral("Print the view names, one per line (for scripts), and exit.")});
     if (auto code = p.parse(args, 0, 1)) return *code;
     if (p.parser().isSet(QStringLiteral("list"))) {
         for (const QString& view : views) std::printf("%s\n", qUtf8Printable(view));
@@ -31,7 +32,9 @@ int cmdScreenshot(const QStringList& args) {
     bool okW = false, okH = false;
     const QSize size(wh.value(0).toInt(&okW), wh.value(1).toInt(&okH));
     if (wh.size() != 2 || !okW || !okH || size.width() < 200 || size.height() < 150)
-        return fail(QStringLiteral("--size '%1': expected WxH, at least 200x150").arg(p.parser().value(QStringLiteral("size"))), Usage);
+        return fail(
+            QStringLiteral("--size '%1': expected WxH, at least 200x150").arg(p.parser().value(QStringLiteral("size"))),
+            Usage);
     if (Status s = ui::renderScreenshot(p.positional()[0], p.parser().value(QStringLiteral("view")), to, size); !s)
         return fail(s.message());
     return Ok;

@@ -22,14 +22,16 @@ namespace {
 constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 
 void printPitch(const PitchGeometry& g) {
-    std::printf("pitch '%s' (%s): length %.2f m, width %.2f m, rotation %.2f deg (%.5f rad, pitch x from East, "
-                "counter-clockwise)\n",
-                qUtf8Printable(g.name()), qUtf8Printable(PitchGeometry::kindId(g.kind())), g.length(), g.width(),
-                g.rotation() * kDegPerRad, g.rotation());
+    std::printf(
+        "pitch '%s' (%s): length %.2f m, width %.2f m, rotation %.2f deg (%.5f rad, pitch x from East, "
+        "counter-clockwise)\n",
+        qUtf8Printable(g.name()), qUtf8Printable(PitchGeometry::kindId(g.kind())), g.length(), g.width(),
+        g.rotation() * kDegPerRad, g.rotation());
     std::printf("  centre spot: x %.2f m, y %.2f m (ENU)\n", g.centre().x(), g.centre().y());
     if (!g.residuals().empty()) {
         QStringList r;
-        for (std::size_t i = 0; i < g.residuals().size(); ++i) r << QStringLiteral("%1: %2").arg(i + 1).arg(g.residuals()[i], 0, 'f', 3);
+        for (std::size_t i = 0; i < g.residuals().size(); ++i)
+            r << QStringLiteral("%1: %2").arg(i + 1).arg(g.residuals()[i], 0, 'f', 3);
         std::printf("  corner residuals (m): %s\n", qUtf8Printable(r.join(QStringLiteral(", "))));
     }
 }
@@ -44,11 +46,17 @@ Expected<std::vector<Eigen::Vector2d>> parsePairs(const QString& text, const QSt
         const double v0 = parts.size() == 2 ? parts[0].trimmed().toDouble(&ok0) : 0.0;
         const double v1 = parts.size() == 2 ? parts[1].trimmed().toDouble(&ok1) : 0.0;
         if (!ok0 || !ok1 || !std::isfinite(v0) || !std::isfinite(v1))
-            return makeError(QStringLiteral("%1: point %2 '%3' is not a pair of numbers A,B").arg(option).arg(i + 1).arg(items[i].trimmed()));
+            return makeError(QStringLiteral("%1: point %2 '%3' is not a pair of numbers A,B")
+                                 .arg(option)
+                                 .arg(i + 1)
+                                 .arg(items[i].trimmed()));
         points.emplace_back(v0, v1);
     }
     if (count > 0 && int(points.size()) != count)
-        return makeError(QStringLiteral("%1: expected %2 points separated by ';', got %3").arg(option).arg(count).arg(points.size()));
+        return makeError(QStringLiteral("%1: expected %2 points separated by ';', got %3")
+                             .arg(option)
+                             .arg(count)
+                             .arg(points.size()));
     if (points.empty()) return makeError(QStringLiteral("%1: no points").arg(option));
     return points;
 }
@@ -60,15 +68,20 @@ Expected<std::vector<Eigen::Vector2d>> toEnu(const std::vector<Eigen::Vector2d>&
     for (std::size_t i = 0; i < latLon.size(); ++i) {
         const Eigen::Vector2d& p = latLon[i];
         if (std::abs(p.x()) > 90.0 || std::abs(p.y()) > 180.0)
-            return makeError(QStringLiteral("%1: point %2 (%3, %4): latitude must be in [-90, 90], longitude in [-180, 180]")
-                                 .arg(option).arg(i + 1).arg(p.x(), 0, 'g', 10).arg(p.y(), 0, 'g', 10));
+            return makeError(
+                QStringLiteral("%1: point %2 (%3, %4): latitude must be in [-90, 90], longitude in [-180, 180]")
+                    .arg(option)
+                    .arg(i + 1)
+                    .arg(p.x(), 0, 'g', 10)
+                    .arg(p.y(), 0, 'g', 10));
         enu.push_back(plane.toEnu(p.x(), p.y(), origin.height).head<2>());
     }
     return enu;
 }
 
 // A placed track's document (TrackGeometry::toJson) with the frame and, from lat/lon, the points surveyed.
-QJsonObject trackDocument(const TrackGeometry& track, const QString& name, const std::optional<std::vector<Eigen::Vector2d>>& latLon,
+QJsonObject trackDocument(const TrackGeometry& track, const QString& name,
+                          const std::optional<std::vector<Eigen::Vector2d>>& latLon,
                           const std::optional<GeodeticOrigin>& origin) {
     QJsonObject json = track.toJson();
     json.insert(QStringLiteral("name"), name);
@@ -98,11 +111,13 @@ int listVenues(const Project& project, bool json) {
         }
         const QJsonObject pose = doc.value(QStringLiteral("pose")).toObject();
         if (!pose.isEmpty())
-            std::printf("%s '%s': pose x %.2f m, y %.2f m, rotation %.2f deg\n", qUtf8Printable(doc.value(QStringLiteral("type")).toString()),
-                        qUtf8Printable(name), pose.value(QStringLiteral("x")).toDouble(), pose.value(QStringLiteral("y")).toDouble(),
+            std::printf("%s '%s': pose x %.2f m, y %.2f m, rotation %.2f deg\n",
+                        qUtf8Printable(doc.value(QStringLiteral("type")).toString()), qUtf8Printable(name),
+                        pose.value(QStringLiteral("x")).toDouble(), pose.value(QStringLiteral("y")).toDouble(),
                         pose.value(QStringLiteral("rotation")).toDouble() * kDegPerRad);
         else
-            std::printf("%s '%s'\n", qUtf8Printable(doc.value(QStringLiteral("type")).toString()), qUtf8Printable(name));
+            std::printf("%s '%s'\n", qUtf8Printable(doc.value(QStringLiteral("type")).toString()),
+                        qUtf8Printable(name));
     }
     if (json) std::fputs(QJsonDocument(all).toJson(QJsonDocument::Indented).constData(), stdout);
     return Ok;
@@ -111,39 +126,49 @@ int listVenues(const Project& project, bool json) {
 }  // namespace
 
 int cmdVenue(const QStringList& args) {
-    CommandParser p(QStringLiteral("venue <project> [--name N] [--kind football|rugby|rectangle] "
-                                   "--corners \"LAT,LON;…\" | --corners-xy \"X,Y;…\" | --track T --straight \"A;B\" | "
-                                   "--straight-xy \"A;B\" | --polyline \"LAT,LON;…\" | --polyline-xy \"X,Y;…\" [--json]"),
-                    QStringLiteral("Place a pitch (or any rectangle) from its four corners, surveyed in lat/lon or in the "
-                                   "project's local East-North-Up x, y (m), given in order round the pitch (any start, "
-                                   "either direction). Prints the least-squares length, width, rotation (pitch x axis "
-                                   "from East, counter-clockwise) and each corner's residual, and stores the pitch in "
-                                   "the project; views then draw the real pitch. A track is placed by the two ends of "
-                                   "its home straight (on the kerb, start then finish), a polyline by its points. "
-                                   "Without points: lists the venues."));
+    CommandParser p(
+        QStringLiteral("venue <project> [--name N] [--kind football|rugby|rectangle] "
+                       "--corners \"LAT,LON;…\" | --corners-xy \"X,Y;…\" | --track T --straight \"A;B\" | "
+                       "--straight-xy \"A;B\" | --polyline \"LAT,LON;…\" | --polyline-xy \"X,Y;…\" [--json]"),
+        QStringLiteral("Place a pitch (or any rectangle) from its four corners, surveyed in lat/lon or in the "
+                       "project's local East-North-Up x, y (m), given in order round the pitch (any start, "
+                       "either direction). Prints the least-squares length, width, rotation (pitch x axis "
+                       "from East, counter-clockwise) and each corner's residual, and stores the pitch in "
+                       "the project; views then draw the real pitch. A track is placed by the two ends of "
+                       "its home straight (on the kerb, start then finish), a polyline by its points. "
+                       "Without points: lists the venues."));
     p.addPositional(QStringLiteral("project"), QStringLiteral("The .athlos file."));
-    p.addOption({QStringLiteral("name"), QStringLiteral("Name of the venue document (default: pitch, track or polyline)."),
+    p.addOption({QStringLiteral("name"),
+                 QStringLiteral("Name of the venue document (default: pitch, track or polyline)."),
                  QStringLiteral("N")});
     p.addOption({QStringLiteral("kind"),
                  QStringLiteral("What the rectangle is: football (IFAB markings), rugby (field of play: try lines and "
                                 "touch lines) or rectangle (no markings). Default: football."),
                  QStringLiteral("K"), QStringLiteral("football")});
-    p.addOption({QStringLiteral("corners"), QStringLiteral("The 4 corners as latitude,longitude (deg, WGS-84), ';' between corners."),
+    p.addOption({QStringLiteral("corners"),
+                 QStringLiteral("The 4 corners as latitude,longitude (deg, WGS-84), ';' between corners."),
                  QStringLiteral("LAT,LON;…")});
     p.addOption({QStringLiteral("corners-xy"), QStringLiteral("The 4 corners as x,y (m) in the project's ENU frame."),
                  QStringLiteral("X,Y;…")});
-    p.addOption({QStringLiteral("track"), QStringLiteral("An oval track to place: iaaf-400m or indoor-200m."), QStringLiteral("T")});
-    p.addOption({QStringLiteral("straight"),
-                 QStringLiteral("The start and the end (finish line) of the track's home straight on the kerb, lat,lon."),
-                 QStringLiteral("LAT,LON;LAT,LON")});
-    p.addOption({QStringLiteral("straight-xy"), QStringLiteral("As --straight, in x,y (m, ENU)."), QStringLiteral("X,Y;X,Y")});
-    p.addOption({QStringLiteral("polyline"), QStringLiteral("A track as a polyline of lat,lon points in running order."),
+    p.addOption({QStringLiteral("track"), QStringLiteral("An oval track to place: iaaf-400m or indoor-200m."),
+                 QStringLiteral("T")});
+    p.addOption(
+        {QStringLiteral("straight"),
+         QStringLiteral("The start and the end (finish line) of the track's home straight on the kerb, lat,lon."),
+         QStringLiteral("LAT,LON;LAT,LON")});
+    p.addOption(
+        {QStringLiteral("straight-xy"), QStringLiteral("As --straight, in x,y (m, ENU)."), QStringLiteral("X,Y;X,Y")});
+    p.addOption({QStringLiteral("polyline"),
+                 QStringLiteral("A track as a polyline of lat,lon points in running order."),
                  QStringLiteral("LAT,LON;…")});
-    p.addOption({QStringLiteral("polyline-xy"), QStringLiteral("As --polyline, in x,y (m, ENU)."), QStringLiteral("X,Y;…")});
+    p.addOption(
+        {QStringLiteral("polyline-xy"), QStringLiteral("As --polyline, in x,y (m, ENU)."), QStringLiteral("X,Y;…")});
     p.addOption({QStringLiteral("closed"), QStringLiteral("The polyline is a closed loop.")});
-    p.addOption({QStringLiteral("max-residual"),
-                 QStringLiteral("Refuse when a corner (or straight end) is further than this from the fitted venue (m, default 1)."),
-                 QStringLiteral("M"), QStringLiteral("1")});
+    p.addOption(
+        {QStringLiteral("max-residual"),
+         QStringLiteral(
+             "Refuse when a corner (or straight end) is further than this from the fitted venue (m, default 1)."),
+         QStringLiteral("M"), QStringLiteral("1")});
     p.addOption({QStringLiteral("origin"),
                  QStringLiteral("The project's geodetic origin when it has none yet (default: the first point)."),
                  QStringLiteral("LAT,LON[,H]")});
@@ -160,7 +185,9 @@ int cmdVenue(const QStringList& args) {
     if (given.isEmpty()) {
         for (const char* only : {"kind", "max-residual", "origin", "overwrite", "track", "closed", "name"})
             if (opt.isSet(QLatin1String(only)))
-                return fail(QStringLiteral("--%1 needs --corners or --corners-xy (or a track's points)").arg(QLatin1String(only)), Usage);
+                return fail(QStringLiteral("--%1 needs --corners or --corners-xy (or a track's points)")
+                                .arg(QLatin1String(only)),
+                            Usage);
         auto project = Project::open(projectPath);
         if (!project) return fail(project.message());
         return listVenues(**project, opt.isSet(QStringLiteral("json")));
@@ -172,18 +199,21 @@ int cmdVenue(const QStringList& args) {
     const QString pointsOption = QStringLiteral("--") + given.front();
     const bool latLon = !given.front().endsWith(QLatin1String("-xy"));
     enum class Mode { Pitch, Oval, Polyline };
-    const Mode mode = given.front().startsWith(QLatin1String("corners")) ? Mode::Pitch
+    const Mode mode = given.front().startsWith(QLatin1String("corners"))    ? Mode::Pitch
                       : given.front().startsWith(QLatin1String("straight")) ? Mode::Oval
                                                                             : Mode::Polyline;
     if (mode == Mode::Oval && !opt.isSet(QStringLiteral("track")))
-        return fail(QStringLiteral("%1 needs --track (%2)").arg(pointsOption, TrackGeometry::builtinNames().join(QStringLiteral(", "))), Usage);
+        return fail(QStringLiteral("%1 needs --track (%2)")
+                        .arg(pointsOption, TrackGeometry::builtinNames().join(QStringLiteral(", "))),
+                    Usage);
     if (mode != Mode::Oval && opt.isSet(QStringLiteral("track")))
         return fail(QStringLiteral("--track needs --straight or --straight-xy"), Usage);
     if (mode != Mode::Polyline && opt.isSet(QStringLiteral("closed")))
         return fail(QStringLiteral("--closed applies to --polyline"), Usage);
 
-    const QString defaultName = mode == Mode::Pitch ? QStringLiteral("pitch") : mode == Mode::Oval ? QStringLiteral("track")
-                                                                                                   : QStringLiteral("polyline");
+    const QString defaultName = mode == Mode::Pitch  ? QStringLiteral("pitch")
+                                : mode == Mode::Oval ? QStringLiteral("track")
+                                                     : QStringLiteral("polyline");
     const QString name = opt.isSet(QStringLiteral("name")) ? opt.value(QStringLiteral("name")).trimmed() : defaultName;
     if (name.isEmpty() || name.contains(QLatin1Char('/')))
         return fail(QStringLiteral("--name '%1': a venue name must be non-empty and without '/'").arg(name), Usage);
@@ -196,23 +226,28 @@ int cmdVenue(const QStringList& args) {
     bool ok = false;
     params.maxResidual = opt.value(QStringLiteral("max-residual")).toDouble(&ok);
     if (!ok || !(params.maxResidual > 0) || !std::isfinite(params.maxResidual))
-        return fail(QStringLiteral("--max-residual '%1': expected a positive number of metres").arg(opt.value(QStringLiteral("max-residual"))),
+        return fail(QStringLiteral("--max-residual '%1': expected a positive number of metres")
+                        .arg(opt.value(QStringLiteral("max-residual"))),
                     Usage);
-    const auto points = mode == Mode::Pitch ? PitchGeometry::parseCorners(opt.value(given.front()), pointsOption)
-                                            : parsePairs(opt.value(given.front()), pointsOption, mode == Mode::Oval ? 2 : -1);
+    const auto points = mode == Mode::Pitch
+                            ? PitchGeometry::parseCorners(opt.value(given.front()), pointsOption)
+                            : parsePairs(opt.value(given.front()), pointsOption, mode == Mode::Oval ? 2 : -1);
     if (!points) return fail(points.message(), Usage);
     std::optional<TrackGeometry> oval;
     if (mode == Mode::Oval) {
         auto builtin = TrackGeometry::builtin(opt.value(QStringLiteral("track")).trimmed());
         if (!builtin || builtin->kind() != TrackGeometry::Kind::Oval)
-            return fail(QStringLiteral("--track '%1': use one of %2")
-                            .arg(opt.value(QStringLiteral("track")), TrackGeometry::builtinNames().join(QStringLiteral(", "))),
-                        Usage);
+            return fail(
+                QStringLiteral("--track '%1': use one of %2")
+                    .arg(opt.value(QStringLiteral("track")), TrackGeometry::builtinNames().join(QStringLiteral(", "))),
+                Usage);
         oval = *builtin;
     }
     std::optional<GeodeticOrigin> explicitOrigin;
     if (opt.isSet(QStringLiteral("origin"))) {
-        if (!latLon) return fail(QStringLiteral("--origin applies to lat/lon points (--corners, --straight, --polyline)"), Usage);
+        if (!latLon)
+            return fail(QStringLiteral("--origin applies to lat/lon points (--corners, --straight, --polyline)"),
+                        Usage);
         auto origin = parseGeodeticOrigin(opt.value(QStringLiteral("origin")));
         if (!origin) return fail(QStringLiteral("--%1").arg(origin.message()), Usage);
         explicitOrigin = *origin;
@@ -231,9 +266,12 @@ int cmdVenue(const QStringList& args) {
     std::vector<Eigen::Vector2d> enu = *points;
     if (latLon) {
         if (origin && explicitOrigin && !(*origin == *explicitOrigin))
-            return fail(QStringLiteral("the project's geodetic origin is %1, %2, %3 m; it cannot change (all GNSS streams "
-                                       "and venues share it)")
-                            .arg(origin->lat, 0, 'g', 12).arg(origin->lon, 0, 'g', 12).arg(origin->height));
+            return fail(
+                QStringLiteral("the project's geodetic origin is %1, %2, %3 m; it cannot change (all GNSS streams "
+                               "and venues share it)")
+                    .arg(origin->lat, 0, 'g', 12)
+                    .arg(origin->lon, 0, 'g', 12)
+                    .arg(origin->height));
         if (!origin) {
             // Like the first fix of the first GNSS import: the first point, unless given.
             origin = explicitOrigin ? *explicitOrigin : GeodeticOrigin{points->front().x(), points->front().y(), 0.0};
@@ -259,16 +297,24 @@ int cmdVenue(const QStringList& args) {
         auto placed = mode == Mode::Oval ? placeOval(*oval, enu[0], enu[1], params.maxResidual)
                                          : placePolyline(enu, opt.isSet(QStringLiteral("closed")), name);
         if (!placed) return fail(placed.message());
-        document = trackDocument(placed->track, name, latLon ? std::optional(*points) : std::nullopt, latLon ? origin : std::nullopt);
+        document = trackDocument(placed->track, name, latLon ? std::optional(*points) : std::nullopt,
+                                 latLon ? origin : std::nullopt);
         if (mode == Mode::Oval) {
             const TrackPose& pose = placed->track.pose();
-            summary = QStringLiteral("track '%1' (%2): centre x %3 m, y %4 m (ENU), rotation %5 deg (%6 rad, track x from "
-                                     "East, counter-clockwise)\n  straight residuals (m): 1: %7, 2: %8\n")
-                          .arg(name, oval->name()).arg(pose.x, 0, 'f', 2).arg(pose.y, 0, 'f', 2)
-                          .arg(pose.rotation * kDegPerRad, 0, 'f', 2).arg(pose.rotation, 0, 'f', 5)
-                          .arg(placed->residuals[0], 0, 'f', 3).arg(placed->residuals[1], 0, 'f', 3);
+            summary = QStringLiteral(
+                          "track '%1' (%2): centre x %3 m, y %4 m (ENU), rotation %5 deg (%6 rad, track x from "
+                          "East, counter-clockwise)\n  straight residuals (m): 1: %7, 2: %8\n")
+                          .arg(name, oval->name())
+                          .arg(pose.x, 0, 'f', 2)
+                          .arg(pose.y, 0, 'f', 2)
+                          .arg(pose.rotation * kDegPerRad, 0, 'f', 2)
+                          .arg(pose.rotation, 0, 'f', 5)
+                          .arg(placed->residuals[0], 0, 'f', 3)
+                          .arg(placed->residuals[1], 0, 'f', 3);
         } else {
-            summary = QStringLiteral("polyline '%1': %2 points, %3 m%4\n").arg(name).arg(enu.size())
+            summary = QStringLiteral("polyline '%1': %2 points, %3 m%4\n")
+                          .arg(name)
+                          .arg(enu.size())
                           .arg(placed->track.referenceLength(), 0, 'f', 2)
                           .arg(opt.isSet(QStringLiteral("closed")) ? QStringLiteral(" (closed)") : QString());
         }
@@ -276,8 +322,11 @@ int cmdVenue(const QStringList& args) {
     if (newOrigin) {
         setProjectOrigin(pr.meta(), *origin);
         std::fprintf(stderr, "athlos: note: the project's geodetic origin is now %s, %s%s\n",
-                     qUtf8Printable(QString::number(origin->lat, 'g', 12)), qUtf8Printable(QString::number(origin->lon, 'g', 12)),
-                     explicitOrigin ? "" : mode == Mode::Pitch ? " (the first corner)" : " (the first point)");
+                     qUtf8Printable(QString::number(origin->lat, 'g', 12)),
+                     qUtf8Printable(QString::number(origin->lon, 'g', 12)),
+                     explicitOrigin        ? ""
+                     : mode == Mode::Pitch ? " (the first corner)"
+                                           : " (the first point)");
     }
     pr.geometry()[name] = document;
     pr.setModified();

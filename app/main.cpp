@@ -44,7 +44,8 @@ void ensureRuntimeDir() {
     if (qEnvironmentVariableIsSet("XDG_RUNTIME_DIR")) return;
     const QByteArray dir = QDir::tempPath().toLocal8Bit() + "/athlos-runtime-" + QByteArray::number(getuid());
     QDir().mkpath(QString::fromLocal8Bit(dir));
-    QFile::setPermissions(QString::fromLocal8Bit(dir), QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
+    QFile::setPermissions(QString::fromLocal8Bit(dir),
+                          QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
     qputenv("XDG_RUNTIME_DIR", dir);
 }
 
@@ -61,9 +62,9 @@ void dropOffscreenNoise(QtMsgType type, const QMessageLogContext& context, const
 int main(int argc, char** argv) {
     using namespace athlos::cli;
     const std::map<QString, std::function<int(const QStringList&)>> headless = {
-        {QStringLiteral("new"), cmdNew},         {QStringLiteral("import"), cmdImport},
-        {QStringLiteral("info"), cmdInfo},       {QStringLiteral("processors"), cmdProcessors},
-        {QStringLiteral("run"), cmdRun},         {QStringLiteral("export"), cmdExport},
+        {QStringLiteral("new"), cmdNew},           {QStringLiteral("import"), cmdImport},
+        {QStringLiteral("info"), cmdInfo},         {QStringLiteral("processors"), cmdProcessors},
+        {QStringLiteral("run"), cmdRun},           {QStringLiteral("export"), cmdExport},
         {QStringLiteral("pipeline"), cmdPipeline}, {QStringLiteral("video"), cmdVideo},
         {QStringLiteral("venue"), cmdVenue},
     };
@@ -94,7 +95,8 @@ int main(int argc, char** argv) {
         athlos::ui::installTranslations(app);
         return cmdScreenshot(app.arguments().mid(1));
     }
-    if (!command.isEmpty() && (command.startsWith(QLatin1Char('-')) || !QFileInfo(command).suffix().startsWith(u"athlos"))) {
+    if (!command.isEmpty() &&
+        (command.startsWith(QLatin1Char('-')) || !QFileInfo(command).suffix().startsWith(u"athlos"))) {
         std::fprintf(stderr, "athlos: unknown command '%s' (see athlos --help)\n", qUtf8Printable(command));
         return Usage;
     }

@@ -35,11 +35,12 @@ const Fixture& fixture() {
     static Fixture f = [] {
         Fixture fx;
         const qint64 target = qint64(qEnvironmentVariableIntValue("ATHLOS_BENCH_CSV_MB") > 0
-                                         ? qEnvironmentVariableIntValue("ATHLOS_BENCH_CSV_MB") : 150) << 20;
+                                         ? qEnvironmentVariableIntValue("ATHLOS_BENCH_CSV_MB")
+                                         : 150)
+                              << 20;
         fx.path = fx.dir.filePath("imu_large.csv");
         QFile out(fx.path);
-        if (!out.open(QIODevice::WriteOnly))
-            return fx;
+        if (!out.open(QIODevice::WriteOnly)) return fx;
         std::mt19937 rng(7);
         std::normal_distribution<double> noise(0.0, 0.05);
         std::string buffer = "t,acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z,mag_x,mag_y,mag_z\n";
@@ -100,8 +101,7 @@ void BM_CsvTokenizeNumbers(benchmark::State& state) {
         while (reader.nextRecord()) {
             double v;
             for (int c = 0; c < header.size(); ++c)
-                if (reader.number(v) == CsvReader::Field::Number)
-                    sum += v;
+                if (reader.number(v) == CsvReader::Field::Number) sum += v;
             reader.finishRecord();
         }
         benchmark::DoNotOptimize(sum);
@@ -124,8 +124,7 @@ void BM_ContentHashOfImport(benchmark::State& state) {
         return;
     }
     const StreamData& data = **std::get<Stream>(result->items.front().item).data();
-    for (auto _ : state)
-        benchmark::DoNotOptimize(data.contentHash());
+    for (auto _ : state) benchmark::DoNotOptimize(data.contentHash());
     state.SetBytesProcessed(state.iterations() * f.bytes);  // per CSV byte, comparable with the others
 }
 BENCHMARK(BM_ContentHashOfImport)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3.0);

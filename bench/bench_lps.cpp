@@ -47,7 +47,8 @@ void positioning(benchmark::State& state, BeaconSelection::Method method, TdoaSo
 void trackGaugeFit(benchmark::State& state) {
     const TrackGeometry track;
     std::vector<Vector3> walk;
-    for (const auto& s : TdoaSimulator::laps(track, track.laneOffset(3), 1.4, 1.0, 1.0, 1.0)) walk.push_back(s.position);
+    for (const auto& s : TdoaSimulator::laps(track, track.laneOffset(3), 1.4, 1.0, 1.0, 1.0))
+        walk.push_back(s.position);
     for (auto _ : state) benchmark::DoNotOptimize(fitTrackGauge(walk, Vector3::Zero(), track));
 }
 

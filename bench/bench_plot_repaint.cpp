@@ -26,8 +26,7 @@ constexpr std::size_t kSamples = 10'000'000;
 constexpr double kRate = 1000.0;  // Hz: 10 M samples ≈ 2.8 h at 1 kHz
 
 // A 1 kHz signal: slow drift, a 1 Hz oscillation, noise and a few isolated spikes.
-std::shared_ptr<const StreamData> samples()
-{
+std::shared_ptr<const StreamData> samples() {
     static std::shared_ptr<const StreamData> data = [] {
         auto d = std::make_shared<StreamData>(kSamples, 1);
         std::mt19937_64 rng(1);
@@ -43,8 +42,7 @@ std::shared_ptr<const StreamData> samples()
     return data;
 }
 
-std::shared_ptr<const Stream> stream()
-{
+std::shared_ptr<const Stream> stream() {
     static std::shared_ptr<const Stream> s = [] {
         StreamInfo info;
         info.name = QStringLiteral("acc");
@@ -56,8 +54,7 @@ std::shared_ptr<const Stream> stream()
 }
 
 // One panel for all plot benchmarks, 1280×800 like the screenshots, loaded once.
-TimeSeriesPanel& panel()
-{
+TimeSeriesPanel& panel() {
     static TimeSeriesPanel* p = [] {
         auto* panel = new TimeSeriesPanel;
         panel->resize(1280, 800);
@@ -71,16 +68,14 @@ TimeSeriesPanel& panel()
     return *p;
 }
 
-void setRangeAndReplot(TimeSeriesPanel& p, double lower, double upper)
-{
+void setRangeAndReplot(TimeSeriesPanel& p, double lower, double upper) {
     p.plot()->xAxis->setRange(lower, upper);  // → redecimate() via rangeChanged
     p.plot()->replot(QCustomPlot::rpImmediateRefresh);
 }
 
 }  // namespace
 
-static void BM_PyramidBuild10M(benchmark::State& state)
-{
+static void BM_PyramidBuild10M(benchmark::State& state) {
     const auto data = samples();
     for (auto _ : state) {
         MinMaxPyramid pyramid(data, 0);
@@ -90,8 +85,7 @@ static void BM_PyramidBuild10M(benchmark::State& state)
 }
 BENCHMARK(BM_PyramidBuild10M)->Unit(benchmark::kMillisecond)->Iterations(5);
 
-static void BM_DecimateFullRange10M(benchmark::State& state)
-{
+static void BM_DecimateFullRange10M(benchmark::State& state) {
     const MinMaxPyramid pyramid(samples(), 0);
     const int pixels = int(state.range(0));
     std::size_t points = 0;
@@ -104,8 +98,7 @@ static void BM_DecimateFullRange10M(benchmark::State& state)
 }
 BENCHMARK(BM_DecimateFullRange10M)->Arg(1200)->Arg(4000)->Unit(benchmark::kMicrosecond);
 
-static void BM_ReplotFullRange10M(benchmark::State& state)
-{
+static void BM_ReplotFullRange10M(benchmark::State& state) {
     TimeSeriesPanel& p = panel();
     const double end = double(kSamples - 1) / kRate;
     bool flip = false;
@@ -121,8 +114,7 @@ BENCHMARK(BM_ReplotFullRange10M)->Unit(benchmark::kMillisecond);
 
 // Zoomed to a window of `range(0)` seconds in the middle: 60 s = 60 k samples (decimated),
 // 1 s = 1000 samples (raw samples, ≤ 2 per pixel).
-static void BM_ReplotZoomed10M(benchmark::State& state)
-{
+static void BM_ReplotZoomed10M(benchmark::State& state) {
     TimeSeriesPanel& p = panel();
     const double width = double(state.range(0)) / 1000.0;
     const double mid = 0.5 * double(kSamples) / kRate;
@@ -134,11 +126,15 @@ static void BM_ReplotZoomed10M(benchmark::State& state)
     }
     state.counters["points"] = double(p.plottedPointCount());
 }
-BENCHMARK(BM_ReplotZoomed10M)->Arg(3'600'000)->Arg(60'000)->Arg(1'000)->ArgName("window_ms")->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ReplotZoomed10M)
+    ->Arg(3'600'000)
+    ->Arg(60'000)
+    ->Arg(1'000)
+    ->ArgName("window_ms")
+    ->Unit(benchmark::kMillisecond);
 
 // Dragging: each iteration pans a 10-minute window by 1 %, as a mouse move would.
-static void BM_Pan10M(benchmark::State& state)
-{
+static void BM_Pan10M(benchmark::State& state) {
     TimeSeriesPanel& p = panel();
     const double width = 600.0;
     double lower = 1000.0;
@@ -151,8 +147,7 @@ static void BM_Pan10M(benchmark::State& state)
 BENCHMARK(BM_Pan10M)->Unit(benchmark::kMillisecond);
 
 // Reference: all 10 M points handed to QCustomPlot (adaptive sampling on, its default).
-static void BM_NaiveQCustomPlotFullRange10M(benchmark::State& state)
-{
+static void BM_NaiveQCustomPlotFullRange10M(benchmark::State& state) {
     QCustomPlot plot;
     plot.resize(1280, 800);
     plot.show();

@@ -29,12 +29,13 @@ namespace {
 constexpr double kMatch = 5400.0;
 constexpr double kFps = 30.0;
 
-Project& match()
-{
+Project& match() {
     static std::unique_ptr<Project> project = [] {
         auto p = Project::create(QDir::temp().filePath(QStringLiteral("athlos-bench-playback.athlos")));
         const auto out = runProcessor(*p, team::SimulateTeamProcessor(),
-                                      {QStringLiteral("simulate-team"), {}, QStringLiteral("match/player"),
+                                      {QStringLiteral("simulate-team"),
+                                       {},
+                                       QStringLiteral("match/player"),
                                        {{QStringLiteral("seed"), 1}, {QStringLiteral("duration"), kMatch}}});
         if (!out) qFatal("simulate-team: %s", qPrintable(out.message()));
         return p;
@@ -47,8 +48,7 @@ struct Playback {
     PlaybackView view{&match()};
     QImage image{1280, 800, QImage::Format_ARGB32_Premultiplied};
 
-    explicit Playback(double trail)
-    {
+    explicit Playback(double trail) {
         time.setBounds(0.0, kMatch);
         view.setAttribute(Qt::WA_DontShowOnScreen);
         view.resize(image.size());
@@ -62,15 +62,13 @@ struct Playback {
 };
 
 // The time column is ms per frame (real time); fps is its inverse.
-void reportFrames(benchmark::State& state)
-{
+void reportFrames(benchmark::State& state) {
     state.counters["fps"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
 }
 
 }  // namespace
 
-static void BM_SimulateMatch(benchmark::State& state)
-{
+static void BM_SimulateMatch(benchmark::State& state) {
     team::TeamSimulator::Params p;
     p.duration = kMatch;
     for (auto _ : state) {
@@ -82,8 +80,7 @@ static void BM_SimulateMatch(benchmark::State& state)
 BENCHMARK(BM_SimulateMatch)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 // Reading the 22 streams into flat arrays with speed and colour bins (done once per recording).
-static void BM_PrepareMatchTracks(benchmark::State& state)
-{
+static void BM_PrepareMatchTracks(benchmark::State& state) {
     Project& project = match();
     for (auto _ : state) {
         const auto tracks = PlaybackTracks::readRecording(project, QStringLiteral("match"));
@@ -95,8 +92,7 @@ BENCHMARK(BM_PrepareMatchTracks)->Unit(benchmark::kMillisecond)->Iterations(10);
 
 // The whole view (controls and canvas) rendered into a 1280×800 image per frame; the cursor moves
 // by speed/30 s per frame through the match. Args: playback speed ×1 / ×4, trail seconds.
-static void BM_PlaybackFrame(benchmark::State& state)
-{
+static void BM_PlaybackFrame(benchmark::State& state) {
     const double speed = double(state.range(0)), trail = double(state.range(1));
     Playback p(trail);
     double t = 600.0;
@@ -118,8 +114,7 @@ BENCHMARK(BM_PlaybackFrame)
     ->UseRealTime();
 
 // The canvas alone (what a cursor change repaints): venue pixmap, trails, dots, labels, legend.
-static void BM_PlaybackCanvasFrame(benchmark::State& state)
-{
+static void BM_PlaybackCanvasFrame(benchmark::State& state) {
     const double speed = double(state.range(0));
     Playback p(10.0);
     PlaybackCanvas* canvas = p.view.canvas();

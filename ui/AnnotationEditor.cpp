@@ -19,8 +19,7 @@ AnnotationEditor::AnnotationEditor(QObject* parent) : QObject(parent), undoStack
 
 AnnotationEditor::~AnnotationEditor() = default;
 
-void AnnotationEditor::setProject(Project* project)
-{
+void AnnotationEditor::setProject(Project* project) {
     undoStack_->clear();
     project_ = project;
     journal_.setProjectPath(project ? project->path() : QString());
@@ -29,40 +28,30 @@ void AnnotationEditor::setProject(Project* project)
     emit classesChanged();
 }
 
-QString AnnotationEditor::annotator()
-{
+QString AnnotationEditor::annotator() {
     const QString stored = QSettings().value(kAnnotatorKey).toString();
     if (!stored.isEmpty()) return stored;
     const QString user = qEnvironmentVariable("USER", qEnvironmentVariable("USERNAME"));
     return user.isEmpty() ? QStringLiteral("annotator") : user;
 }
 
-void AnnotationEditor::setAnnotator(const QString& name)
-{
-    QSettings().setValue(kAnnotatorKey, name.trimmed());
-}
+void AnnotationEditor::setAnnotator(const QString& name) { QSettings().setValue(kAnnotatorKey, name.trimmed()); }
 
-QString AnnotationEditor::currentClass() const
-{
-    return currentClass_;
-}
+QString AnnotationEditor::currentClass() const { return currentClass_; }
 
-void AnnotationEditor::setCurrentClass(const QString& name)
-{
+void AnnotationEditor::setCurrentClass(const QString& name) {
     if (name == currentClass_) return;
     currentClass_ = name;
     emit currentClassChanged(name);
 }
 
-bool AnnotationEditor::selectClassByNumber(int number)
-{
+bool AnnotationEditor::selectClassByNumber(int number) {
     if (!project_ || number < 0 || number >= project_->annotationClasses().size()) return false;
     setCurrentClass(project_->annotationClasses().at(number));
     return true;
 }
 
-Status AnnotationEditor::check(const QString& recording, int index) const
-{
+Status AnnotationEditor::check(const QString& recording, int index) const {
     if (!project_) return makeError(tr("Open a project first."));
     if (locked_) return makeError(tr("The project is being saved; try again in a moment."));
     const Recording* rec = project_->recording(recording);
@@ -72,8 +61,7 @@ Status AnnotationEditor::check(const QString& recording, int index) const
     return {};
 }
 
-Expected<int> AnnotationEditor::create(const QString& recording, double tStart, double tEnd)
-{
+Expected<int> AnnotationEditor::create(const QString& recording, double tStart, double tEnd) {
     Annotation a;
     a.label = currentClass_;
     a.tStart = std::min(tStart, tEnd);
@@ -83,8 +71,7 @@ Expected<int> AnnotationEditor::create(const QString& recording, double tStart, 
     return create(recording, a);
 }
 
-Expected<int> AnnotationEditor::create(const QString& recording, const Annotation& annotation)
-{
+Expected<int> AnnotationEditor::create(const QString& recording, const Annotation& annotation) {
     if (Status s = check(recording, -1); !s) return s.error();
     if (annotation.label.isEmpty()) return makeError(tr("Choose or add an annotation class first."));
     if (!std::isfinite(annotation.tStart) || !std::isfinite(annotation.tEnd) || annotation.tEnd < annotation.tStart)
@@ -99,8 +86,7 @@ Expected<int> AnnotationEditor::create(const QString& recording, const Annotatio
     return index;
 }
 
-Status AnnotationEditor::change(const QString& recording, int index, const Annotation& after)
-{
+Status AnnotationEditor::change(const QString& recording, int index, const Annotation& after) {
     if (Status s = check(recording, index); !s) return s;
     if (!(after.tEnd >= after.tStart)) return makeError(tr("An annotation needs a start before its end."));
     const Annotation before = project_->recording(recording)->annotations[std::size_t(index)];
@@ -110,8 +96,7 @@ Status AnnotationEditor::change(const QString& recording, int index, const Annot
     return {};
 }
 
-Status AnnotationEditor::remove(const QString& recording, int index)
-{
+Status AnnotationEditor::remove(const QString& recording, int index) {
     if (Status s = check(recording, index); !s) return s;
     const Annotation before = project_->recording(recording)->annotations[std::size_t(index)];
     undoStack_->push(new AnnotationCommand(*this, AnnotationEdit::remove(recording, index, before),
@@ -119,8 +104,7 @@ Status AnnotationEditor::remove(const QString& recording, int index)
     return {};
 }
 
-Status AnnotationEditor::accept(const QString& recording, int index)
-{
+Status AnnotationEditor::accept(const QString& recording, int index) {
     if (Status s = check(recording, index); !s) return s;
     Annotation after = project_->recording(recording)->annotations[std::size_t(index)];
     after.source = QStringLiteral("manual");
@@ -128,8 +112,7 @@ Status AnnotationEditor::accept(const QString& recording, int index)
     return change(recording, index, after);
 }
 
-Status AnnotationEditor::addClass(const QString& name)
-{
+Status AnnotationEditor::addClass(const QString& name) {
     const QString trimmed = name.trimmed();
     if (!project_) return makeError(tr("Open a project first."));
     if (trimmed.isEmpty()) return makeError(tr("A class needs a name."));
@@ -143,8 +126,7 @@ Status AnnotationEditor::addClass(const QString& name)
 }
 
 void AnnotationEditor::annotationsReplaced(const QStringList& recordings, const std::map<QString, Annotations>& before,
-                                           const QByteArray& baseDigest)
-{
+                                           const QByteArray& baseDigest) {
     undoStack_->clear();
     for (const QString& recording : recordings) {
         const Recording* rec = project_ ? project_->recording(recording) : nullptr;
@@ -152,14 +134,14 @@ void AnnotationEditor::annotationsReplaced(const QStringList& recordings, const 
         const Annotations previous = old == before.end() ? Annotations{} : old->second;
         if (rec && rec->annotations != previous) {
             const AnnotationEdit edit = AnnotationEdit::replaceAll(recording, previous, rec->annotations);
-            if (Status journaled = journal_.append(edit, baseDigest); !journaled) emit errorOccurred(journaled.message());
+            if (Status journaled = journal_.append(edit, baseDigest); !journaled)
+                emit errorOccurred(journaled.message());
         }
         emit annotationsChanged(recording);
     }
 }
 
-void AnnotationEditor::perform(const AnnotationEdit& edit)
-{
+void AnnotationEditor::perform(const AnnotationEdit& edit) {
     if (!project_) return;
     // Journal first: what the user sees must survive a crash right after.
     if (Status journaled = journal_.append(edit, project_); !journaled) emit errorOccurred(journaled.message());

@@ -17,8 +17,7 @@ namespace {
 const QString kLayerName = QStringLiteral("annotations");
 constexpr int kEdgePixels = 5;  // how close to a span's edge a press grabs the edge
 
-QColor classColor(const Project* project, const QString& label)
-{
+QColor classColor(const Project* project, const QString& label) {
     const int index = project ? int(project->annotationClasses().indexOf(label)) : -1;
     // Unknown labels (e.g. from a processor) still get a stable colour.
     return PlotStyle::seriesColor(index >= 0 ? index : 8 + int(qHash(label) % 8));
@@ -26,8 +25,7 @@ QColor classColor(const Project* project, const QString& label)
 }  // namespace
 
 AnnotationLayer::AnnotationLayer(TimeSeriesPanel* panel, AnnotationEditor* editor)
-    : QObject(panel), panel_(panel), editor_(editor)
-{
+    : QObject(panel), panel_(panel), editor_(editor) {
     QCustomPlot* p = plot();
     if (!p->layer(kLayerName)) p->addLayer(kLayerName, p->layer(QStringLiteral("main")), QCustomPlot::limBelow);
     connect(p, &QCustomPlot::mousePress, this, &AnnotationLayer::onPress);
@@ -40,20 +38,15 @@ AnnotationLayer::AnnotationLayer(TimeSeriesPanel* panel, AnnotationEditor* edito
     panel->installEventFilter(this);
 }
 
-QCustomPlot* AnnotationLayer::plot() const
-{
-    return panel_->plot();
-}
+QCustomPlot* AnnotationLayer::plot() const { return panel_->plot(); }
 
-void AnnotationLayer::setRecording(const QString& recording)
-{
+void AnnotationLayer::setRecording(const QString& recording) {
     recording_ = recording;
     selected_ = -1;
     rebuild();
 }
 
-void AnnotationLayer::clearSpans()
-{
+void AnnotationLayer::clearSpans() {
     for (const Span& span : spans_) {
         plot()->removeItem(span.rect);
         plot()->removeItem(span.label);
@@ -61,8 +54,7 @@ void AnnotationLayer::clearSpans()
     spans_.clear();
 }
 
-void AnnotationLayer::rebuild()
-{
+void AnnotationLayer::rebuild() {
     clearSpans();
     const Project* project = editor_->project();
     const Recording* rec = project ? project->recording(recording_) : nullptr;
@@ -102,14 +94,12 @@ void AnnotationLayer::rebuild()
     plot()->replot(QCustomPlot::rpQueuedReplot);
 }
 
-void AnnotationLayer::setSelected(int index)
-{
+void AnnotationLayer::setSelected(int index) {
     selected_ = index >= 0 && index < spanCount() ? index : -1;
     rebuild();
 }
 
-int AnnotationLayer::spanAt(double pixelX, Drag* edge) const
-{
+int AnnotationLayer::spanAt(double pixelX, Drag* edge) const {
     const Project* project = editor_->project();
     const Recording* rec = project ? project->recording(recording_) : nullptr;
     if (!rec) return -1;
@@ -131,8 +121,7 @@ int AnnotationLayer::spanAt(double pixelX, Drag* edge) const
     return inside;
 }
 
-void AnnotationLayer::onPress(QMouseEvent* event)
-{
+void AnnotationLayer::onPress(QMouseEvent* event) {
     const bool annotating = annotateMode_ || (event->modifiers() & Qt::ShiftModifier);
     if (!annotating || event->button() != Qt::LeftButton || recording_.isEmpty()) return;
     if (!plot()->axisRect()->rect().contains(event->pos())) return;
@@ -160,8 +149,7 @@ void AnnotationLayer::onPress(QMouseEvent* event)
     plot()->setInteraction(QCP::iRangeDrag, false);
 }
 
-void AnnotationLayer::onMove(QMouseEvent* event)
-{
+void AnnotationLayer::onMove(QMouseEvent* event) {
     if (drag_ == Drag::None) {
         // Hovering an edge in annotate mode shows that it can be dragged.
         Drag edge = Drag::None;
@@ -175,13 +163,13 @@ void AnnotationLayer::onMove(QMouseEvent* event)
         preview_->bottomRight->setCoords(std::max(t, dragOrigin_), 1.0);
     } else if (dragIndex_ >= 0 && dragIndex_ < spanCount()) {
         QCPItemRect* rect = spans_[std::size_t(dragIndex_)].rect;
-        (drag_ == Drag::MoveStart ? rect->topLeft : rect->bottomRight)->setCoords(t, drag_ == Drag::MoveStart ? 0.0 : 1.0);
+        (drag_ == Drag::MoveStart ? rect->topLeft : rect->bottomRight)
+            ->setCoords(t, drag_ == Drag::MoveStart ? 0.0 : 1.0);
     }
     plot()->replot(QCustomPlot::rpQueuedReplot);
 }
 
-void AnnotationLayer::onRelease(QMouseEvent* event)
-{
+void AnnotationLayer::onRelease(QMouseEvent* event) {
     const bool clickOnly = drag_ == Drag::None;
     if (!clickOnly) plot()->setInteraction(QCP::iRangeDrag, savedRangeDrag_);
     const double t = plot()->xAxis->pixelToCoord(event->pos().x());
@@ -200,8 +188,10 @@ void AnnotationLayer::onRelease(QMouseEvent* event)
             return;
         }
         auto created = editor_->create(recording_, dragOrigin_, t);
-        if (created) selected_ = *created;
-        else status = created.error();
+        if (created)
+            selected_ = *created;
+        else
+            status = created.error();
     } else if (drag == Drag::MoveStart || drag == Drag::MoveEnd) {
         const Recording* rec = editor_->project() ? editor_->project()->recording(recording_) : nullptr;
         if (rec && dragIndex_ < int(rec->annotations.size())) {
@@ -219,8 +209,7 @@ void AnnotationLayer::onRelease(QMouseEvent* event)
     rebuild();
 }
 
-bool AnnotationLayer::eventFilter(QObject* watched, QEvent* event)
-{
+bool AnnotationLayer::eventFilter(QObject* watched, QEvent* event) {
     // The type first: while the panel is being destroyed it still sends events, and converting the
     // QPointer to a TimeSeriesPanel* then would be a bad downcast (UBSan vptr).
     if (event->type() == QEvent::KeyPress && watched == panel_.data()) {

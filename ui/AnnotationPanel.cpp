@@ -19,8 +19,7 @@
 namespace athlos::ui {
 
 AnnotationPanel::AnnotationPanel(AnnotationEditor* editor, AnnotationLayer* layer, QWidget* parent)
-    : QWidget(parent), editor_(editor), layer_(layer)
-{
+    : QWidget(parent), editor_(editor), layer_(layer) {
     classes_ = new QListWidget(this);
     classes_->setToolTip(tr("Class of new intervals (keys 1–9 on the plot)"));
     classes_->setMaximumHeight(110);
@@ -71,15 +70,14 @@ AnnotationPanel::AnnotationPanel(AnnotationEditor* editor, AnnotationLayer* laye
     refresh();
 }
 
-void AnnotationPanel::refresh()
-{
+void AnnotationPanel::refresh() {
     refreshing_ = true;
     const Project* project = editor_->project();
     classes_->clear();
     const QStringList classes = project ? project->annotationClasses() : QStringList();
     for (int i = 0; i < classes.size(); ++i) {
-        auto* item = new QListWidgetItem(QStringLiteral("%1 %2").arg(i < 9 ? QString::number(i + 1) : QStringLiteral("·"), classes[i]),
-                                         classes_);
+        auto* item = new QListWidgetItem(
+            QStringLiteral("%1 %2").arg(i < 9 ? QString::number(i + 1) : QStringLiteral("·"), classes[i]), classes_);
         QPixmap swatch(12, 12);
         swatch.fill(PlotStyle::seriesColor(i));
         item->setIcon(QIcon(swatch));
@@ -96,26 +94,29 @@ void AnnotationPanel::refresh()
             toReview += manual ? 0 : 1;
             const QString source = manual ? tr("manual (%1)").arg(a.annotator)
                                           : tr("%1, %2% confident").arg(a.source).arg(std::lround(a.confidence * 100));
-            const QStringList cells{a.label, QLocale().toString(a.tStart, 'f', 3), QLocale().toString(a.tEnd, 'f', 3), source};
+            const QStringList cells{a.label, QLocale().toString(a.tStart, 'f', 3), QLocale().toString(a.tEnd, 'f', 3),
+                                    source};
             for (int c = 0; c < cells.size(); ++c) table_->setItem(row, c, new QTableWidgetItem(cells[c]));
         }
     }
-    if (layer_ && layer_->selected() >= 0 && layer_->selected() < table_->rowCount()) table_->selectRow(layer_->selected());
-    if (!rec) status_->setText(tr("Select a stream to annotate its recording."));
+    if (layer_ && layer_->selected() >= 0 && layer_->selected() < table_->rowCount())
+        table_->selectRow(layer_->selected());
+    if (!rec)
+        status_->setText(tr("Select a stream to annotate its recording."));
     else if (rec->annotations.empty())
-        status_->setText(tr("No annotations on %1 yet. Shift+drag on the plot (or use annotate mode) to add one.").arg(recording));
-    else status_->setText(tr("Annotations to review: %1").arg(toReview));
+        status_->setText(
+            tr("No annotations on %1 yet. Shift+drag on the plot (or use annotate mode) to add one.").arg(recording));
+    else
+        status_->setText(tr("Annotations to review: %1").arg(toReview));
     refreshing_ = false;
 }
 
-int AnnotationPanel::selectedRow() const
-{
+int AnnotationPanel::selectedRow() const {
     const QList<QTableWidgetItem*> items = table_->selectedItems();
     return items.isEmpty() ? -1 : items.front()->row();
 }
 
-bool AnnotationPanel::reviewNext()
-{
+bool AnnotationPanel::reviewNext() {
     const Project* project = editor_->project();
     const Recording* rec = project && layer_ ? project->recording(layer_->recording()) : nullptr;
     if (!rec) return false;
@@ -133,26 +134,28 @@ bool AnnotationPanel::reviewNext()
     return false;
 }
 
-void AnnotationPanel::acceptSelected()
-{
+void AnnotationPanel::acceptSelected() {
     const int row = selectedRow();
     if (row < 0 || !layer_) return;
-    if (Status s = editor_->accept(layer_->recording(), row); !s) status_->setText(s.message());
-    else reviewNext();
+    if (Status s = editor_->accept(layer_->recording(), row); !s)
+        status_->setText(s.message());
+    else
+        reviewNext();
 }
 
-void AnnotationPanel::rejectSelected()
-{
+void AnnotationPanel::rejectSelected() {
     const int row = selectedRow();
     if (row < 0 || !layer_) return;
-    if (Status s = editor_->remove(layer_->recording(), row); !s) status_->setText(s.message());
-    else reviewNext();
+    if (Status s = editor_->remove(layer_->recording(), row); !s)
+        status_->setText(s.message());
+    else
+        reviewNext();
 }
 
-void AnnotationPanel::addClassDialog()
-{
+void AnnotationPanel::addClassDialog() {
     bool ok = false;
-    const QString name = QInputDialog::getText(this, tr("Add Annotation Class"), tr("Class name:"), QLineEdit::Normal, {}, &ok);
+    const QString name =
+        QInputDialog::getText(this, tr("Add Annotation Class"), tr("Class name:"), QLineEdit::Normal, {}, &ok);
     if (!ok) return;
     if (Status s = editor_->addClass(name); !s) status_->setText(s.message());
 }

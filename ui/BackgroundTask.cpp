@@ -25,8 +25,7 @@ struct SharedProgress {
 };
 }  // namespace
 
-BackgroundTask::Outcome BackgroundTask::run(QWidget* parent, const QString& label, const Job& job, bool showDialog)
-{
+BackgroundTask::Outcome BackgroundTask::run(QWidget* parent, const QString& label, const Job& job, bool showDialog) {
     auto shared = std::make_shared<SharedProgress>();
     CancelToken token;
     Progress progress(

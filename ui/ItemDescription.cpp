@@ -13,14 +13,12 @@ namespace {
 
 QString esc(const QString& s) { return s.toHtmlEscaped(); }
 
-QString row(const QString& label, const QString& valueHtml)
-{
+QString row(const QString& label, const QString& valueHtml) {
     return QStringLiteral("<tr><td style='padding-right:10px; color:#555;'>%1</td><td>%2</td></tr>")
         .arg(esc(label), valueHtml);
 }
 
-QString jsonText(const QJsonObject& object)
-{
+QString jsonText(const QJsonObject& object) {
     return QString::fromUtf8(QJsonDocument(object).toJson(QJsonDocument::Indented)).trimmed();
 }
 
@@ -28,31 +26,27 @@ QString number(double value) { return QLocale().toString(value, 'g', 10); }
 
 }  // namespace
 
-bool ItemDescription::isResult(const Provenance& provenance)
-{
+bool ItemDescription::isResult(const Provenance& provenance) {
     return !provenance.isEmpty() && !provenance.processorId.startsWith(QLatin1String("import:"));
 }
 
-QString ItemDescription::columnsText(const Columns& columns)
-{
+QString ItemDescription::columnsText(const Columns& columns) {
     QStringList parts;
     for (const Column& c : columns)
         parts << (c.unit.isEmpty() ? c.name : QStringLiteral("%1 [%2]").arg(c.name, c.unit));
     return parts.join(QStringLiteral(", "));
 }
 
-QString ItemDescription::columnsText(const Table& table)
-{
+QString ItemDescription::columnsText(const Table& table) {
     QStringList parts;
     for (const TableColumn& c : table.columns)
-        parts << (c.isText ? QStringLiteral("%1 (%2)").arg(c.name, tr("text"))
+        parts << (c.isText           ? QStringLiteral("%1 (%2)").arg(c.name, tr("text"))
                   : c.unit.isEmpty() ? c.name
                                      : QStringLiteral("%1 [%2]").arg(c.name, c.unit));
     return parts.join(QStringLiteral(", "));
 }
 
-QString ItemDescription::projectHtml(const Project& project)
-{
+QString ItemDescription::projectHtml(const Project& project) {
     const ProjectMeta& meta = project.meta();
     QString html = QStringLiteral("<h3>%1</h3><table>").arg(esc(QFileInfo(project.path()).completeBaseName()));
     html += row(tr("File"), esc(QDir::toNativeSeparators(project.path())));
@@ -66,8 +60,7 @@ QString ItemDescription::projectHtml(const Project& project)
     return html;
 }
 
-QString ItemDescription::recordingHtml(const Recording& recording)
-{
+QString ItemDescription::recordingHtml(const Recording& recording) {
     QString html = QStringLiteral("<h3>%1</h3><table>").arg(esc(recording.name));
     html += row(tr("Streams"), QString::number(recording.streams.size()));
     html += row(tr("Tables"), QString::number(recording.tables.size()));
@@ -78,8 +71,7 @@ QString ItemDescription::recordingHtml(const Recording& recording)
     return html;
 }
 
-QString ItemDescription::streamHtml(const QString& path, const StreamInfo& info)
-{
+QString ItemDescription::streamHtml(const QString& path, const StreamInfo& info) {
     QString html = QStringLiteral("<h3>%1</h3><table>").arg(esc(path));
     html += row(tr("Kind"), esc(info.kind));
     if (!info.frame.isEmpty()) html += row(tr("Frame"), esc(info.frame));
@@ -89,11 +81,13 @@ QString ItemDescription::streamHtml(const QString& path, const StreamInfo& info)
                                         .arg(number(info.tBegin), number(info.tEnd), number(info.tEnd - info.tBegin))));
     QString columns = QStringLiteral("<table>");
     for (const Column& c : info.columns)
-        columns += QStringLiteral("<tr><td>%1</td><td style='padding-left:8px; color:#555;'>%2</td></tr>").arg(esc(c.name), esc(c.unit));
+        columns += QStringLiteral("<tr><td>%1</td><td style='padding-left:8px; color:#555;'>%2</td></tr>")
+                       .arg(esc(c.name), esc(c.unit));
     columns += QStringLiteral("</table>");
     html += row(tr("Columns"), columns);
     if (!info.contentHash.isEmpty())
-        html += row(tr("Content hash"), QStringLiteral("<code>%1</code>").arg(esc(QString::fromLatin1(info.contentHash.left(16)))));
+        html += row(tr("Content hash"),
+                    QStringLiteral("<code>%1</code>").arg(esc(QString::fromLatin1(info.contentHash.left(16)))));
     html += QStringLiteral("</table>");
     if (!info.attributes.isEmpty())
         html += QStringLiteral("<h4>%1</h4><pre>%2</pre>").arg(esc(tr("Attributes")), esc(jsonText(info.attributes)));
@@ -101,8 +95,7 @@ QString ItemDescription::streamHtml(const QString& path, const StreamInfo& info)
     return html;
 }
 
-QString ItemDescription::tableHtml(const QString& path, const Table& table)
-{
+QString ItemDescription::tableHtml(const QString& path, const Table& table) {
     QString html = QStringLiteral("<h3>%1</h3><table>").arg(esc(path));
     html += row(tr("Kind"), esc(table.kind));
     html += row(tr("Rows"), QLocale().toString(table.rows()));
@@ -114,8 +107,7 @@ QString ItemDescription::tableHtml(const QString& path, const Table& table)
     return html;
 }
 
-QString ItemDescription::provenanceHtml(const Provenance& p)
-{
+QString ItemDescription::provenanceHtml(const Provenance& p) {
     QString html = QStringLiteral("<h4>%1</h4><table>").arg(esc(tr("Provenance")));
     if (isResult(p)) {
         html += row(tr("Processor"), esc(QStringLiteral("%1 %2").arg(p.processorId, p.processorVersion)));
@@ -138,16 +130,17 @@ QString ItemDescription::provenanceHtml(const Provenance& p)
     return html;
 }
 
-QString ItemDescription::streamToolTip(const QString& path, const StreamInfo& info)
-{
+QString ItemDescription::streamToolTip(const QString& path, const StreamInfo& info) {
     QString text = tr("%1: %2, %3 rows").arg(path, info.kind, QLocale().toString(info.rows));
     text += QLatin1Char('\n') + columnsText(info.columns);
     const Provenance& p = info.provenance;
     if (isResult(p)) {
         QStringList inputs;
         for (const ProvenanceInput& in : p.inputs) inputs << in.name;
-        text += QLatin1Char('\n') + tr("Result of %1 %2 from %3").arg(p.processorId, p.processorVersion, inputs.join(QStringLiteral(", ")));
-        text += QLatin1Char('\n') + tr("Parameters: %1").arg(QString::fromUtf8(QJsonDocument(p.parameters).toJson(QJsonDocument::Compact)));
+        text += QLatin1Char('\n') +
+                tr("Result of %1 %2 from %3").arg(p.processorId, p.processorVersion, inputs.join(QStringLiteral(", ")));
+        text += QLatin1Char('\n') +
+                tr("Parameters: %1").arg(QString::fromUtf8(QJsonDocument(p.parameters).toJson(QJsonDocument::Compact)));
         text += QLatin1Char('\n') + tr("Athlos %1, %2").arg(p.appVersion, p.time.toUTC().toString(Qt::ISODate));
     } else if (!p.sourceFile.isEmpty()) {
         text += QLatin1Char('\n') + tr("Imported from %1").arg(QFileInfo(p.sourceFile).fileName());
@@ -155,8 +148,7 @@ QString ItemDescription::streamToolTip(const QString& path, const StreamInfo& in
     return text;
 }
 
-QString ItemDescription::tableToolTip(const QString& path, const Table& table)
-{
+QString ItemDescription::tableToolTip(const QString& path, const Table& table) {
     QString text = tr("%1: table %2, %3 rows").arg(path, table.kind, QLocale().toString(table.rows()));
     text += QLatin1Char('\n') + columnsText(table);
     const Provenance& p = table.provenance;

@@ -30,8 +30,7 @@ namespace athlos::ui {
 
 namespace {
 
-QStringList localFiles(const QMimeData* mime)
-{
+QStringList localFiles(const QMimeData* mime) {
     QStringList files;
     if (!mime || !mime->hasUrls()) return files;
     for (const QUrl& url : mime->urls())
@@ -41,8 +40,7 @@ QStringList localFiles(const QMimeData* mime)
 
 }  // namespace
 
-MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
-{
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setWindowIcon(QIcon(QStringLiteral(":/athlos/icons/athlos.svg")));
     setAcceptDrops(true);
     notifier_ = new WorkspaceNotifier(this);
@@ -71,15 +69,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     actions_->updateEnabled(false);
 }
 
-MainWindow::~MainWindow()
-{
+MainWindow::~MainWindow() {
     // Panels may hold pointers into the project; drop them before the project goes.
     panels_->setProject(nullptr);
     browser_->setProject(nullptr);
 }
 
-void MainWindow::createAnnotationTool()
-{
+void MainWindow::createAnnotationTool() {
     annotationEditor_ = new AnnotationEditor(this);
     annotationLayer_ = new AnnotationLayer(panels_->timeSeries(), annotationEditor_);
     annotationPanel_ = new AnnotationPanel(annotationEditor_, annotationLayer_, this);
@@ -97,8 +93,7 @@ void MainWindow::createAnnotationTool()
     });
 }
 
-void MainWindow::setProject(std::shared_ptr<Project> project)
-{
+void MainWindow::setProject(std::shared_ptr<Project> project) {
     panels_->setProject(project);
     annotationLayer_->setRecording({});
     project_ = std::move(project);
@@ -128,8 +123,7 @@ RunRequest MainWindow::rerunRequest(const QString& path) const { return launcher
 void MainWindow::openProcessorDialog(const RunRequest& prefill) { launcher_->openDialog(prefill); }
 QAction* MainWindow::toolAction(const QString& id) const { return actions_->toolAction(id); }
 
-void MainWindow::projectModified()
-{
+void MainWindow::projectModified() {
     if (!project_) return;
     const QString current = currentItem();
     browser_->refresh();
@@ -138,16 +132,14 @@ void MainWindow::projectModified()
     emit projectChanged();
 }
 
-void MainWindow::showItem(const QString& path)
-{
+void MainWindow::showItem(const QString& path) {
     if (!selectItem(path)) return;
     const Stream* stream = project_ ? project_->stream(path) : nullptr;
     if (stream && TrajectoryPanel::isPositionStream(stream->info()) && panels_->isTrajectoryShown()) return;
     if (stream) showTimeSeriesView();
 }
 
-void MainWindow::addDock(QDockWidget* dock, Qt::DockWidgetArea area)
-{
+void MainWindow::addDock(QDockWidget* dock, Qt::DockWidgetArea area) {
     dock->setParent(this);
     addDockWidget(area, dock);
     actions_->addToViewMenu(dock->toggleViewAction());
@@ -155,8 +147,7 @@ void MainWindow::addDock(QDockWidget* dock, Qt::DockWidgetArea area)
     dock->raise();
 }
 
-void MainWindow::resizeDock(QDockWidget* dock, int size, Qt::Orientation orientation)
-{
+void MainWindow::resizeDock(QDockWidget* dock, int size, Qt::Orientation orientation) {
     resizeDocks({dock}, {size}, orientation);
 }
 
@@ -171,39 +162,34 @@ void MainWindow::showTimeSeriesView() { panels_->showTimeSeriesView(); }
 void MainWindow::showTrajectoryView() { panels_->showTrajectoryView(); }
 void MainWindow::waitForPlots() { panels_->waitForPlots(); }
 
-void MainWindow::addView(QWidget* view, const QString& title)
-{
+void MainWindow::addView(QWidget* view, const QString& title) {
     panels_->tabs()->setCurrentIndex(panels_->tabs()->addTab(view, title));
 }
 TimeSeriesPanel* MainWindow::timeSeriesPanel() const { return panels_->timeSeries(); }
 TrajectoryPanel* MainWindow::trajectoryPanel() const { return panels_->trajectory(); }
 
-void MainWindow::plotItem(const QString& path)
-{
+void MainWindow::plotItem(const QString& path) {
     if (!panels_->plot(path)) return;
     // The annotations shown are those of the plotted stream's recording.
     annotationLayer_->setRecording(ItemPath::parse(path).recording);
     annotationPanel_->refresh();
 }
 
-void MainWindow::onActivated(const QString& path)
-{
+void MainWindow::onActivated(const QString& path) {
     const Stream* stream = project_ ? project_->stream(path) : nullptr;
     // Double-click brings the plot forward; a position stream stays on the trajectory if shown.
     if (!(stream && panels_->isTrajectoryShown() && TrajectoryPanel::isPositionStream(stream->info())))
         showTimeSeriesView();
 }
 
-QString MainWindow::firstStream() const
-{
+QString MainWindow::firstStream() const {
     if (!project_) return {};
     for (const auto& [name, recording] : project_->recordings())
         if (!recording.streams.empty()) return name + QLatin1Char('/') + recording.streams.begin()->first;
     return {};
 }
 
-QString MainWindow::firstPositionStream() const
-{
+QString MainWindow::firstPositionStream() const {
     if (!project_) return {};
     for (const auto& [name, recording] : project_->recordings())
         for (const auto& [streamName, stream] : recording.streams)
@@ -221,23 +207,20 @@ QTextBrowser* MainWindow::detailsView() const { return browser_->details(); }
 
 // --- annotation ---------------------------------------------------------------------------------
 
-void MainWindow::showAnnotationPanel()
-{
+void MainWindow::showAnnotationPanel() {
     annotationDock_->show();
     annotationDock_->raise();
 }
 
 // --- window chrome ------------------------------------------------------------------------------
 
-void MainWindow::showError(const QString& title, const QString& message)
-{
+void MainWindow::showError(const QString& title, const QString& message) {
     statusBar()->showMessage(title, 8000);
     emit errorReported(message);
     if (interactive_) QMessageBox::critical(this, title, message);
 }
 
-void MainWindow::updateTitle()
-{
+void MainWindow::updateTitle() {
     if (!project_) {
         setWindowTitle(tr("Athlos"));
         setWindowModified(false);
@@ -248,8 +231,7 @@ void MainWindow::updateTitle()
     setWindowModified(project_->isModified());
 }
 
-void MainWindow::setBusy(bool busy)
-{
+void MainWindow::setBusy(bool busy) {
     busy_ = busy;
     annotationEditor_->setLocked(busy);
     menuBar()->setEnabled(!busy);
@@ -258,8 +240,7 @@ void MainWindow::setBusy(bool busy)
     actions_->setBusy(busy, project_ != nullptr);
 }
 
-void MainWindow::closeEvent(QCloseEvent* event)
-{
+void MainWindow::closeEvent(QCloseEvent* event) {
     if (busy_ || !session_->maybeSaveChanges()) {
         event->ignore();
         return;
@@ -267,13 +248,11 @@ void MainWindow::closeEvent(QCloseEvent* event)
     event->accept();
 }
 
-void MainWindow::dragEnterEvent(QDragEnterEvent* event)
-{
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
     if (!busy_ && !localFiles(event->mimeData()).isEmpty()) event->acceptProposedAction();
 }
 
-void MainWindow::dropEvent(QDropEvent* event)
-{
+void MainWindow::dropEvent(QDropEvent* event) {
     const QStringList files = localFiles(event->mimeData());
     if (files.isEmpty() || busy_) return;
     event->acceptProposedAction();

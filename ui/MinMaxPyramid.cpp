@@ -5,8 +5,7 @@
 
 namespace athlos::ui {
 
-Extremes Extremes::combine(const Extremes& earlier, const Extremes& later)
-{
+Extremes Extremes::combine(const Extremes& earlier, const Extremes& later) {
     if (earlier.isEmpty()) return later;
     if (later.isEmpty()) return earlier;
     // Ties go to the earlier run, so the result always describes the first occurrence.
@@ -23,8 +22,7 @@ Extremes Extremes::combine(const Extremes& earlier, const Extremes& later)
 }
 
 MinMaxPyramid::MinMaxPyramid(std::shared_ptr<const StreamData> data, int column)
-    : data_(std::move(data)), column_(column)
-{
+    : data_(std::move(data)), column_(column) {
     if (!data_ || column_ < 0 || column_ >= data_->columns) {
         data_.reset();
         return;
@@ -67,15 +65,13 @@ MinMaxPyramid::MinMaxPyramid(std::shared_ptr<const StreamData> data, int column)
     }
 }
 
-Extremes MinMaxPyramid::sample(std::size_t row) const
-{
+Extremes MinMaxPyramid::sample(std::size_t row) const {
     const double v = value(row);
     if (std::isnan(v)) return {};
     return {v, v, true};
 }
 
-Extremes MinMaxPyramid::rangeExtremes(std::size_t begin, std::size_t end) const
-{
+Extremes MinMaxPyramid::rangeExtremes(std::size_t begin, std::size_t end) const {
     end = std::min(end, size());
     if (begin >= end) return {};
 
@@ -110,8 +106,7 @@ Extremes MinMaxPyramid::rangeExtremes(std::size_t begin, std::size_t end) const
     return Extremes::combine(head, tail);
 }
 
-DecimatedSeries MinMaxPyramid::decimate(double t0, double t1, int pixels, double rawLimit) const
-{
+DecimatedSeries MinMaxPyramid::decimate(double t0, double t1, int pixels, double rawLimit) const {
     DecimatedSeries out;
     const std::size_t n = size();
     if (n == 0 || !(t1 >= t0)) return out;
@@ -148,9 +143,8 @@ DecimatedSeries MinMaxPyramid::decimate(double t0, double t1, int pixels, double
     std::size_t b = first;
     for (int p = 0; p < pixels && b < last; ++p) {
         const double x0 = t0 + p * dt;
-        const std::size_t next = p == pixels - 1
-            ? last
-            : static_cast<std::size_t>(std::lower_bound(t + b, t + last, t0 + (p + 1) * dt) - t);
+        const std::size_t next =
+            p == pixels - 1 ? last : static_cast<std::size_t>(std::lower_bound(t + b, t + last, t0 + (p + 1) * dt) - t);
         const Extremes e = rangeExtremes(b, next);
         b = next;
         if (e.isEmpty()) continue;

@@ -33,8 +33,8 @@ struct Extremes {
 struct DecimatedSeries {
     QList<double> keys;
     QList<double> values;
-    bool raw = false;           // keys/values are the samples themselves
-    Extremes visible;           // extremes of the samples inside [t0, t1] (for y auto-fit)
+    bool raw = false;  // keys/values are the samples themselves
+    Extremes visible;  // extremes of the samples inside [t0, t1] (for y auto-fit)
     long long visibleSamples = 0;
 };
 

@@ -23,8 +23,7 @@ const QString kPanelsKey = QStringLiteral("ui_panels");
 const QString kDockPrefix = QStringLiteral("timeSeriesDock");
 }  // namespace
 
-PanelLayout::PanelLayout(QMainWindow& window) : QObject(&window), window_(window)
-{
+PanelLayout::PanelLayout(QMainWindow& window) : QObject(&window), window_(window) {
     timeController_ = new TimeController(&window);
     timeSeries_ = new TimeSeriesPanel(&window);
     timeSeries_->setTimeController(timeController_);
@@ -41,8 +40,7 @@ PanelLayout::PanelLayout(QMainWindow& window) : QObject(&window), window_(window
 
 PanelLayout::~PanelLayout() = default;
 
-void PanelLayout::setProject(std::shared_ptr<Project> project)
-{
+void PanelLayout::setProject(std::shared_ptr<Project> project) {
     // Panels may hold pointers into the old project; they let go before it does.
     removeDockedPanels();
     timeSeries_->clear();
@@ -50,15 +48,13 @@ void PanelLayout::setProject(std::shared_ptr<Project> project)
     project_ = std::move(project);
 }
 
-QList<TimeSeriesPanel*> PanelLayout::timeSeriesPanels() const
-{
+QList<TimeSeriesPanel*> PanelLayout::timeSeriesPanels() const {
     QList<TimeSeriesPanel*> panels{timeSeries_};
     for (const DockedPanel& docked : docked_) panels << docked.panel;
     return panels;
 }
 
-TimeSeriesPanel* PanelLayout::addTimeSeriesPanel(const QString& path)
-{
+TimeSeriesPanel* PanelLayout::addTimeSeriesPanel(const QString& path) {
     std::shared_ptr<const Stream> stream = sharedStream(path);
     if (!stream) return nullptr;
     DockedPanel docked;
@@ -74,16 +70,14 @@ TimeSeriesPanel* PanelLayout::addTimeSeriesPanel(const QString& path)
     window_.addDockWidget(Qt::BottomDockWidgetArea, docked.dock);
     connect(docked.panel, &TimeSeriesPanel::loaded, this, &PanelLayout::updateTimeBounds);
     QDockWidget* dock = docked.dock;
-    connect(dock, &QObject::destroyed, this, [this, dock] {
-        docked_.removeIf([dock](const DockedPanel& d) { return d.dock == dock; });
-    });
+    connect(dock, &QObject::destroyed, this,
+            [this, dock] { docked_.removeIf([dock](const DockedPanel& d) { return d.dock == dock; }); });
     docked.panel->setStream(std::move(stream), path);
     docked_ << docked;
     return docked.panel;
 }
 
-void PanelLayout::removeDockedPanels()
-{
+void PanelLayout::removeDockedPanels() {
     const QList<DockedPanel> panels = docked_;
     docked_.clear();
     for (const DockedPanel& docked : panels) {
@@ -95,8 +89,7 @@ void PanelLayout::removeDockedPanels()
     nextPanelNumber_ = 1;
 }
 
-bool PanelLayout::plot(const QString& path)
-{
+bool PanelLayout::plot(const QString& path) {
     std::shared_ptr<const Stream> stream = sharedStream(path);
     if (!stream) return false;
     bool changed = false;
@@ -109,8 +102,7 @@ bool PanelLayout::plot(const QString& path)
     return changed;
 }
 
-void PanelLayout::releaseStreamsOf(const QString& output)
-{
+void PanelLayout::releaseStreamsOf(const QString& output) {
     if (!project_) return;
     const auto replaced = [&](const Stream* shown) {
         if (!shown) return false;
@@ -123,28 +115,17 @@ void PanelLayout::releaseStreamsOf(const QString& output)
     if (replaced(trajectory_->stream())) trajectory_->clear();
 }
 
-void PanelLayout::showTimeSeriesView()
-{
-    tabs_->setCurrentWidget(timeSeries_);
-}
+void PanelLayout::showTimeSeriesView() { tabs_->setCurrentWidget(timeSeries_); }
 
-void PanelLayout::showTrajectoryView()
-{
-    tabs_->setCurrentWidget(trajectory_);
-}
+void PanelLayout::showTrajectoryView() { tabs_->setCurrentWidget(trajectory_); }
 
-bool PanelLayout::isTrajectoryShown() const
-{
-    return tabs_->currentWidget() == trajectory_;
-}
+bool PanelLayout::isTrajectoryShown() const { return tabs_->currentWidget() == trajectory_; }
 
-QCustomPlot* PanelLayout::currentPlot() const
-{
+QCustomPlot* PanelLayout::currentPlot() const {
     return isTrajectoryShown() ? trajectory_->plot() : timeSeries_->plot();
 }
 
-void PanelLayout::updateTimeBounds()
-{
+void PanelLayout::updateTimeBounds() {
     double begin = std::numeric_limits<double>::infinity(), end = -begin, step = 0;
     for (TimeSeriesPanel* panel : timeSeriesPanels()) {
         const StreamData* data = panel->data();
@@ -162,20 +143,18 @@ void PanelLayout::updateTimeBounds()
     timeController_->setVisibleRange(viewBegin, viewEnd);
 }
 
-void PanelLayout::storeLayout()
-{
+void PanelLayout::storeLayout() {
     if (!project_) return;
     QJsonArray panels;
     for (const DockedPanel& docked : docked_)
-        panels.append(QJsonObject{{QStringLiteral("name"), docked.dock->objectName()},
-                                  {QStringLiteral("stream"), docked.path}});
+        panels.append(
+            QJsonObject{{QStringLiteral("name"), docked.dock->objectName()}, {QStringLiteral("stream"), docked.path}});
     QJsonObject& meta = project_->meta().extra;
     meta[kPanelsKey] = panels;
     meta[kLayoutKey] = QString::fromLatin1(window_.saveState().toBase64());
 }
 
-void PanelLayout::restoreLayout()
-{
+void PanelLayout::restoreLayout() {
     if (!project_) return;
     const QJsonObject& meta = project_->meta().extra;
     int highest = 0;
@@ -193,15 +172,13 @@ void PanelLayout::restoreLayout()
     if (!state.isEmpty()) window_.restoreState(state);
 }
 
-void PanelLayout::waitForLoads()
-{
+void PanelLayout::waitForLoads() {
     for (const DockedPanel& docked : docked_) docked.panel->waitForLoad();
     timeSeries_->waitForLoad();
     trajectory_->waitForLoad();
 }
 
-void PanelLayout::waitForPlots()
-{
+void PanelLayout::waitForPlots() {
     waitForLoads();
     // Layout first (plot widths decide the decimation), then draw synchronously.
     for (int i = 0; i < 3; ++i) {
@@ -211,8 +188,7 @@ void PanelLayout::waitForPlots()
     }
 }
 
-std::shared_ptr<const Stream> PanelLayout::sharedStream(const QString& path) const
-{
+std::shared_ptr<const Stream> PanelLayout::sharedStream(const QString& path) const {
     if (!project_) return {};
     const Stream* stream = project_->stream(path);
     if (!stream) return {};

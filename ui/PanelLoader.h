@@ -22,8 +22,7 @@ public:
     // Runs load() on a worker; deliver(result) follows on the GUI thread. A request still
     // running is superseded: its result is dropped when it arrives.
     template <typename Result>
-    void start(std::function<Result()> load, std::function<void(Result)> deliver)
-    {
+    void start(std::function<Result()> load, std::function<void(Result)> deliver) {
         // Written by the worker, read on the GUI thread after the future finished.
         auto slot = std::make_shared<std::optional<Result>>();
         startErased([load = std::move(load), slot] { slot->emplace(load()); },

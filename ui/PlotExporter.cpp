@@ -15,8 +15,7 @@ const QString kDirKey = QStringLiteral("export/directory");
 const QString kFilterKey = QStringLiteral("export/filter");
 }  // namespace
 
-Status PlotExporter::exportPlot(QCustomPlot* plot, const QString& path, QSize size, double scale)
-{
+Status PlotExporter::exportPlot(QCustomPlot* plot, const QString& path, QSize size, double scale) {
     if (!plot) return makeError(tr("Nothing to export."));
     if (size.isEmpty()) size = plot->size();
     const QString suffix = QFileInfo(path).suffix().toLower();
@@ -46,18 +45,19 @@ Status PlotExporter::exportPlot(QCustomPlot* plot, const QString& path, QSize si
     return {};
 }
 
-QString PlotExporter::exportDialog(QCustomPlot* plot, QWidget* parent)
-{
+QString PlotExporter::exportDialog(QCustomPlot* plot, QWidget* parent) {
     QSettings settings;
     const QStringList filters{tr("PNG image (*.png)"), tr("SVG drawing (*.svg)"), tr("PDF document (*.pdf)")};
     QString filter = settings.value(kFilterKey, filters.front()).toString();
     if (!filters.contains(filter)) filter = filters.front();
     const QString dir = settings.value(kDirKey, QDir::homePath()).toString();
-    QString path = QFileDialog::getSaveFileName(parent, tr("Export View"), dir, filters.join(QStringLiteral(";;")), &filter);
+    QString path =
+        QFileDialog::getSaveFileName(parent, tr("Export View"), dir, filters.join(QStringLiteral(";;")), &filter);
     if (path.isEmpty()) return {};
     if (QFileInfo(path).suffix().isEmpty())
-        path += QStringLiteral(".") + QStringList{QStringLiteral("png"), QStringLiteral("svg"), QStringLiteral("pdf")}
-                                          .at(std::max<qsizetype>(0, filters.indexOf(filter)));
+        path +=
+            QStringLiteral(".") + QStringList{QStringLiteral("png"), QStringLiteral("svg"), QStringLiteral("pdf")}.at(
+                                      std::max<qsizetype>(0, filters.indexOf(filter)));
     settings.setValue(kDirKey, QFileInfo(path).absolutePath());
     settings.setValue(kFilterKey, filter);
     const Status status = exportPlot(plot, path);

@@ -5,8 +5,7 @@
 
 namespace athlos::ui {
 
-QString PlotLanes::family(const QString& name)
-{
+QString PlotLanes::family(const QString& name) {
     // Components: axes (x y z w), local-frame directions after a separator (e n u), or an index.
     static const QRegularExpression suffix(QStringLiteral("^(.+?)[_.\\- ]+([xyzwenu]|[0-9]+)$"),
                                            QRegularExpression::CaseInsensitiveOption);
@@ -14,8 +13,7 @@ QString PlotLanes::family(const QString& name)
     return match.hasMatch() ? match.captured(1).toLower() : QString();
 }
 
-PlotLanes::Assignment PlotLanes::assign(const std::vector<Column>& columns, int maxLanes)
-{
+PlotLanes::Assignment PlotLanes::assign(const std::vector<Column>& columns, int maxLanes) {
     maxLanes = std::max(1, maxLanes);
     auto keysBy = [&](bool withFamily) {
         std::vector<QString> keys;

@@ -15,7 +15,7 @@ struct PlotLanes {
         QString name, unit;
     };
     struct Assignment {
-        std::vector<int> laneOf;  // per column
+        std::vector<int> laneOf;    // per column
         std::vector<QString> unit;  // per lane: the unit its y axis shows (empty when mixed)
         int count() const { return int(unit.size()); }
     };

@@ -15,9 +15,9 @@ public:
     explicit PaletteFollower(QCustomPlot* plot) : QObject(plot), plot_(plot) { plot->installEventFilter(this); }
 
 protected:
-    bool eventFilter(QObject* watched, QEvent* event) override
-    {
-        if (watched == plot_ && (event->type() == QEvent::PaletteChange || event->type() == QEvent::ApplicationPaletteChange)) {
+    bool eventFilter(QObject* watched, QEvent* event) override {
+        if (watched == plot_ &&
+            (event->type() == QEvent::PaletteChange || event->type() == QEvent::ApplicationPaletteChange)) {
             PlotStyle::applyPalette(plot_, plot_->palette());
             plot_->replot(QCustomPlot::rpQueuedReplot);
         }
@@ -29,29 +29,22 @@ private:
 };
 }  // namespace
 
-QColor PlotStyle::seriesColor(int index)
-{
+QColor PlotStyle::seriesColor(int index) {
     static const std::array<QColor, 10> palette = {
-        QColor(0, 114, 178),   QColor(213, 94, 0),    QColor(0, 158, 115),  QColor(204, 121, 167),
-        QColor(230, 159, 0),   QColor(86, 180, 233),  QColor(0, 0, 0),      QColor(140, 86, 75),
-        QColor(127, 127, 127), QColor(188, 189, 34),
+        QColor(0, 114, 178),  QColor(213, 94, 0), QColor(0, 158, 115), QColor(204, 121, 167), QColor(230, 159, 0),
+        QColor(86, 180, 233), QColor(0, 0, 0),    QColor(140, 86, 75), QColor(127, 127, 127), QColor(188, 189, 34),
     };
     return palette[static_cast<std::size_t>(index) % palette.size()];
 }
 
-QString PlotStyle::unitSuffix(const QString& unit)
-{
+QString PlotStyle::unitSuffix(const QString& unit) {
     if (unit.isEmpty() || unit == QLatin1String("1")) return {};
     return QStringLiteral(" [%1]").arg(unit);
 }
 
-QString PlotStyle::columnLabel(const QString& name, const QString& unit)
-{
-    return name + unitSuffix(unit);
-}
+QString PlotStyle::columnLabel(const QString& name, const QString& unit) { return name + unitSuffix(unit); }
 
-void PlotStyle::apply(QCustomPlot* plot)
-{
+void PlotStyle::apply(QCustomPlot* plot) {
     // Antialiasing while dragging costs more than it is worth; the still image is smooth again.
     plot->setNoAntialiasingOnDrag(true);
     plot->setPlottingHint(QCP::phCacheLabels, true);
@@ -66,8 +59,7 @@ void PlotStyle::apply(QCustomPlot* plot)
     new PaletteFollower(plot);
 }
 
-void PlotStyle::applyPalette(QCustomPlot* plot, const QPalette& palette)
-{
+void PlotStyle::applyPalette(QCustomPlot* plot, const QPalette& palette) {
     const QColor base = palette.color(QPalette::Base);
     const QColor text = palette.color(QPalette::Text);
     const bool dark = base.lightnessF() < 0.5;

@@ -20,8 +20,7 @@ namespace athlos::ui {
 namespace {
 
 // Streams (or tables) of the project that the input accepts.
-QStringList candidates(const Project* project, const InputSpec& spec)
-{
+QStringList candidates(const Project* project, const InputSpec& spec) {
     QStringList paths;
     if (!project) return paths;
     if (spec.table) {
@@ -40,8 +39,7 @@ QStringList candidates(const Project* project, const InputSpec& spec)
 
 }  // namespace
 
-ProcessorDialog::ProcessorDialog(Workspace& workspace, QWidget* parent) : QDialog(parent), workspace_(workspace)
-{
+ProcessorDialog::ProcessorDialog(Workspace& workspace, QWidget* parent) : QDialog(parent), workspace_(workspace) {
     setWindowTitle(tr("Run Processor"));
 
     processorBox_ = new QComboBox(this);
@@ -105,21 +103,16 @@ ProcessorDialog::ProcessorDialog(Workspace& workspace, QWidget* parent) : QDialo
     resize(560, 600);
 }
 
-QString ProcessorDialog::processorId() const
-{
-    return processorBox_->currentData().toString();
-}
+QString ProcessorDialog::processorId() const { return processorBox_->currentData().toString(); }
 
-bool ProcessorDialog::selectProcessor(const QString& id)
-{
+bool ProcessorDialog::selectProcessor(const QString& id) {
     const int index = processorBox_->findData(id);
     if (index < 0) return false;
     processorBox_->setCurrentIndex(index);
     return true;
 }
 
-void ProcessorDialog::onProcessorChanged()
-{
+void ProcessorDialog::onProcessorChanged() {
     // removeRow deletes the label and the combo box of each input.
     inputBoxes_.clear();
     while (inputsLayout_->rowCount() > 0) inputsLayout_->removeRow(0);
@@ -147,15 +140,13 @@ void ProcessorDialog::onProcessorChanged()
     suggestOutput();
 }
 
-void ProcessorDialog::suggestOutput()
-{
+void ProcessorDialog::suggestOutput() {
     if (outputEdited_) return;
     const QString first = inputBoxes_.isEmpty() ? QString() : inputBoxes_.front()->currentData().toString();
     outputEdit_->setText(first.isEmpty() ? QString() : first + QLatin1Char('-') + processorId());
 }
 
-bool ProcessorDialog::setRequest(const RunRequest& request)
-{
+bool ProcessorDialog::setRequest(const RunRequest& request) {
     if (!selectProcessor(request.processorId)) return false;
     for (int i = 0; i < inputBoxes_.size() && i < request.inputs.size(); ++i) {
         QComboBox* box = inputBoxes_[i];
@@ -173,8 +164,7 @@ bool ProcessorDialog::setRequest(const RunRequest& request)
     return true;
 }
 
-RunRequest ProcessorDialog::request() const
-{
+RunRequest ProcessorDialog::request() const {
     RunRequest request;
     request.processorId = processorId();
     for (QComboBox* box : inputBoxes_) request.inputs << box->currentData().toString();
@@ -183,19 +173,14 @@ RunRequest ProcessorDialog::request() const
     return request;
 }
 
-QString ProcessorDialog::errorText() const
-{
-    return error_->isHidden() ? QString() : error_->text();
-}
+QString ProcessorDialog::errorText() const { return error_->isHidden() ? QString() : error_->text(); }
 
-void ProcessorDialog::showError(const QString& message)
-{
+void ProcessorDialog::showError(const QString& message) {
     error_->setText(message);
     error_->setVisible(!message.isEmpty());
 }
 
-Status ProcessorDialog::validate()
-{
+Status ProcessorDialog::validate() {
     const auto processor = ProcessorRegistry::instance().find(processorId());
     Status status;
     if (!processor) {
@@ -221,8 +206,7 @@ Status ProcessorDialog::validate()
     return status;
 }
 
-Status ProcessorDialog::run()
-{
+Status ProcessorDialog::run() {
     if (Status valid = validate(); !valid) return valid;
     auto outcome = workspace_.runProcessor(request());
     if (!outcome) {

@@ -21,8 +21,7 @@ namespace athlos::ui {
 
 ProcessorLauncher::ProcessorLauncher(MainWindow& window) : window_(window) {}
 
-Expected<RunOutcome> ProcessorLauncher::run(const RunRequest& request)
-{
+Expected<RunOutcome> ProcessorLauncher::run(const RunRequest& request) {
     std::shared_ptr<Project> project = window_.project_;
     if (!project) return makeError(tr("Open a project first."));
     if (window_.busy_) return makeError(tr("Another job is still running."));
@@ -55,7 +54,8 @@ Expected<RunOutcome> ProcessorLauncher::run(const RunRequest& request)
         window_.statusBar()->showMessage(tr("%1 cancelled; the project is unchanged.").arg(processor->name()), 5000);
         return makeError(tr("Cancelled; the project is unchanged."));
     }
-    if (!result->has_value()) return makeError(outcome.status ? tr("The processor did not run.") : outcome.status.message());
+    if (!result->has_value())
+        return makeError(outcome.status ? tr("The processor did not run.") : outcome.status.message());
     Expected<RunOutcome> run = std::move(**result);
     if (!run) return run;
     project->setModified(true);
@@ -67,17 +67,19 @@ Expected<RunOutcome> ProcessorLauncher::run(const RunRequest& request)
         window_.annotationEditor()->annotationsReplaced(recordings, annotationsBefore, digestBefore);
     }
     if (!run->written.isEmpty()) window_.selectItem(run->written.front());
-    window_.statusBar()->showMessage(tr("%1 wrote %2").arg(processor->name(), run->written.join(QStringLiteral(", "))), 8000);
+    window_.statusBar()->showMessage(tr("%1 wrote %2").arg(processor->name(), run->written.join(QStringLiteral(", "))),
+                                     8000);
     return run;
 }
 
-RunRequest ProcessorLauncher::rerunRequest(const QString& path) const
-{
+RunRequest ProcessorLauncher::rerunRequest(const QString& path) const {
     const Project* project = window_.project_.get();
     if (!project) return {};
     const Provenance* provenance = nullptr;
-    if (const Stream* stream = project->stream(path)) provenance = &stream->info().provenance;
-    else if (const Table* table = project->table(path)) provenance = &table->provenance;
+    if (const Stream* stream = project->stream(path))
+        provenance = &stream->info().provenance;
+    else if (const Table* table = project->table(path))
+        provenance = &table->provenance;
     if (!provenance || !ItemDescription::isResult(*provenance)) return {};
     RunRequest request;
     request.processorId = provenance->processorId;
@@ -87,20 +89,19 @@ RunRequest ProcessorLauncher::rerunRequest(const QString& path) const
     return request;
 }
 
-void ProcessorLauncher::openDialog(const RunRequest& prefill)
-{
+void ProcessorLauncher::openDialog(const RunRequest& prefill) {
     if (!window_.project_ || window_.busy_) return;
     ProcessorDialog dialog(window_, &window_);
     if (!prefill.processorId.isEmpty() && !dialog.setRequest(prefill)) {
-        window_.showError(tr("Re-run"), tr("The processor '%1' is not available (is its plugin installed?).")
-                                            .arg(prefill.processorId));
+        window_.showError(
+            tr("Re-run"),
+            tr("The processor '%1' is not available (is its plugin installed?).").arg(prefill.processorId));
         return;
     }
     dialog.exec();
 }
 
-void ProcessorLauncher::showContextMenu(const QString& path, const QPoint& globalPos, QAction* runProcessor)
-{
+void ProcessorLauncher::showContextMenu(const QString& path, const QPoint& globalPos, QAction* runProcessor) {
     if (!window_.project_ || window_.busy_) return;
     QMenu menu(&window_);
     const RunRequest rerun = rerunRequest(path);

@@ -13,8 +13,7 @@
 
 namespace athlos::ui {
 
-ProjectBrowser::ProjectBrowser(QMainWindow& window) : QObject(&window)
-{
+ProjectBrowser::ProjectBrowser(QMainWindow& window) : QObject(&window) {
     model_ = new ProjectTreeModel(this);
     tree_ = new QTreeView(&window);
     tree_->setModel(model_);
@@ -54,55 +53,47 @@ ProjectBrowser::ProjectBrowser(QMainWindow& window) : QObject(&window)
 
 ProjectBrowser::~ProjectBrowser() = default;
 
-void ProjectBrowser::setProject(Project* project)
-{
+void ProjectBrowser::setProject(Project* project) {
     project_ = project;
     model_->setProject(project);
     expandAll();
     showProjectDetails();
 }
 
-void ProjectBrowser::refresh()
-{
+void ProjectBrowser::refresh() {
     model_->refresh();
     expandAll();
 }
 
-void ProjectBrowser::expandAll()
-{
+void ProjectBrowser::expandAll() {
     tree_->expandAll();
     for (int c = 0; c < ProjectTreeModel::ColumnsColumn; ++c) tree_->resizeColumnToContents(c);
 }
 
-bool ProjectBrowser::selectItem(const QString& path)
-{
+bool ProjectBrowser::selectItem(const QString& path) {
     const QModelIndex index = model_->indexOf(path);
     if (!index.isValid()) return false;
-    if (tree_->currentIndex() == index) onCurrentChanged(index);
-    else tree_->setCurrentIndex(index);
+    if (tree_->currentIndex() == index)
+        onCurrentChanged(index);
+    else
+        tree_->setCurrentIndex(index);
     tree_->scrollTo(index);
     return true;
 }
 
-QString ProjectBrowser::currentItem() const
-{
-    return model_->pathOf(tree_->currentIndex());
-}
+QString ProjectBrowser::currentItem() const { return model_->pathOf(tree_->currentIndex()); }
 
-void ProjectBrowser::showProjectDetails()
-{
+void ProjectBrowser::showProjectDetails() {
     details_->setHtml(project_ ? ItemDescription::projectHtml(*project_) : QString());
 }
 
-void ProjectBrowser::onCurrentChanged(const QModelIndex& current)
-{
+void ProjectBrowser::onCurrentChanged(const QModelIndex& current) {
     const QString path = model_->pathOf(current);
     showDetails(path);
     if (model_->nodeType(current) == ProjectTreeModel::NodeType::Stream) emit streamSelected(path);
 }
 
-void ProjectBrowser::showDetails(const QString& path)
-{
+void ProjectBrowser::showDetails(const QString& path) {
     if (!project_) {
         details_->clear();
         return;

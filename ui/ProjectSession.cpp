@@ -30,16 +30,14 @@ namespace {
 const QString kProjectSuffix = QStringLiteral("athlos");
 
 // Importer errors name file and line already; this only guarantees the file is named.
-QString namingFile(const QString& file, const QString& message)
-{
+QString namingFile(const QString& file, const QString& message) {
     const QString name = QFileInfo(file).fileName();
     return message.contains(name) ? message : QStringLiteral("%1: %2").arg(QDir::toNativeSeparators(file), message);
 }
 
 }  // namespace
 
-ProjectSession::ProjectSession(MainWindow& window) : window_(window)
-{
+ProjectSession::ProjectSession(MainWindow& window) : window_(window) {
     autosaveTimer_ = new QTimer(&window);
     autosaveTimer_->setSingleShot(true);
     autosaveTimer_->setInterval(QSettings().value(QStringLiteral("annotation/autosave_seconds"), 30).toInt() * 1000);
@@ -50,8 +48,7 @@ ProjectSession::ProjectSession(MainWindow& window) : window_(window)
     });
 }
 
-bool ProjectSession::newProject(const QString& path)
-{
+bool ProjectSession::newProject(const QString& path) {
     if (!maybeSaveChanges()) return false;
     std::shared_ptr<Project> project = Project::create(path);
     if (Status locked = project->lockForChange(); !locked) {
@@ -73,8 +70,7 @@ bool ProjectSession::newProject(const QString& path)
     return true;
 }
 
-bool ProjectSession::openProject(const QString& path)
-{
+bool ProjectSession::openProject(const QString& path) {
     if (!maybeSaveChanges()) return false;
     // The GUI holds the project's write lock while it is open: a batch run on the same file is
     // refused instead of one overwriting the other's results.
@@ -95,14 +91,14 @@ bool ProjectSession::openProject(const QString& path)
     if (!notes.isEmpty()) {
         window_.statusBar()->showMessage(notes.join(QLatin1Char(' ')), 15000);
         if (window_.interactive_)
-            QMessageBox::information(&window_, tr("Opened after an interrupted save"), notes.join(QStringLiteral("\n")));
+            QMessageBox::information(&window_, tr("Opened after an interrupted save"),
+                                     notes.join(QStringLiteral("\n")));
     }
     recoverJournal();
     return true;
 }
 
-bool ProjectSession::saveProject()
-{
+bool ProjectSession::saveProject() {
     std::shared_ptr<Project> project = window_.project_;
     if (!project) return false;
     if (!runSave([project](const Progress& progress) { return project->save(progress); },
@@ -113,8 +109,7 @@ bool ProjectSession::saveProject()
     return true;
 }
 
-bool ProjectSession::runSave(const std::function<Status(const Progress&)>& save, const QString& cancelledMessage)
-{
+bool ProjectSession::runSave(const std::function<Status(const Progress&)>& save, const QString& cancelledMessage) {
     window_.panels_->storeLayout();
     // The panels' workers may be reading lazy samples; saving rebinds the streams to the new file.
     window_.panels_->waitForLoads();
@@ -122,8 +117,10 @@ bool ProjectSession::runSave(const std::function<Status(const Progress&)>& save,
     const BackgroundTask::Outcome outcome = BackgroundTask::run(&window_, tr("Saving…"), save, window_.interactive_);
     window_.setBusy(false);
     if (!outcome.status) {
-        if (outcome.cancelled) window_.statusBar()->showMessage(cancelledMessage, 5000);
-        else window_.showError(tr("Could not save the project"), outcome.status.message());
+        if (outcome.cancelled)
+            window_.statusBar()->showMessage(cancelledMessage, 5000);
+        else
+            window_.showError(tr("Could not save the project"), outcome.status.message());
         return false;
     }
     window_.project_->setModified(false);
@@ -131,8 +128,7 @@ bool ProjectSession::runSave(const std::function<Status(const Progress&)>& save,
     return true;
 }
 
-bool ProjectSession::saveProjectAs(const QString& path)
-{
+bool ProjectSession::saveProjectAs(const QString& path) {
     std::shared_ptr<Project> project = window_.project_;
     if (!project) return false;
     if (!runSave([project, path](const Progress& progress) { return project->saveAs(path, progress); },
@@ -145,8 +141,7 @@ bool ProjectSession::saveProjectAs(const QString& path)
     return true;
 }
 
-bool ProjectSession::importFiles(const QStringList& files)
-{
+bool ProjectSession::importFiles(const QStringList& files) {
     if (files.isEmpty()) return false;
     std::shared_ptr<Project> project = window_.project_;
     if (!project) {
@@ -197,15 +192,16 @@ bool ProjectSession::importFiles(const QStringList& files)
     if (!paths.isEmpty()) window_.selectItem(paths.front());
     window_.statusBar()->showMessage(tr("Imported %1").arg(paths.join(QStringLiteral(", "))), 8000);
     if (!warnings.isEmpty()) {
-        if (window_.interactive_) QMessageBox::information(&window_, tr("Import warnings"), warnings.join(QLatin1Char('\n')));
-        else emit window_.errorReported(warnings.join(QLatin1Char('\n')));
+        if (window_.interactive_)
+            QMessageBox::information(&window_, tr("Import warnings"), warnings.join(QLatin1Char('\n')));
+        else
+            emit window_.errorReported(warnings.join(QLatin1Char('\n')));
     }
     emit window_.projectChanged();
     return true;
 }
 
-bool ProjectSession::maybeSaveChanges()
-{
+bool ProjectSession::maybeSaveChanges() {
     const Project* project = window_.project_.get();
     if (!project || !project->isModified() || !window_.interactive_) return true;
     const auto answer = QMessageBox::warning(
@@ -218,14 +214,12 @@ bool ProjectSession::maybeSaveChanges()
     return answer == QMessageBox::Discard;
 }
 
-void ProjectSession::setAutosaveDelay(int milliseconds)
-{
+void ProjectSession::setAutosaveDelay(int milliseconds) {
     autosaveTimer_->stop();
     autosaveTimer_->setInterval(std::max(0, milliseconds));
 }
 
-bool ProjectSession::autosave()
-{
+bool ProjectSession::autosave() {
     std::shared_ptr<Project> project = window_.project_;
     if (!project || window_.busy_ || !project->isModified()) return false;
     window_.panels_->waitForLoads();
@@ -249,16 +243,14 @@ bool ProjectSession::autosave()
     return true;
 }
 
-void ProjectSession::afterSave()
-{
+void ProjectSession::afterSave() {
     // The file now has every edit; a new journal starts (at the new path after Save As).
     AnnotationJournal& journal = window_.annotationEditor()->journal();
     journal.discard();
     journal.setProjectPath(window_.project_->path());
 }
 
-void ProjectSession::recoverJournal()
-{
+void ProjectSession::recoverJournal() {
     Project* project = window_.project_.get();
     if (!project || !AnnotationJournal::hasPendingEdits(project->path())) return;
     AnnotationEditor* editor = window_.annotationEditor();
@@ -294,23 +286,20 @@ void ProjectSession::recoverJournal()
 
 // --- dialogs ----------------------------------------------------------------------------------
 
-void ProjectSession::newProjectDialog()
-{
+void ProjectSession::newProjectDialog() {
     QString path = QFileDialog::getSaveFileName(&window_, tr("New Project"), {}, tr("Athlos projects (*.athlos)"));
     if (path.isEmpty()) return;
     if (QFileInfo(path).suffix().isEmpty()) path += QLatin1Char('.') + kProjectSuffix;
     newProject(path);
 }
 
-void ProjectSession::openProjectDialog()
-{
-    const QString path = QFileDialog::getOpenFileName(&window_, tr("Open Project"), {},
-                                                      tr("Athlos projects (*.athlos);;All files (*)"));
+void ProjectSession::openProjectDialog() {
+    const QString path =
+        QFileDialog::getOpenFileName(&window_, tr("Open Project"), {}, tr("Athlos projects (*.athlos);;All files (*)"));
     if (!path.isEmpty()) openProject(path);
 }
 
-void ProjectSession::saveAsDialog()
-{
+void ProjectSession::saveAsDialog() {
     const Project* project = window_.project_.get();
     if (!project) return;
     QString path = QFileDialog::getSaveFileName(&window_, tr("Save Project As"), project->path(),
@@ -320,16 +309,16 @@ void ProjectSession::saveAsDialog()
     saveProjectAs(path);
 }
 
-void ProjectSession::importDialog()
-{
+void ProjectSession::importDialog() {
     QStringList patterns;
     for (const auto& importer : importers())
         for (const QString& ext : importer->extensions()) {
             const QString pattern = QStringLiteral("*.") + ext;
             if (!patterns.contains(pattern)) patterns << pattern;
         }
-    QString filter = patterns.isEmpty() ? QString()
-                                        : tr("Recordings (%1)").arg(patterns.join(QLatin1Char(' '))) + QStringLiteral(";;");
+    QString filter = patterns.isEmpty()
+                         ? QString()
+                         : tr("Recordings (%1)").arg(patterns.join(QLatin1Char(' '))) + QStringLiteral(";;");
     filter += tr("All files (*)");
     const QStringList files = QFileDialog::getOpenFileNames(&window_, tr("Import Recordings"), {}, filter);
     if (!files.isEmpty()) importFiles(files);

@@ -13,18 +13,14 @@ ProjectTreeModel::ProjectTreeModel(QObject* parent)
       recordingIcon_(QStringLiteral(":/athlos/icons/recording.svg")),
       streamIcon_(QStringLiteral(":/athlos/icons/stream.svg")),
       tableIcon_(QStringLiteral(":/athlos/icons/table.svg")),
-      resultIcon_(QStringLiteral(":/athlos/icons/result.svg"))
-{
-}
+      resultIcon_(QStringLiteral(":/athlos/icons/result.svg")) {}
 
-void ProjectTreeModel::setProject(const Project* project)
-{
+void ProjectTreeModel::setProject(const Project* project) {
     project_ = project;
     refresh();
 }
 
-void ProjectTreeModel::refresh()
-{
+void ProjectTreeModel::refresh() {
     beginResetModel();
     recordings_.clear();
     if (project_) {
@@ -69,8 +65,7 @@ void ProjectTreeModel::refresh()
     endResetModel();
 }
 
-const ProjectTreeModel::Node* ProjectTreeModel::node(const QModelIndex& index) const
-{
+const ProjectTreeModel::Node* ProjectTreeModel::node(const QModelIndex& index) const {
     if (!index.isValid()) return nullptr;
     const quintptr id = index.internalId();
     if (id == 0) {
@@ -82,20 +77,17 @@ const ProjectTreeModel::Node* ProjectTreeModel::node(const QModelIndex& index) c
     return &recordings_[r].items[std::size_t(index.row())];
 }
 
-QString ProjectTreeModel::pathOf(const QModelIndex& index) const
-{
+QString ProjectTreeModel::pathOf(const QModelIndex& index) const {
     const Node* n = node(index);
     return n ? n->path : QString();
 }
 
-ProjectTreeModel::NodeType ProjectTreeModel::nodeType(const QModelIndex& index) const
-{
+ProjectTreeModel::NodeType ProjectTreeModel::nodeType(const QModelIndex& index) const {
     const Node* n = node(index);
     return n ? n->type : NodeType::Recording;
 }
 
-QModelIndex ProjectTreeModel::indexOf(const QString& path) const
-{
+QModelIndex ProjectTreeModel::indexOf(const QString& path) const {
     for (std::size_t r = 0; r < recordings_.size(); ++r) {
         if (recordings_[r].node.path == path) return index(int(r), 0);
         for (std::size_t i = 0; i < recordings_[r].items.size(); ++i)
@@ -104,8 +96,7 @@ QModelIndex ProjectTreeModel::indexOf(const QString& path) const
     return {};
 }
 
-QModelIndex ProjectTreeModel::index(int row, int column, const QModelIndex& parent) const
-{
+QModelIndex ProjectTreeModel::index(int row, int column, const QModelIndex& parent) const {
     if (column < 0 || column >= ColumnCount || row < 0) return {};
     if (!parent.isValid()) {
         if (row >= int(recordings_.size())) return {};
@@ -116,65 +107,66 @@ QModelIndex ProjectTreeModel::index(int row, int column, const QModelIndex& pare
     return createIndex(row, column, quintptr(parent.row() + 1));
 }
 
-QModelIndex ProjectTreeModel::parent(const QModelIndex& child) const
-{
+QModelIndex ProjectTreeModel::parent(const QModelIndex& child) const {
     if (!child.isValid() || child.internalId() == 0) return {};
     return createIndex(int(child.internalId() - 1), 0, quintptr(0));
 }
 
-int ProjectTreeModel::rowCount(const QModelIndex& parent) const
-{
+int ProjectTreeModel::rowCount(const QModelIndex& parent) const {
     if (!parent.isValid()) return int(recordings_.size());
     if (parent.column() != 0 || parent.internalId() != 0) return 0;
     return int(recordings_[std::size_t(parent.row())].items.size());
 }
 
-int ProjectTreeModel::columnCount(const QModelIndex&) const
-{
-    return ColumnCount;
-}
+int ProjectTreeModel::columnCount(const QModelIndex&) const { return ColumnCount; }
 
-QVariant ProjectTreeModel::data(const QModelIndex& index, int role) const
-{
+QVariant ProjectTreeModel::data(const QModelIndex& index, int role) const {
     const Node* n = node(index);
     if (!n) return {};
     switch (role) {
-    case Qt::DisplayRole:
-        switch (index.column()) {
-        case NameColumn: return n->name;
-        case KindColumn: return n->kind;
-        case RowsColumn: return n->rows;
-        case ColumnsColumn: return n->columns;
-        }
-        return {};
-    case Qt::ToolTipRole:
-        return n->toolTip;
-    case Qt::DecorationRole:
-        if (index.column() != NameColumn) return {};
-        if (n->type == NodeType::Recording) return recordingIcon_;
-        if (n->result) return resultIcon_;
-        return n->type == NodeType::Table ? tableIcon_ : streamIcon_;
-    case Qt::TextAlignmentRole:
-        if (index.column() == RowsColumn) return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
-        return {};
-    case PathRole:
-        return n->path;
-    case NodeTypeRole:
-        return int(n->type);
-    case KindRole:
-        return n->type == NodeType::Recording ? QString() : n->kind;
+        case Qt::DisplayRole:
+            switch (index.column()) {
+                case NameColumn:
+                    return n->name;
+                case KindColumn:
+                    return n->kind;
+                case RowsColumn:
+                    return n->rows;
+                case ColumnsColumn:
+                    return n->columns;
+            }
+            return {};
+        case Qt::ToolTipRole:
+            return n->toolTip;
+        case Qt::DecorationRole:
+            if (index.column() != NameColumn) return {};
+            if (n->type == NodeType::Recording) return recordingIcon_;
+            if (n->result) return resultIcon_;
+            return n->type == NodeType::Table ? tableIcon_ : streamIcon_;
+        case Qt::TextAlignmentRole:
+            if (index.column() == RowsColumn) return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
+            return {};
+        case PathRole:
+            return n->path;
+        case NodeTypeRole:
+            return int(n->type);
+        case KindRole:
+            return n->type == NodeType::Recording ? QString() : n->kind;
     }
     return {};
 }
 
-QVariant ProjectTreeModel::headerData(int section, Qt::Orientation orientation, int role) const
-{
+QVariant ProjectTreeModel::headerData(int section, Qt::Orientation orientation, int role) const {
     if (orientation != Qt::Horizontal || role != Qt::DisplayRole) return {};
     switch (section) {
-    case NameColumn: return tr("Name");
-    case KindColumn: return tr("Kind");
-    case RowsColumn: return tr("Rows");
-    case ColumnsColumn: return tr("Columns");
+        case NameColumn:
+            return tr("Name");
+        case KindColumn:
+            return tr("Kind");
+        case RowsColumn:
+            return tr("Rows");
+        case ColumnsColumn:
+            return tr("Columns");
     }
     return {};
 }

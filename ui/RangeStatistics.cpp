@@ -8,8 +8,7 @@
 
 namespace athlos::ui {
 
-RangeStatistics RangeStatistics::compute(const StreamData& data, int column, double t0, double t1)
-{
+RangeStatistics RangeStatistics::compute(const StreamData& data, int column, double t0, double t1) {
     RangeStatistics s;
     if (column < 0 || column >= data.columns) return s;
     const auto first = std::lower_bound(data.t.begin(), data.t.end(), t0);
@@ -35,8 +34,7 @@ RangeStatistics RangeStatistics::compute(const StreamData& data, int column, dou
     return s;
 }
 
-double RangeStatistics::valueAt(const StreamData& data, int column, double t)
-{
+double RangeStatistics::valueAt(const StreamData& data, int column, double t) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     if (column < 0 || column >= data.columns || data.rows() == 0) return nan;
     if (t < data.t.front() || t > data.t.back()) return nan;

@@ -44,7 +44,10 @@ public:
     void advance(double wallSeconds);
     // Manual clock: playing no longer starts the display timer, only advance() moves the cursor
     // (tests and benchmarks that must know which instant each frame shows).
-    void setManualClock(bool manual) { manualClock_ = manual; if (manual) timer_.stop(); }
+    void setManualClock(bool manual) {
+        manualClock_ = manual;
+        if (manual) timer_.stop();
+    }
 
 public slots:
     void setCursor(double t);

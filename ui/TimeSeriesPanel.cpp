@@ -28,8 +28,7 @@ namespace {
 constexpr double kMarkerSpacingPixels = 6.0;
 }  // namespace
 
-TimeSeriesPanel::TimeSeriesPanel(QWidget* parent) : QWidget(parent)
-{
+TimeSeriesPanel::TimeSeriesPanel(QWidget* parent) : QWidget(parent) {
     titleLabel_ = new QLabel(this);
     titleLabel_->setTextFormat(Qt::PlainText);
     QFont bold = titleLabel_->font();
@@ -50,8 +49,9 @@ TimeSeriesPanel::TimeSeriesPanel(QWidget* parent) : QWidget(parent)
 
     clockBox_ = new QCheckBox(tr("Clock time"), this);
     clockBox_->setObjectName(QStringLiteral("clockTimeBox"));
-    clockBox_->setToolTip(tr("Label the time axis with the time of day (UTC) the file gives, instead of seconds "
-                             "since the first sample"));
+    clockBox_->setToolTip(
+        tr("Label the time axis with the time of day (UTC) the file gives, instead of seconds "
+           "since the first sample"));
     clockBox_->setEnabled(false);
     connect(clockBox_, &QCheckBox::toggled, this, &TimeSeriesPanel::setClockTime);
 
@@ -71,8 +71,7 @@ TimeSeriesPanel::TimeSeriesPanel(QWidget* parent) : QWidget(parent)
     plot_->axisRect()->setRangeDrag(Qt::Horizontal);
     plot_->xAxis->setLabel(tr("t [s]"));
     plot_->legend->setVisible(false);
-    connect(plot_->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this,
-            &TimeSeriesPanel::onXRangeChanged);
+    connect(plot_->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, &TimeSeriesPanel::onXRangeChanged);
     connect(plot_, &QCustomPlot::afterLayout, this, &TimeSeriesPanel::onAfterLayout);
     connect(plot_, &QCustomPlot::afterReplot, this, [this] { replotted_ = true; });
     connect(plot_, &QCustomPlot::mouseDoubleClick, this, [this] { showFullRange(); });
@@ -124,8 +123,7 @@ TimeSeriesPanel::TimeSeriesPanel(QWidget* parent) : QWidget(parent)
 
 TimeSeriesPanel::~TimeSeriesPanel() = default;
 
-std::shared_ptr<TimeSeriesPanel::Loaded> TimeSeriesPanel::load(const std::shared_ptr<const Stream>& stream)
-{
+std::shared_ptr<TimeSeriesPanel::Loaded> TimeSeriesPanel::load(const std::shared_ptr<const Stream>& stream) {
     auto result = std::make_shared<Loaded>();
     auto data = stream->data();
     if (!data) {
@@ -140,8 +138,7 @@ std::shared_ptr<TimeSeriesPanel::Loaded> TimeSeriesPanel::load(const std::shared
 }
 
 void TimeSeriesPanel::setStream(std::shared_ptr<const Stream> stream, const QString& title,
-                                const QStringList& columns)
-{
+                                const QStringList& columns) {
     clear();
     if (!stream) return;
     stream_ = std::move(stream);
@@ -152,8 +149,7 @@ void TimeSeriesPanel::setStream(std::shared_ptr<const Stream> stream, const QStr
     updateHeader();
 }
 
-void TimeSeriesPanel::clear()
-{
+void TimeSeriesPanel::clear() {
     loader_.cancel();  // the result of a load still running is dropped when it arrives
     stream_.reset();
     loaded_.reset();
@@ -176,18 +172,11 @@ void TimeSeriesPanel::clear()
     plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 
-bool TimeSeriesPanel::isLoading() const
-{
-    return loader_.isLoading();
-}
+bool TimeSeriesPanel::isLoading() const { return loader_.isLoading(); }
 
-void TimeSeriesPanel::waitForLoad()
-{
-    loader_.waitForLoad();
-}
+void TimeSeriesPanel::waitForLoad() { loader_.waitForLoad(); }
 
-void TimeSeriesPanel::applyLoaded(std::shared_ptr<Loaded> result)
-{
+void TimeSeriesPanel::applyLoaded(std::shared_ptr<Loaded> result) {
     if (!result->error.isEmpty()) {
         error_ = result->error;
         updateHeader();
@@ -213,16 +202,14 @@ void TimeSeriesPanel::applyLoaded(std::shared_ptr<Loaded> result)
     emit loaded();
 }
 
-QStringList TimeSeriesPanel::visibleColumns() const
-{
+QStringList TimeSeriesPanel::visibleColumns() const {
     QStringList names;
     if (!stream_) return names;
     for (int c : visible_) names << stream_->info().columns.at(std::size_t(c)).name;
     return names;
 }
 
-void TimeSeriesPanel::setVisibleColumns(const QStringList& columns)
-{
+void TimeSeriesPanel::setVisibleColumns(const QStringList& columns) {
     requestedColumns_ = columns;
     if (!loaded_) return;
     visible_.clear();
@@ -235,8 +222,7 @@ void TimeSeriesPanel::setVisibleColumns(const QStringList& columns)
     plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 
-void TimeSeriesPanel::setAutoFitY(bool on)
-{
+void TimeSeriesPanel::setAutoFitY(bool on) {
     autoFitY_ = on;
     fitYBox_->setChecked(on);
     // With auto-fit the y range belongs to the panel; without it the user may drag it too.
@@ -247,15 +233,14 @@ void TimeSeriesPanel::setAutoFitY(bool on)
     }
 }
 
-void TimeSeriesPanel::rebuildColumnMenu()
-{
+void TimeSeriesPanel::rebuildColumnMenu() {
     columnsMenu_->clear();
     columnsButton_->setEnabled(loaded_ != nullptr);
     if (!loaded_) return;
     const Columns& cols = stream_->info().columns;
     for (int c = 0; c < int(cols.size()) && c < loaded_->data->columns; ++c) {
-        QAction* action = columnsMenu_->addAction(PlotStyle::columnLabel(cols[std::size_t(c)].name,
-                                                                         cols[std::size_t(c)].unit));
+        QAction* action =
+            columnsMenu_->addAction(PlotStyle::columnLabel(cols[std::size_t(c)].name, cols[std::size_t(c)].unit));
         action->setCheckable(true);
         action->setChecked(std::find(visible_.begin(), visible_.end(), c) != visible_.end());
         action->setData(cols[std::size_t(c)].name);
@@ -264,13 +249,13 @@ void TimeSeriesPanel::rebuildColumnMenu()
             for (QAction* a : columnsMenu_->actions())
                 if (a->isChecked()) names << a->data().toString();
             // Deferred: setVisibleColumns() rebuilds this menu, which deletes the sender.
-            QMetaObject::invokeMethod(this, [this, names] { setVisibleColumns(names); }, Qt::QueuedConnection);
+            QMetaObject::invokeMethod(
+                this, [this, names] { setVisibleColumns(names); }, Qt::QueuedConnection);
         });
     }
 }
 
-void TimeSeriesPanel::rebuildGraphs()
-{
+void TimeSeriesPanel::rebuildGraphs() {
     plot_->clearGraphs();
     removeExtraLanes();
     graphLane_.clear();
@@ -303,20 +288,18 @@ void TimeSeriesPanel::rebuildGraphs()
     PlotStyle::applyPalette(plot_, plot_->palette());
 }
 
-void TimeSeriesPanel::setClockTime(bool on)
-{
+void TimeSeriesPanel::setClockTime(bool on) {
     clockTime_ = on;
     if (clockBox_->isChecked() != on) clockBox_->setChecked(on);
     applyTimeAxis();
     plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 
-void TimeSeriesPanel::applyTimeAxis()
-{
+void TimeSeriesPanel::applyTimeAxis() {
     const bool clock = clockTime_ && t0_.has_value();
     // One ticker for every lane, so the grid lines line up; labelled once, under the bottom lane.
-    const QSharedPointer<QCPAxisTicker> ticker =
-        clock ? QSharedPointer<QCPAxisTicker>(new ClockTimeTicker(*t0_)) : QSharedPointer<QCPAxisTicker>(new QCPAxisTicker);
+    const QSharedPointer<QCPAxisTicker> ticker = clock ? QSharedPointer<QCPAxisTicker>(new ClockTimeTicker(*t0_))
+                                                       : QSharedPointer<QCPAxisTicker>(new QCPAxisTicker);
     const QString label = !clock ? tr("t [s]") : t0IsTimeOfDay_ ? tr("time of day") : tr("time of day (UTC)");
     for (std::size_t l = 0; l < lanes_.size(); ++l) {
         QCPAxis* x = lanes_[l].rect->axis(QCPAxis::atBottom);
@@ -327,8 +310,7 @@ void TimeSeriesPanel::applyTimeAxis()
     }
 }
 
-void TimeSeriesPanel::addLane(const QString& unit)
-{
+void TimeSeriesPanel::addLane(const QString& unit) {
     auto* rect = new QCPAxisRect(plot_);
     plot_->plotLayout()->addElement(int(lanes_.size()), 0, rect);
     rect->setMarginGroup(QCP::msLeft | QCP::msRight, marginGroup_);
@@ -357,8 +339,7 @@ void TimeSeriesPanel::addLane(const QString& unit)
     applyRangeInteractions();
 }
 
-void TimeSeriesPanel::removeExtraLanes()
-{
+void TimeSeriesPanel::removeExtraLanes() {
     while (lanes_.size() > 1) {
         const Lane lane = lanes_.back();
         lanes_.pop_back();
@@ -370,8 +351,7 @@ void TimeSeriesPanel::removeExtraLanes()
     plot_->xAxis->setLabel(tr("t [s]"));
 }
 
-void TimeSeriesPanel::applyRangeInteractions()
-{
+void TimeSeriesPanel::applyRangeInteractions() {
     // With auto-fit the y range belongs to the panel; without it the user may drag it too.
     const Qt::Orientations orientations = autoFitY_ ? Qt::Horizontal : Qt::Horizontal | Qt::Vertical;
     for (const Lane& lane : lanes_) {
@@ -380,15 +360,15 @@ void TimeSeriesPanel::applyRangeInteractions()
     }
 }
 
-void TimeSeriesPanel::updateHeader()
-{
+void TimeSeriesPanel::updateHeader() {
     QString text = title_;
     if (stream_ && !error_.isEmpty()) {
         text = tr("%1 — could not load: %2").arg(title_, error_);
         titleLabel_->setStyleSheet(QStringLiteral("color: #b00020;"));
     } else {
         titleLabel_->setStyleSheet({});
-        if (stream_ && isLoading()) text = tr("%1 — loading…").arg(title_);
+        if (stream_ && isLoading())
+            text = tr("%1 — loading…").arg(title_);
         else if (stream_ && loaded_)
             text = tr("%1 — %2 samples").arg(title_, QLocale().toString(qlonglong(loaded_->data->rows())));
         else if (!stream_)
@@ -397,8 +377,7 @@ void TimeSeriesPanel::updateHeader()
     titleLabel_->setText(text);
 }
 
-void TimeSeriesPanel::showFullRange()
-{
+void TimeSeriesPanel::showFullRange() {
     if (!loaded_ || loaded_->data->rows() == 0) return;
     const StreamData& data = *loaded_->data;
     double t0 = data.t.front(), t1 = data.t.back();
@@ -419,15 +398,13 @@ void TimeSeriesPanel::showFullRange()
     plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 
-int TimeSeriesPanel::plotWidthPixels() const
-{
+int TimeSeriesPanel::plotWidthPixels() const {
     const int width = plot_->axisRect()->width();
     // Before the first layout the axis rect has no size yet; guess from the widget.
     return width > 10 ? width : std::max(100, plot_->width() - 80);
 }
 
-void TimeSeriesPanel::redecimate()
-{
+void TimeSeriesPanel::redecimate() {
     if (!loaded_ || decimating_) return;
     decimating_ = true;
     const QCPRange range = plot_->xAxis->range();
@@ -439,8 +416,8 @@ void TimeSeriesPanel::redecimate()
         const DecimatedSeries series = pyramid.decimate(range.lower, range.upper, pixels);
         QCPGraph* graph = plot_->graph(g);
         graph->setData(series.keys, series.values, true);
-        const bool markers = series.raw && series.visibleSamples > 0
-                             && pixels / double(series.visibleSamples) >= kMarkerSpacingPixels;
+        const bool markers =
+            series.raw && series.visibleSamples > 0 && pixels / double(series.visibleSamples) >= kMarkerSpacingPixels;
         graph->setScatterStyle(markers ? QCPScatterStyle(QCPScatterStyle::ssDisc, 4) : QCPScatterStyle());
         Extremes& lane = visible[std::size_t(graphLane_[std::size_t(g)])];
         lane = Extremes::combine(lane, series.visible);
@@ -449,14 +426,12 @@ void TimeSeriesPanel::redecimate()
     decimating_ = false;
 }
 
-void TimeSeriesPanel::fitAllY(const std::vector<Extremes>& perLane)
-{
+void TimeSeriesPanel::fitAllY(const std::vector<Extremes>& perLane) {
     for (std::size_t l = 0; l < perLane.size() && l < lanes_.size(); ++l)
         fitY(lanes_[l].rect->axis(QCPAxis::atLeft), perLane[l]);
 }
 
-void TimeSeriesPanel::fitY(QCPAxis* axis, const Extremes& extremes)
-{
+void TimeSeriesPanel::fitY(QCPAxis* axis, const Extremes& extremes) {
     if (extremes.isEmpty() || !std::isfinite(extremes.min) || !std::isfinite(extremes.max)) return;
     double lo = extremes.min, hi = extremes.max;
     const double span = hi - lo;
@@ -465,8 +440,7 @@ void TimeSeriesPanel::fitY(QCPAxis* axis, const Extremes& extremes)
     axis->setRange(lo - pad, hi + pad);
 }
 
-void TimeSeriesPanel::onXRangeChanged(const QCPRange& range)
-{
+void TimeSeriesPanel::onXRangeChanged(const QCPRange& range) {
     syncingX_ = true;
     for (std::size_t l = 1; l < lanes_.size(); ++l) lanes_[l].rect->axis(QCPAxis::atBottom)->setRange(range);
     syncingX_ = false;
@@ -478,8 +452,7 @@ void TimeSeriesPanel::onXRangeChanged(const QCPRange& range)
     plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 
-void TimeSeriesPanel::onAfterLayout()
-{
+void TimeSeriesPanel::onAfterLayout() {
     // A resize changes the number of pixel columns; the data drawn right after this signal
     // must match the new width.
     if (loaded_ && plot_->axisRect()->width() != decimatedWidth_) {
@@ -488,8 +461,7 @@ void TimeSeriesPanel::onAfterLayout()
     }
 }
 
-long long TimeSeriesPanel::plottedPointCount() const
-{
+long long TimeSeriesPanel::plottedPointCount() const {
     long long n = 0;
     for (int g = 0; g < plot_->graphCount(); ++g) n += plot_->graph(g)->dataCount();
     return n;
@@ -497,8 +469,7 @@ long long TimeSeriesPanel::plottedPointCount() const
 
 // --- time cursor ------------------------------------------------------------------------------
 
-void TimeSeriesPanel::setTimeController(TimeController* controller)
-{
+void TimeSeriesPanel::setTimeController(TimeController* controller) {
     if (controller_) disconnect(controller_, nullptr, this, nullptr);
     controller_ = controller;
     for (const Lane& lane : lanes_) lane.cursor->setVisible(controller_ != nullptr);
@@ -510,21 +481,21 @@ void TimeSeriesPanel::setTimeController(TimeController* controller)
     onCursorChanged(controller_->cursor());
 }
 
-void TimeSeriesPanel::onCursorChanged(double t)
-{
+void TimeSeriesPanel::onCursorChanged(double t) {
     for (const Lane& lane : lanes_) {
         lane.cursor->point1->setCoords(t, 0);
         lane.cursor->point2->setCoords(t, 1);
     }
     // Only the cursor line changes: the overlay layer repaints without redrawing the graphs.
     // Its paint buffer exists only after the first full replot.
-    if (replotted_) plot_->layer(QStringLiteral("overlay"))->replot();
-    else plot_->replot(QCustomPlot::rpQueuedReplot);
+    if (replotted_)
+        plot_->layer(QStringLiteral("overlay"))->replot();
+    else
+        plot_->replot(QCustomPlot::rpQueuedReplot);
     updateReadout();
 }
 
-void TimeSeriesPanel::onControllerRange(double begin, double end)
-{
+void TimeSeriesPanel::onControllerRange(double begin, double end) {
     const QCPRange current = plot_->xAxis->range();
     if (current.lower == begin && current.upper == end) return;
     followingController_ = true;
@@ -532,8 +503,7 @@ void TimeSeriesPanel::onControllerRange(double begin, double end)
     followingController_ = false;
 }
 
-void TimeSeriesPanel::onPlotClicked(QMouseEvent* event)
-{
+void TimeSeriesPanel::onPlotClicked(QMouseEvent* event) {
     // A click (not the end of a drag) puts the cursor there.
     if (!controller_ || event->button() != Qt::LeftButton || event->modifiers() != Qt::NoModifier) return;
     if ((event->pos() - pressPos_).manhattanLength() > 3) return;
@@ -543,24 +513,16 @@ void TimeSeriesPanel::onPlotClicked(QMouseEvent* event)
     controller_->setCursor(plot_->xAxis->pixelToCoord(event->pos().x()));
 }
 
-void TimeSeriesPanel::keyPressEvent(QKeyEvent* event)
-{
+void TimeSeriesPanel::keyPressEvent(QKeyEvent* event) {
     if (controller_ && controller_->handleKey(event)) return;
     QWidget::keyPressEvent(event);
 }
 
-const StreamData* TimeSeriesPanel::data() const
-{
-    return loaded_ ? loaded_->data.get() : nullptr;
-}
+const StreamData* TimeSeriesPanel::data() const { return loaded_ ? loaded_->data.get() : nullptr; }
 
-QString TimeSeriesPanel::readoutText() const
-{
-    return readout_->text();
-}
+QString TimeSeriesPanel::readoutText() const { return readout_->text(); }
 
-void TimeSeriesPanel::updateReadout()
-{
+void TimeSeriesPanel::updateReadout() {
     readoutTimer_->stop();
     if (!controller_ || !loaded_ || visible_.empty()) {
         readout_->setVisible(false);
@@ -571,24 +533,27 @@ void TimeSeriesPanel::updateReadout()
     const double t = controller_->cursor();
     const QLocale locale;
     auto number = [&](double v) { return std::isfinite(v) ? locale.toString(v, 'g', 5) : QStringLiteral("–"); };
-    QString html = QStringLiteral("<table cellspacing=0 cellpadding=1><tr><th align=left>%1</th>"
-                                  "<th align=right>&nbsp;%2&nbsp;</th><th align=right>&nbsp;%3&nbsp;</th>"
-                                  "<th align=right>&nbsp;%4&nbsp;</th><th align=right>&nbsp;%5&nbsp;</th>"
-                                  "<th align=right>&nbsp;%6</th></tr>")
+    QString html = QStringLiteral(
+                       "<table cellspacing=0 cellpadding=1><tr><th align=left>%1</th>"
+                       "<th align=right>&nbsp;%2&nbsp;</th><th align=right>&nbsp;%3&nbsp;</th>"
+                       "<th align=right>&nbsp;%4&nbsp;</th><th align=right>&nbsp;%5&nbsp;</th>"
+                       "<th align=right>&nbsp;%6</th></tr>")
                        .arg(tr("t = %1 s").arg(number(t)), tr("at cursor"), tr("mean"), tr("SD"), tr("min"), tr("max"));
     const Columns& cols = stream_->info().columns;
     for (int c : visible_) {
         const Column& column = cols[std::size_t(c)];
         const RangeStatistics stats = RangeStatistics::compute(data, c, range.lower, range.upper);
-        html += QStringLiteral("<tr><td><font color='%1'>&#9632;</font> %2</td><td align=right>%3</td>"
-                               "<td align=right>%4</td><td align=right>%5</td><td align=right>%6</td>"
-                               "<td align=right>%7</td></tr>")
-                    .arg(PlotStyle::seriesColor(c).name(), PlotStyle::columnLabel(column.name, column.unit).toHtmlEscaped(),
-                         number(RangeStatistics::valueAt(data, c, t)),
-                         stats.count ? number(stats.mean) : QStringLiteral("–"),
-                         stats.count ? number(stats.sd) : QStringLiteral("–"),
-                         stats.count ? number(stats.min) : QStringLiteral("–"),
-                         stats.count ? number(stats.max) : QStringLiteral("–"));
+        html +=
+            QStringLiteral(
+                "<tr><td><font color='%1'>&#9632;</font> %2</td><td align=right>%3</td>"
+                "<td align=right>%4</td><td align=right>%5</td><td align=right>%6</td>"
+                "<td align=right>%7</td></tr>")
+                .arg(PlotStyle::seriesColor(c).name(), PlotStyle::columnLabel(column.name, column.unit).toHtmlEscaped(),
+                     number(RangeStatistics::valueAt(data, c, t)),
+                     stats.count ? number(stats.mean) : QStringLiteral("–"),
+                     stats.count ? number(stats.sd) : QStringLiteral("–"),
+                     stats.count ? number(stats.min) : QStringLiteral("–"),
+                     stats.count ? number(stats.max) : QStringLiteral("–"));
     }
     html += QStringLiteral("</table>");
     readout_->setText(html);

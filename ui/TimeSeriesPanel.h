@@ -45,8 +45,7 @@ public:
 
     // Plots stream (the pointer keeps it alive, e.g. an aliasing pointer into a shared project).
     // columns: names to show; empty shows all. Returns at once; loaded() or loadFailed() follows.
-    void setStream(std::shared_ptr<const Stream> stream, const QString& title = {},
-                   const QStringList& columns = {});
+    void setStream(std::shared_ptr<const Stream> stream, const QString& title = {}, const QStringList& columns = {});
     void clear();
     const Stream* stream() const { return stream_.get(); }
     QString title() const { return title_; }
@@ -153,11 +152,11 @@ private:
     QString title_;
     QString error_;
     QStringList requestedColumns_;
-    std::vector<int> visible_;  // stream column indices with a graph, in graph order
-    std::vector<Lane> lanes_;  // lanes_[0] is the main axis rect, its legend and cursor line
+    std::vector<int> visible_;    // stream column indices with a graph, in graph order
+    std::vector<Lane> lanes_;     // lanes_[0] is the main axis rect, its legend and cursor line
     std::vector<int> graphLane_;  // per graph
     QCPMarginGroup* marginGroup_ = nullptr;
-    bool syncingX_ = false;  // copying the main x range into the other lanes
+    bool syncingX_ = false;     // copying the main x range into the other lanes
     std::optional<double> t0_;  // of the loaded stream: s since the epoch (or midnight) at t = 0
     bool t0IsTimeOfDay_ = false;
     bool clockTime_ = false;

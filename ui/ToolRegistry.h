@@ -17,9 +17,9 @@ namespace athlos::ui {
 class Workspace;
 
 struct ToolEntry {
-    QString id;          // stable, e.g. "position-filter-wizard"
-    const char* text;    // menu text, a QT_TRANSLATE_NOOP("Tools", "...") literal (translated when shown)
-    const char* menu;    // "Processing", "Positioning", "Inertial", "View"… (also QT_TRANSLATE_NOOP("Tools", …))
+    QString id;        // stable, e.g. "position-filter-wizard"
+    const char* text;  // menu text, a QT_TRANSLATE_NOOP("Tools", "...") literal (translated when shown)
+    const char* menu;  // "Processing", "Positioning", "Inertial", "View"… (also QT_TRANSLATE_NOOP("Tools", …))
     std::function<void(Workspace&)> launch;
 };
 
@@ -27,7 +27,7 @@ struct ToolEntry {
 // --view <name>` through its Workspace: shows the right panels with data from the project. Error
 // if the project has no suitable data for the view.
 struct ViewEntry {
-    QString name;        // e.g. "playback"
+    QString name;  // e.g. "playback"
     std::function<Status(Workspace&)> prepare;
     // Whether the project has the data the view shows; unset: prepare() decides (and says why
     // not). A built-in view may hand over to a registered one that has data (e.g. `trajectory`

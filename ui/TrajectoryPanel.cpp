@@ -15,8 +15,7 @@
 
 namespace athlos::ui {
 
-TrajectoryPanel::TrajectoryPanel(QWidget* parent) : QWidget(parent)
-{
+TrajectoryPanel::TrajectoryPanel(QWidget* parent) : QWidget(parent) {
     titleLabel_ = new QLabel(this);
     titleLabel_->setTextFormat(Qt::PlainText);
     QFont bold = titleLabel_->font();
@@ -35,19 +34,19 @@ TrajectoryPanel::TrajectoryPanel(QWidget* parent) : QWidget(parent)
 
     startMarker_ = plot_->addGraph();
     startMarker_->setLineStyle(QCPGraph::lsNone);
-    startMarker_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(QColor(0, 130, 60), 2),
-                                                  QColor(0, 158, 115), 11));
+    startMarker_->setScatterStyle(
+        QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(QColor(0, 130, 60), 2), QColor(0, 158, 115), 11));
     startMarker_->setName(tr("Start"));
     endMarker_ = plot_->addGraph();
     endMarker_->setLineStyle(QCPGraph::lsNone);
-    endMarker_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssSquare, QPen(QColor(150, 30, 20), 2),
-                                                QColor(213, 94, 0), 10));
+    endMarker_->setScatterStyle(
+        QCPScatterStyle(QCPScatterStyle::ssSquare, QPen(QColor(150, 30, 20), 2), QColor(213, 94, 0), 10));
     endMarker_->setName(tr("End"));
     // After the start and end markers: graph(0) and graph(1) stay what they were.
     cursorMarker_ = plot_->addGraph();
     cursorMarker_->setLineStyle(QCPGraph::lsNone);
-    cursorMarker_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, QPen(QColor(0xd5, 0x5e, 0x00), 2),
-                                                   QColor(0xd5, 0x5e, 0x00), 12));
+    cursorMarker_->setScatterStyle(
+        QCPScatterStyle(QCPScatterStyle::ssDisc, QPen(QColor(0xd5, 0x5e, 0x00), 2), QColor(0xd5, 0x5e, 0x00), 12));
     cursorMarker_->setName(tr("Cursor"));
     cursorMarker_->removeFromLegend();
     plot_->legend->setVisible(false);
@@ -57,8 +56,10 @@ TrajectoryPanel::TrajectoryPanel(QWidget* parent) : QWidget(parent)
         if (size == lastAxisRectSize_) return;
         lastAxisRectSize_ = size;
         if (!hasData_) return;
-        if (userFramed_) keepEqualScale();
-        else showFullRange();
+        if (userFramed_)
+            keepEqualScale();
+        else
+            showFullRange();
     });
     connect(plot_, &QCustomPlot::mousePress, this, [this] { userFramed_ = true; });
     connect(plot_, &QCustomPlot::mouseWheel, this, [this] { userFramed_ = true; });
@@ -78,16 +79,14 @@ TrajectoryPanel::TrajectoryPanel(QWidget* parent) : QWidget(parent)
 
 TrajectoryPanel::~TrajectoryPanel() = default;
 
-bool TrajectoryPanel::isPositionStream(const StreamInfo& info)
-{
+bool TrajectoryPanel::isPositionStream(const StreamInfo& info) {
     static const QStringList kinds = {QStringLiteral("lps-position"), QStringLiteral("trajectory"),
                                       QStringLiteral("gnss")};
-    return kinds.contains(info.kind) && info.columnIndex(QStringLiteral("x")) >= 0
-           && info.columnIndex(QStringLiteral("y")) >= 0;
+    return kinds.contains(info.kind) && info.columnIndex(QStringLiteral("x")) >= 0 &&
+           info.columnIndex(QStringLiteral("y")) >= 0;
 }
 
-std::shared_ptr<TrajectoryPanel::Loaded> TrajectoryPanel::load(const std::shared_ptr<const Stream>& stream)
-{
+std::shared_ptr<TrajectoryPanel::Loaded> TrajectoryPanel::load(const std::shared_ptr<const Stream>& stream) {
     auto result = std::make_shared<Loaded>();
     const int cx = stream->info().columnIndex(QStringLiteral("x"));
     const int cy = stream->info().columnIndex(QStringLiteral("y"));
@@ -113,8 +112,7 @@ std::shared_ptr<TrajectoryPanel::Loaded> TrajectoryPanel::load(const std::shared
     return result;
 }
 
-void TrajectoryPanel::setStream(std::shared_ptr<const Stream> stream, const QString& title)
-{
+void TrajectoryPanel::setStream(std::shared_ptr<const Stream> stream, const QString& title) {
     clear();
     if (!stream) return;
     stream_ = std::move(stream);
@@ -129,8 +127,7 @@ void TrajectoryPanel::setStream(std::shared_ptr<const Stream> stream, const QStr
     updateHeader();
 }
 
-void TrajectoryPanel::clear()
-{
+void TrajectoryPanel::clear() {
     loader_.cancel();  // the result of a load still running is dropped when it arrives
     stream_.reset();
     title_.clear();
@@ -149,24 +146,16 @@ void TrajectoryPanel::clear()
     plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 
-void TrajectoryPanel::setNote(const QString& note)
-{
+void TrajectoryPanel::setNote(const QString& note) {
     note_ = note;
     updateHeader();
 }
 
-bool TrajectoryPanel::isLoading() const
-{
-    return loader_.isLoading();
-}
+bool TrajectoryPanel::isLoading() const { return loader_.isLoading(); }
 
-void TrajectoryPanel::waitForLoad()
-{
-    loader_.waitForLoad();
-}
+void TrajectoryPanel::waitForLoad() { loader_.waitForLoad(); }
 
-void TrajectoryPanel::applyLoaded(std::shared_ptr<Loaded> result)
-{
+void TrajectoryPanel::applyLoaded(std::shared_ptr<Loaded> result) {
     if (!result->error.isEmpty()) {
         error_ = result->error;
         updateHeader();
@@ -196,8 +185,7 @@ void TrajectoryPanel::applyLoaded(std::shared_ptr<Loaded> result)
     emit loaded();
 }
 
-void TrajectoryPanel::showFullRange()
-{
+void TrajectoryPanel::showFullRange() {
     userFramed_ = false;
     if (!hasData_) return;
     const QRect rect = plot_->axisRect()->rect();
@@ -213,32 +201,29 @@ void TrajectoryPanel::showFullRange()
     plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 
-void TrajectoryPanel::keepEqualScale()
-{
+void TrajectoryPanel::keepEqualScale() {
     plot_->yAxis->setScaleRatio(plot_->xAxis, 1.0);
     plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 
-int TrajectoryPanel::pointCount() const
-{
-    return curve_->dataCount();
-}
+int TrajectoryPanel::pointCount() const { return curve_->dataCount(); }
 
-void TrajectoryPanel::updateHeader()
-{
+void TrajectoryPanel::updateHeader() {
     if (stream_ && !error_.isEmpty()) {
         titleLabel_->setStyleSheet(QStringLiteral("color: #b00020;"));
         titleLabel_->setText(tr("%1 — could not load: %2").arg(title_, error_));
         return;
     }
     titleLabel_->setStyleSheet({});
-    if (!stream_) titleLabel_->setText(note_.isEmpty() ? tr("Select a position stream to show its path.") : note_);
-    else if (isLoading()) titleLabel_->setText(tr("%1 — loading…").arg(title_));
-    else titleLabel_->setText(tr("%1 — %2 samples").arg(title_, QLocale().toString(qlonglong(stream_->info().rows))));
+    if (!stream_)
+        titleLabel_->setText(note_.isEmpty() ? tr("Select a position stream to show its path.") : note_);
+    else if (isLoading())
+        titleLabel_->setText(tr("%1 — loading…").arg(title_));
+    else
+        titleLabel_->setText(tr("%1 — %2 samples").arg(title_, QLocale().toString(qlonglong(stream_->info().rows))));
 }
 
-void TrajectoryPanel::setTimeController(TimeController* controller)
-{
+void TrajectoryPanel::setTimeController(TimeController* controller) {
     if (controller_) disconnect(controller_, nullptr, this, nullptr);
     controller_ = controller;
     if (!controller_) return;
@@ -247,8 +232,7 @@ void TrajectoryPanel::setTimeController(TimeController* controller)
     updateCursorMarker();
 }
 
-QPointF TrajectoryPanel::cursorPosition() const
-{
+QPointF TrajectoryPanel::cursorPosition() const {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     if (!controller_ || curve_->data()->isEmpty()) return {nan, nan};
     const double t = controller_->cursor();
@@ -262,11 +246,12 @@ QPointF TrajectoryPanel::cursorPosition() const
     return {lower->key + f * (upper->key - lower->key), lower->value + f * (upper->value - lower->value)};
 }
 
-void TrajectoryPanel::updateCursorMarker()
-{
+void TrajectoryPanel::updateCursorMarker() {
     const QPointF p = cursorPosition();
-    if (std::isnan(p.x())) cursorMarker_->data()->clear();
-    else cursorMarker_->setData({p.x()}, {p.y()});
+    if (std::isnan(p.x()))
+        cursorMarker_->data()->clear();
+    else
+        cursorMarker_->setData({p.x()}, {p.y()});
     plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 

@@ -21,8 +21,7 @@
 
 namespace athlos::ui {
 
-void installTranslations(QApplication& app)
-{
+void installTranslations(QApplication& app) {
     const QString lang = qEnvironmentVariable("ATHLOS_LANG");
     const QLocale locale = lang.isEmpty() ? QLocale::system() : QLocale(lang);
     // An explicit language also formats numbers and dates that way, as LANG would.
@@ -43,16 +42,14 @@ void installTranslations(QApplication& app)
         delete qtTranslator;
 }
 
-int runMainWindow(const QString& projectPath)
-{
+int runMainWindow(const QString& projectPath) {
     MainWindow window;
     window.show();
     if (!projectPath.isEmpty()) window.openProject(projectPath);
     return QApplication::exec();
 }
 
-QString libraryVersions()
-{
+QString libraryVersions() {
     QString versions = athlos::libraryVersions().trimmed();
     // core does not link QCustomPlot, so the UI adds its own plotting library.
     if (!versions.contains(QLatin1String("QCustomPlot")))
@@ -60,8 +57,7 @@ QString libraryVersions()
     return versions;
 }
 
-QStringList screenshotViews()
-{
+QStringList screenshotViews() {
     QStringList views{QStringLiteral("main"), QStringLiteral("trajectory"), QStringLiteral("annotate")};
     // Tools add theirs (ATHLOS_REGISTER_VIEW); a built-in name wins over a registered one.
     for (const ViewEntry& entry : registeredViews())
@@ -71,8 +67,7 @@ QStringList screenshotViews()
 
 namespace {
 
-const ViewEntry* registeredView(const QString& name)
-{
+const ViewEntry* registeredView(const QString& name) {
     for (const ViewEntry& entry : registeredViews())
         if (entry.name == name) return &entry;
     return nullptr;
@@ -80,8 +75,7 @@ const ViewEntry* registeredView(const QString& name)
 
 // The time series of the first recording with annotations (else the first stream), the
 // annotation dock with classes and intervals, and the cursor in the middle.
-Status prepareAnnotateView(MainWindow& window)
-{
+Status prepareAnnotateView(MainWindow& window) {
     const Project* project = window.project();
     QString path;
     for (const auto& [name, recording] : project->recordings())
@@ -91,8 +85,8 @@ Status prepareAnnotateView(MainWindow& window)
         }
     if (path.isEmpty()) path = window.firstStream();
     if (path.isEmpty())
-        return makeError(QCoreApplication::translate("athlos::ui::UiEntry",
-                                                     "the project has no stream to annotate; import a recording first"));
+        return makeError(QCoreApplication::translate(
+            "athlos::ui::UiEntry", "the project has no stream to annotate; import a recording first"));
     window.selectItem(path);
     window.showTimeSeriesView();
     window.showAnnotationPanel();
@@ -106,12 +100,12 @@ Status prepareAnnotateView(MainWindow& window)
 
 }  // namespace
 
-Status renderScreenshot(const QString& projectPath, const QString& view, const QString& pngPath, QSize size)
-{
+Status renderScreenshot(const QString& projectPath, const QString& view, const QString& pngPath, QSize size) {
     if (!screenshotViews().contains(view))
         return makeError(QCoreApplication::translate("athlos::ui::UiEntry", "unknown view '%1'; valid views: %2")
                              .arg(view, screenshotViews().join(QStringLiteral(", "))));
-    if (!size.isValid() || size.isEmpty()) return makeError(QCoreApplication::translate("athlos::ui::UiEntry", "invalid screenshot size"));
+    if (!size.isValid() || size.isEmpty())
+        return makeError(QCoreApplication::translate("athlos::ui::UiEntry", "invalid screenshot size"));
 
     auto opened = Project::open(projectPath);
     if (!opened) return opened.error();
@@ -131,8 +125,9 @@ Status renderScreenshot(const QString& projectPath, const QString& view, const Q
     } else if (view != QLatin1String("main") && view != QLatin1String("trajectory")) {
         if (Status prepared = registeredView(view)->prepare(window); !prepared) return prepared;
     } else if (window.firstStream().isEmpty()) {
-        return makeError(QCoreApplication::translate("athlos::ui::UiEntry", "the project has no streams to show in view '%1'")
-                             .arg(view));
+        return makeError(
+            QCoreApplication::translate("athlos::ui::UiEntry", "the project has no streams to show in view '%1'")
+                .arg(view));
     } else if (view == QLatin1String("trajectory")) {
         // A team (a recording with the position streams of two or more athletes) plays back on its
         // venue, cursor mid-recording: the view `team` that the playback view registers.
@@ -142,8 +137,10 @@ Status renderScreenshot(const QString& projectPath, const QString& view, const Q
         if (showTeam) {
             if (Status prepared = team->prepare(window); !prepared) return prepared;
         } else if (path.isEmpty()) {
-            const QString note = QCoreApplication::translate("athlos::ui::UiEntry", "No position stream (lps-position, trajectory or gnss with x/y) in this "
-                                      "project; showing the main view.");
+            const QString note =
+                QCoreApplication::translate("athlos::ui::UiEntry",
+                                            "No position stream (lps-position, trajectory or gnss with x/y) in this "
+                                            "project; showing the main view.");
             qInfo("note: %s", qUtf8Printable(note));
             const QString first = window.firstStream();
             if (!first.isEmpty()) window.selectItem(first);
@@ -167,7 +164,8 @@ Status renderScreenshot(const QString& projectPath, const QString& view, const Q
     QImage image = window.grab().toImage();
     // grab() returns device pixels; the CI wants exactly `size` logical pixels.
     if (image.size() != size) image = image.scaled(size, Qt::IgnoreAspectRatio, Qt::SmoothTransformation);
-    if (!image.save(pngPath, "PNG")) return makeError(QCoreApplication::translate("athlos::ui::UiEntry", "cannot write %1").arg(pngPath));
+    if (!image.save(pngPath, "PNG"))
+        return makeError(QCoreApplication::translate("athlos::ui::UiEntry", "cannot write %1").arg(pngPath));
     return {};
 }
 

@@ -31,29 +31,30 @@
 
 namespace athlos::ui {
 
-WindowActions::WindowActions(MainWindow& window) : window_(window)
-{
+WindowActions::WindowActions(MainWindow& window) : window_(window) {
     createActions();
     createMenus();
 }
 
-void WindowActions::createActions()
-{
+void WindowActions::createActions() {
     MainWindow* w = &window_;
-    new_ = new QAction(QIcon::fromTheme(QStringLiteral("document-new"), QIcon(QStringLiteral(":/athlos/icons/new.svg"))),
-                       tr("&New Project…"), w);
+    new_ =
+        new QAction(QIcon::fromTheme(QStringLiteral("document-new"), QIcon(QStringLiteral(":/athlos/icons/new.svg"))),
+                    tr("&New Project…"), w);
     new_->setShortcut(QKeySequence::New);
     new_->setStatusTip(tr("Create an empty project file"));
     QObject::connect(new_, &QAction::triggered, w, [w] { w->session_->newProjectDialog(); });
 
-    open_ = new QAction(QIcon::fromTheme(QStringLiteral("document-open"), QIcon(QStringLiteral(":/athlos/icons/open.svg"))),
-                        tr("&Open Project…"), w);
+    open_ =
+        new QAction(QIcon::fromTheme(QStringLiteral("document-open"), QIcon(QStringLiteral(":/athlos/icons/open.svg"))),
+                    tr("&Open Project…"), w);
     open_->setShortcut(QKeySequence::Open);
     open_->setStatusTip(tr("Open an existing project file"));
     QObject::connect(open_, &QAction::triggered, w, [w] { w->session_->openProjectDialog(); });
 
-    save_ = new QAction(QIcon::fromTheme(QStringLiteral("document-save"), QIcon(QStringLiteral(":/athlos/icons/save.svg"))),
-                        tr("&Save"), w);
+    save_ =
+        new QAction(QIcon::fromTheme(QStringLiteral("document-save"), QIcon(QStringLiteral(":/athlos/icons/save.svg"))),
+                    tr("&Save"), w);
     save_->setShortcut(QKeySequence::Save);
     save_->setStatusTip(tr("Save the project (the file is replaced atomically)"));
     QObject::connect(save_, &QAction::triggered, w, [w] { w->saveProject(); });
@@ -86,8 +87,10 @@ void WindowActions::createActions()
     addPanel_->setStatusTip(tr("Plot the selected stream in another panel that shares the time cursor"));
     QObject::connect(addPanel_, &QAction::triggered, w, [w] {
         const QString path = w->currentItem();
-        if (w->project() && w->project()->stream(path)) w->addTimeSeriesPanel(path);
-        else w->statusBar()->showMessage(tr("Select a stream first."), 5000);
+        if (w->project() && w->project()->stream(path))
+            w->addTimeSeriesPanel(path);
+        else
+            w->statusBar()->showMessage(tr("Select a stream first."), 5000);
     });
     QUndoStack* undoStack = w->annotationEditor()->undoStack();
     undo_ = undoStack->createUndoAction(w, tr("&Undo"));
@@ -97,7 +100,8 @@ void WindowActions::createActions()
     annotateMode_ = new QAction(tr("&Annotate Mode"), w);
     annotateMode_->setCheckable(true);
     annotateMode_->setShortcut(Qt::CTRL | Qt::Key_M);
-    annotateMode_->setStatusTip(tr("Drag on the plot to create intervals of the current class (Shift+drag works always)"));
+    annotateMode_->setStatusTip(
+        tr("Drag on the plot to create intervals of the current class (Shift+drag works always)"));
     QObject::connect(annotateMode_, &QAction::toggled, w, [w](bool on) {
         w->annotationLayer()->setAnnotateMode(on);
         if (on) w->showAnnotationPanel();
@@ -123,8 +127,7 @@ void WindowActions::createActions()
     QObject::connect(showAll_, &QAction::triggered, w->timeController(), &TimeController::showAll);
 }
 
-void WindowActions::createMenus()
-{
+void WindowActions::createMenus() {
     QMenuBar* bar = window_.menuBar();
     QMenu* file = bar->addMenu(tr("&File"));
     file->addAction(new_);
@@ -169,12 +172,10 @@ void WindowActions::createMenus()
     help->addAction(about_);
 }
 
-void WindowActions::createToolMenus(QMenu* file, QMenu* processing, QMenu* view)
-{
+void WindowActions::createToolMenus(QMenu* file, QMenu* processing, QMenu* view) {
     // Menus appear in the order tools first name them, between Processing and Help.
-    std::vector<std::pair<QString, QMenu*>> menus{{QStringLiteral("File"), file},
-                                                  {QStringLiteral("Processing"), processing},
-                                                  {QStringLiteral("View"), view}};
+    std::vector<std::pair<QString, QMenu*>> menus{
+        {QStringLiteral("File"), file}, {QStringLiteral("Processing"), processing}, {QStringLiteral("View"), view}};
     QList<QMenu*> separated;
     for (const ToolEntry& entry : registeredTools()) {
         const QString menuName = QString::fromUtf8(entry.menu ? entry.menu : "Processing");
@@ -202,15 +203,14 @@ void WindowActions::createToolMenus(QMenu* file, QMenu* processing, QMenu* view)
     }
 }
 
-void WindowActions::rebuildRecentMenu()
-{
+void WindowActions::rebuildRecentMenu() {
     recentMenu_->clear();
     const QStringList paths = RecentProjects::list();
     int number = 1;
     MainWindow* w = &window_;
     for (const QString& path : paths) {
-        QAction* action = recentMenu_->addAction(
-            QStringLiteral("&%1 %2").arg(number++ % 10).arg(QFileInfo(path).fileName()));
+        QAction* action =
+            recentMenu_->addAction(QStringLiteral("&%1 %2").arg(number++ % 10).arg(QFileInfo(path).fileName()));
         action->setToolTip(QDir::toNativeSeparators(path));
         action->setStatusTip(QDir::toNativeSeparators(path));
         QObject::connect(action, &QAction::triggered, w, [w, path] { w->openProject(path); });
@@ -223,8 +223,7 @@ void WindowActions::rebuildRecentMenu()
     QObject::connect(recentMenu_->addAction(tr("Clear List")), &QAction::triggered, w, [] { RecentProjects::clear(); });
 }
 
-void WindowActions::updateEnabled(bool projectOpen)
-{
+void WindowActions::updateEnabled(bool projectOpen) {
     save_->setEnabled(projectOpen);
     saveAs_->setEnabled(projectOpen);
     import_->setEnabled(projectOpen);
@@ -233,15 +232,13 @@ void WindowActions::updateEnabled(bool projectOpen)
     for (QAction* action : std::as_const(toolActions_)) action->setEnabled(projectOpen);
 }
 
-void WindowActions::setBusy(bool busy, bool projectOpen)
-{
+void WindowActions::setBusy(bool busy, bool projectOpen) {
     for (QAction* action : {new_, open_, save_, saveAs_, import_, quit_, runProcessor_}) action->setEnabled(!busy);
     for (QAction* action : std::as_const(toolActions_)) action->setEnabled(!busy);
     if (!busy) updateEnabled(projectOpen);
 }
 
-void WindowActions::addExportMenu(QCustomPlot* plot)
-{
+void WindowActions::addExportMenu(QCustomPlot* plot) {
     plot->setContextMenuPolicy(Qt::CustomContextMenu);
     QObject::connect(plot, &QWidget::customContextMenuRequested, &window_, [this, plot](const QPoint& pos) {
         QMenu menu(&window_);
@@ -251,32 +248,30 @@ void WindowActions::addExportMenu(QCustomPlot* plot)
     });
 }
 
-void WindowActions::exportPlot(QCustomPlot* plot)
-{
+void WindowActions::exportPlot(QCustomPlot* plot) {
     const QString written = PlotExporter::exportDialog(plot, &window_);
-    if (!written.isEmpty()) window_.statusBar()->showMessage(tr("Exported %1").arg(QDir::toNativeSeparators(written)), 5000);
+    if (!written.isEmpty())
+        window_.statusBar()->showMessage(tr("Exported %1").arg(QDir::toNativeSeparators(written)), 5000);
 }
 
-void WindowActions::addToViewMenu(QAction* action)
-{
+void WindowActions::addToViewMenu(QAction* action) {
     if (viewMenu_ && !viewMenu_->actions().contains(action)) viewMenu_->addAction(action);
 }
 
-QAction* WindowActions::toolAction(const QString& id) const
-{
+QAction* WindowActions::toolAction(const QString& id) const {
     for (QAction* action : toolActions_)
         if (action->data().toString() == id) return action;
     return nullptr;
 }
 
-void WindowActions::about()
-{
+void WindowActions::about() {
     const QString versions = ui::libraryVersions();
-    QMessageBox::about(&window_, tr("About Athlos"),
-                       QStringLiteral("<h3>Athlos %1</h3><p>%2</p><p>%3</p><pre>%4</pre>")
-                           .arg(appVersion().toHtmlEscaped(),
-                                tr("Analysis of sports recordings from local positioning systems, IMUs and GNSS.").toHtmlEscaped(),
-                                tr("Built with:").toHtmlEscaped(), versions.toHtmlEscaped()));
+    QMessageBox::about(
+        &window_, tr("About Athlos"),
+        QStringLiteral("<h3>Athlos %1</h3><p>%2</p><p>%3</p><pre>%4</pre>")
+            .arg(appVersion().toHtmlEscaped(),
+                 tr("Analysis of sports recordings from local positioning systems, IMUs and GNSS.").toHtmlEscaped(),
+                 tr("Built with:").toHtmlEscaped(), versions.toHtmlEscaped()));
 }
 
 }  // namespace athlos::ui

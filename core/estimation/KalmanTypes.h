@@ -50,7 +50,8 @@ struct ModelDefaults {
 template <class Model>
 concept KalmanModel = requires(const Model& model, Vector<Model::kStateDim>& x, const Vector<Model::kMeasurementDim>& y,
                                Matrix<Model::kStateDim, Model::kStateDim>* jacobian, double T, double t) {
-    requires Model::kStateDim > 0 && Model::kMeasurementDim > 0;
+    requires Model::kStateDim >
+    0 && Model::kMeasurementDim > 0;
     { model.predict(x, T, t, jacobian) } -> std::convertible_to<Vector<Model::kStateDim>>;
     { model.processNoise(T, t) } -> std::convertible_to<Matrix<Model::kStateDim, Model::kStateDim>>;
     { model.measure(x, t) } -> std::convertible_to<Vector<Model::kMeasurementDim>>;

@@ -25,8 +25,8 @@ struct Cancelled {};
 // quadratic penalty (keeps the simplex from wandering off along flat directions).
 class LogSpaceFunction : public cv::MinProblemSolver::Function {
 public:
-    LogSpaceFunction(const std::vector<NoiseEstimator::Parameter>& parameters, const NoiseEstimator::Objective& objective,
-                     const std::function<bool()>& tick)
+    LogSpaceFunction(const std::vector<NoiseEstimator::Parameter>& parameters,
+                     const NoiseEstimator::Objective& objective, const std::function<bool()>& tick)
         : parameters_(parameters), objective_(objective), tick_(tick) {}
 
     int getDims() const override { return static_cast<int>(parameters_.size()); }
@@ -84,16 +84,16 @@ NoiseEstimator::Result NoiseEstimator::minimize(const Objective& objective, cons
     std::mt19937_64 rng(params_.seed);
 
     std::vector<double> bestZ(dims);
-    for (int i = 0; i < dims; ++i) bestZ[i] = std::log(std::clamp(parameters_[i].initial, parameters_[i].lower,
-                                                                  parameters_[i].upper));
+    for (int i = 0; i < dims; ++i)
+        bestZ[i] = std::log(std::clamp(parameters_[i].initial, parameters_[i].lower, parameters_[i].upper));
     double bestF = std::numeric_limits<double>::infinity();
 
     auto runFrom = [&](std::vector<double> z, int maxEvaluations, double step) {
         cv::Ptr<cv::DownhillSolver> solver = cv::DownhillSolver::create();
         solver->setFunction(cv::makePtr<LogSpaceFunction>(function));
         solver->setInitStep(cv::Mat(1, dims, CV_64F, cv::Scalar(step)));
-        solver->setTermCriteria(cv::TermCriteria(cv::TermCriteria::MAX_ITER + cv::TermCriteria::EPS, maxEvaluations,
-                                                 params_.tolerance));
+        solver->setTermCriteria(
+            cv::TermCriteria(cv::TermCriteria::MAX_ITER + cv::TermCriteria::EPS, maxEvaluations, params_.tolerance));
         cv::Mat x(1, dims, CV_64F, z.data());
         const double f = solver->minimize(x);
         if (f < bestF) {
@@ -108,7 +108,8 @@ NoiseEstimator::Result NoiseEstimator::minimize(const Objective& objective, cons
             std::vector<double> z = initial;
             if (s > 0)
                 for (int i = 0; i < dims; ++i) {
-                    std::uniform_real_distribution<double> u(std::log(parameters_[i].lower), std::log(parameters_[i].upper));
+                    std::uniform_real_distribution<double> u(std::log(parameters_[i].lower),
+                                                             std::log(parameters_[i].upper));
                     // Half the starts near the initial guess (within e^±2), half anywhere in the bounds.
                     z[i] = s % 2 ? std::clamp(initial[i] + std::uniform_real_distribution<double>(-2, 2)(rng),
                                               std::log(parameters_[i].lower), std::log(parameters_[i].upper))

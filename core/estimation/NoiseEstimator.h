@@ -30,7 +30,7 @@ public:
     };
 
     struct Params {
-        int starts = 4;               // first from the initial values, the others log-uniform in the bounds
+        int starts = 4;  // first from the initial values, the others log-uniform in the bounds
         int evaluationsPerStart = 300;
         int polishEvaluations = 300;  // a final restart from the best point (restarts help Nelder–Mead)
         double initialStep = 1.0;     // simplex size in log space (≈ factor e)

@@ -34,13 +34,13 @@ public:
     using Measurement = Vector<M>;
 
     struct Params {
-        double gate = kNoGate;                // α on d²
+        double gate = kNoGate;  // α on d²
         Smoothing smoothing = Smoothing::None;
-        double lag = 0.5;                     // s, fixed-lag smoothing
-        double maxStep = kNoGate;             // s, longest single prediction step
-        bool covariance = false;              // also return P at the output times
-        int reacquireCount = 8;               // consecutive rejections tested for consistency; 0 = off
-        double reacquireConsistency = 4.0;    // max mean squared residual of the line fit, in units of R
+        double lag = 0.5;                   // s, fixed-lag smoothing
+        double maxStep = kNoGate;           // s, longest single prediction step
+        bool covariance = false;            // also return P at the output times
+        int reacquireCount = 8;             // consecutive rejections tested for consistency; 0 = off
+        double reacquireConsistency = 4.0;  // max mean squared residual of the line fit, in units of R
     };
 
     struct SampleDiagnostics {
@@ -52,8 +52,8 @@ public:
     struct Result {
         std::vector<double> t;
         std::vector<StateVector> x;
-        std::vector<StateMatrix> P;                // only with Params::covariance
-        std::vector<SampleDiagnostics> samples;    // one per input sample
+        std::vector<StateMatrix> P;              // only with Params::covariance
+        std::vector<SampleDiagnostics> samples;  // one per input sample
     };
 
     // Progress callback: fraction done of the forward pass; returning false cancels (run() then
@@ -77,7 +77,8 @@ public:
         if (store) {
             nodes.reserve(tIn.size() + grid.size() + 16);
             outputNode.reserve(grid.size());
-            nodes.push_back({t0, filter.x(), filter.covariance(), filter.x(), filter.covariance(), StateMatrix::Zero()});
+            nodes.push_back(
+                {t0, filter.x(), filter.covariance(), filter.x(), filter.covariance(), StateMatrix::Zero()});
         }
 
         double now = t0;

@@ -8,7 +8,9 @@
 namespace athlos {
 
 QJsonObject GeodeticOrigin::toJson() const {
-    return QJsonObject{{QStringLiteral("lat"), lat}, {QStringLiteral("lon"), lon}, {QStringLiteral("height"), height},
+    return QJsonObject{{QStringLiteral("lat"), lat},
+                       {QStringLiteral("lon"), lon},
+                       {QStringLiteral("height"), height},
                        {QStringLiteral("datum"), QStringLiteral("WGS84")}};
 }
 
@@ -31,7 +33,8 @@ Expected<GeodeticOrigin> parseGeodeticOrigin(const QString& text) {
             return makeError(QStringLiteral("origin '%1': '%2' is not a number").arg(text, parts[i].trimmed()));
     }
     if (std::abs(v[0]) > 90.0 || std::abs(v[1]) > 180.0)
-        return makeError(QStringLiteral("origin '%1': latitude must be in [-90, 90], longitude in [-180, 180]").arg(text));
+        return makeError(
+            QStringLiteral("origin '%1': latitude must be in [-90, 90], longitude in [-180, 180]").arg(text));
     return GeodeticOrigin{v[0], v[1], v[2]};
 }
 
@@ -47,11 +50,9 @@ std::optional<GeodeticOrigin> firstFix(const Stream& stream) {
     const StreamInfo& info = stream.info();
     const int lat = info.columnIndex(QStringLiteral("lat")), lon = info.columnIndex(QStringLiteral("lon"));
     const int alt = info.columnIndex(QStringLiteral("alt"));
-    if (lat < 0 || lon < 0)
-        return std::nullopt;
+    if (lat < 0 || lon < 0) return std::nullopt;
     const auto data = stream.data();
-    if (!data)
-        return std::nullopt;
+    if (!data) return std::nullopt;
     for (size_t r = 0; r < (*data)->rows(); ++r) {
         const double la = (*data)->at(r, lat), lo = (*data)->at(r, lon);
         if (std::isfinite(la) && std::isfinite(lo)) {
@@ -66,27 +67,23 @@ Expected<bool> addLocalEnu(Stream& stream, const GeodeticOrigin& origin) {
     StreamInfo info = stream.info();
     const int lat = info.columnIndex(QStringLiteral("lat")), lon = info.columnIndex(QStringLiteral("lon"));
     const int alt = info.columnIndex(QStringLiteral("alt"));
-    if (lat < 0 || lon < 0)
-        return false;
+    if (lat < 0 || lon < 0) return false;
     const auto loaded = stream.data();
-    if (!loaded)
-        return loaded.error();
+    if (!loaded) return loaded.error();
     const StreamData& in = **loaded;
     // Existing x, y, z are replaced (a re-import, or a stream converted before).
     std::vector<int> keep;
     Columns columns;
     for (int c = 0; c < in.columns; ++c) {
         const QString& name = info.columns[size_t(c)].name;
-        if (name == QLatin1String("x") || name == QLatin1String("y") || name == QLatin1String("z"))
-            continue;
+        if (name == QLatin1String("x") || name == QLatin1String("y") || name == QLatin1String("z")) continue;
         keep.push_back(c);
         columns.push_back(info.columns[size_t(c)]);
     }
     const int added = alt >= 0 ? 3 : 2;
     columns.push_back({QStringLiteral("x"), QStringLiteral("m")});
     columns.push_back({QStringLiteral("y"), QStringLiteral("m")});
-    if (alt >= 0)
-        columns.push_back({QStringLiteral("z"), QStringLiteral("m")});
+    if (alt >= 0) columns.push_back({QStringLiteral("z"), QStringLiteral("m")});
     StreamData out(in.rows(), int(keep.size()) + added);
     out.t = in.t;
     const LocalTangentPlane plane(origin.lat, origin.lon, origin.height);
@@ -100,8 +97,7 @@ Expected<bool> addLocalEnu(Stream& stream, const GeodeticOrigin& origin) {
             const Eigen::Vector3d enu = plane.toEnu(la, lo, std::isfinite(h) ? h : origin.height);
             out.at(r, c++) = enu.x();
             out.at(r, c++) = enu.y();
-            if (alt >= 0)
-                out.at(r, c++) = std::isfinite(h) ? enu.z() : nan;
+            if (alt >= 0) out.at(r, c++) = std::isfinite(h) ? enu.z() : nan;
         } else {
             for (int k = 0; k < added; ++k) out.at(r, c++) = nan;
         }

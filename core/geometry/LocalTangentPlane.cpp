@@ -7,9 +7,9 @@
 namespace athlos {
 
 namespace {
-constexpr double kA = 6378137.0;                  // WGS84 semi-major axis (m)
-constexpr double kF = 1.0 / 298.257223563;        // flattening
-constexpr double kE2 = kF * (2.0 - kF);           // first eccentricity squared
+constexpr double kA = 6378137.0;            // WGS84 semi-major axis (m)
+constexpr double kF = 1.0 / 298.257223563;  // flattening
+constexpr double kE2 = kF * (2.0 - kF);     // first eccentricity squared
 }  // namespace
 
 Eigen::Vector3d LocalTangentPlane::geodeticToEcef(double latDeg, double lonDeg, double h) {
@@ -23,9 +23,7 @@ LocalTangentPlane::LocalTangentPlane(double latDeg, double lonDeg, double height
     originEcef_ = geodeticToEcef(latDeg, lonDeg, height);
     const double lat = latDeg * math::kDeg, lon = lonDeg * math::kDeg;
     const double sl = std::sin(lat), cl = std::cos(lat), so = std::sin(lon), co = std::cos(lon);
-    ecefToEnu_ << -so, co, 0.0,
-                  -sl * co, -sl * so, cl,
-                  cl * co, cl * so, sl;
+    ecefToEnu_ << -so, co, 0.0, -sl * co, -sl * so, cl, cl * co, cl * so, sl;
 }
 
 Eigen::Vector3d LocalTangentPlane::toEnu(double latDeg, double lonDeg, double height) const {

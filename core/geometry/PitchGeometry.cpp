@@ -60,23 +60,27 @@ Expected<PitchGeometry> PitchGeometry::fit(const std::vector<Eigen::Vector2d>& c
     if (corners.size() != 4)
         return makeError(QStringLiteral("corners: a pitch needs 4 corners, got %1").arg(corners.size()));
     for (std::size_t i = 0; i < 4; ++i)
-        if (!corners[i].allFinite()) return makeError(QStringLiteral("corners: corner %1 is not a finite point").arg(i + 1));
+        if (!corners[i].allFinite())
+            return makeError(QStringLiteral("corners: corner %1 is not a finite point").arg(i + 1));
     for (std::size_t i = 0; i < 4; ++i)
         for (std::size_t j = i + 1; j < 4; ++j)
             if ((corners[i] - corners[j]).norm() < params.minSide)
                 return makeError(QStringLiteral("corners: corners %1 and %2 are %3 m apart, closer than min_side %4 m")
-                                     .arg(i + 1).arg(j + 1).arg((corners[i] - corners[j]).norm(), 0, 'g', 3)
+                                     .arg(i + 1)
+                                     .arg(j + 1)
+                                     .arg((corners[i] - corners[j]).norm(), 0, 'g', 3)
                                      .arg(params.minSide));
     // Cyclic order: the outline 1-2-3-4 must not cross itself (1-2 × 3-4, 2-3 × 4-1).
     if (segmentsIntersect(corners[0], corners[1], corners[2], corners[3]) ||
         segmentsIntersect(corners[1], corners[2], corners[3], corners[0]))
-        return makeError(QStringLiteral("corners: the outline 1-2-3-4 crosses itself; give the corners in order going "
-                                        "round the pitch"));
+        return makeError(
+            QStringLiteral("corners: the outline 1-2-3-4 crosses itself; give the corners in order going "
+                           "round the pitch"));
     double area2 = 0.0;
     for (std::size_t i = 0; i < 4; ++i) area2 += cross(corners[i], corners[(i + 1) % 4]);
     // Counter-clockwise working order (a clockwise input is walked backwards).
-    const std::array<std::size_t, 4> order = area2 > 0 ? std::array<std::size_t, 4>{0, 1, 2, 3}
-                                                       : std::array<std::size_t, 4>{0, 3, 2, 1};
+    const std::array<std::size_t, 4> order =
+        area2 > 0 ? std::array<std::size_t, 4>{0, 1, 2, 3} : std::array<std::size_t, 4>{0, 3, 2, 1};
     for (std::size_t k = 0; k < 4; ++k) {
         const Eigen::Vector2d& a = corners[order[k]];
         const Eigen::Vector2d& b = corners[order[(k + 1) % 4]];
@@ -124,33 +128,44 @@ Expected<PitchGeometry> PitchGeometry::fit(const std::vector<Eigen::Vector2d>& c
     g.rotation_ = halfTurn(theta);
     if (g.width_ < params.minSide)
         return makeError(QStringLiteral("corners: the rectangle is %1 m wide, narrower than min_side %2 m")
-                             .arg(g.width_, 0, 'f', 2).arg(params.minSide));
+                             .arg(g.width_, 0, 'f', 2)
+                             .arg(params.minSide));
     std::size_t worst = 0;
     for (std::size_t i = 1; i < 4; ++i)
         if (g.residuals_[i] > g.residuals_[worst]) worst = i;
     if (g.residuals_[worst] > params.maxResidual)
-        return makeError(QStringLiteral("corners: corner %1 is %2 m from the best-fitting rectangle (max_residual %3 m): "
-                                        "the 4 points are not near a rectangle (a corner mistyped or out of order?)")
-                             .arg(worst + 1).arg(g.residuals_[worst], 0, 'f', 2).arg(params.maxResidual));
+        return makeError(
+            QStringLiteral("corners: corner %1 is %2 m from the best-fitting rectangle (max_residual %3 m): "
+                           "the 4 points are not near a rectangle (a corner mistyped or out of order?)")
+                .arg(worst + 1)
+                .arg(g.residuals_[worst], 0, 'f', 2)
+                .arg(params.maxResidual));
     return g;
 }
 
-Expected<PitchGeometry> PitchGeometry::fitGeodetic(const std::vector<Eigen::Vector2d>& latLon, const GeodeticOrigin& origin,
-                                                   Kind kind, const Params& params, QString name) {
+Expected<PitchGeometry> PitchGeometry::fitGeodetic(const std::vector<Eigen::Vector2d>& latLon,
+                                                   const GeodeticOrigin& origin, Kind kind, const Params& params,
+                                                   QString name) {
     const LocalTangentPlane plane(origin.lat, origin.lon, origin.height);
     std::vector<Eigen::Vector2d> enu;
     for (std::size_t i = 0; i < latLon.size(); ++i) {
         const Eigen::Vector2d& p = latLon[i];
         if (!p.allFinite() || std::abs(p.x()) > 90.0 || std::abs(p.y()) > 180.0)
             return makeError(QStringLiteral("corners: corner %1 (%2, %3): latitude must be in [-90, 90], longitude in "
-                                            "[-180, 180]").arg(i + 1).arg(p.x(), 0, 'g', 10).arg(p.y(), 0, 'g', 10));
+                                            "[-180, 180]")
+                                 .arg(i + 1)
+                                 .arg(p.x(), 0, 'g', 10)
+                                 .arg(p.y(), 0, 'g', 10));
         enu.push_back(plane.toEnu(p.x(), p.y(), origin.height).head<2>());
     }
     // A pitch a few kilometres from the origin is fine; one on another continent is a typing error.
     for (std::size_t i = 0; i < enu.size(); ++i)
         if (enu[i].norm() > 50e3)
             return makeError(QStringLiteral("corners: corner %1 is %2 km from the project's geodetic origin (%3, %4)")
-                                 .arg(i + 1).arg(enu[i].norm() / 1e3, 0, 'f', 0).arg(origin.lat).arg(origin.lon));
+                                 .arg(i + 1)
+                                 .arg(enu[i].norm() / 1e3, 0, 'f', 0)
+                                 .arg(origin.lat)
+                                 .arg(origin.lon));
     auto g = fit(enu, kind, params, std::move(name));
     if (!g) return g;
     g->cornersGeodetic_ = latLon;
@@ -158,8 +173,8 @@ Expected<PitchGeometry> PitchGeometry::fitGeodetic(const std::vector<Eigen::Vect
     return g;
 }
 
-PitchGeometry PitchGeometry::placed(Kind kind, double length, double width, const Eigen::Vector2d& centre, double rotation,
-                                    QString name) {
+PitchGeometry PitchGeometry::placed(Kind kind, double length, double width, const Eigen::Vector2d& centre,
+                                    double rotation, QString name) {
     PitchGeometry g;
     g.kind_ = kind;
     g.name_ = std::move(name);
@@ -179,20 +194,26 @@ Expected<std::vector<Eigen::Vector2d>> PitchGeometry::parseCorners(const QString
         const double v0 = parts.size() == 2 ? parts[0].trimmed().toDouble(&ok0) : 0.0;
         const double v1 = parts.size() == 2 ? parts[1].trimmed().toDouble(&ok1) : 0.0;
         if (!ok0 || !ok1 || !std::isfinite(v0) || !std::isfinite(v1))
-            return makeError(QStringLiteral("%1: corner %2 '%3' is not a pair of numbers A,B").arg(option).arg(i + 1)
+            return makeError(QStringLiteral("%1: corner %2 '%3' is not a pair of numbers A,B")
+                                 .arg(option)
+                                 .arg(i + 1)
                                  .arg(items[i].trimmed()));
         points.emplace_back(v0, v1);
     }
     if (points.size() != 4)
-        return makeError(QStringLiteral("%1: expected 4 corners separated by ';', got %2").arg(option).arg(points.size()));
+        return makeError(
+            QStringLiteral("%1: expected 4 corners separated by ';', got %2").arg(option).arg(points.size()));
     return points;
 }
 
 QString PitchGeometry::kindId(Kind kind) {
     switch (kind) {
-    case Kind::Football: return QStringLiteral("football");
-    case Kind::Rugby: return QStringLiteral("rugby");
-    default: return QStringLiteral("rectangle");
+        case Kind::Football:
+            return QStringLiteral("football");
+        case Kind::Rugby:
+            return QStringLiteral("rugby");
+        default:
+            return QStringLiteral("rectangle");
     }
 }
 
@@ -214,7 +235,8 @@ Expected<PitchGeometry> PitchGeometry::fromJson(const QJsonObject& json) {
     if (!kind)
         return makeError(QStringLiteral("pitch: kind '%1' is not one of %2")
                              .arg(json.value(QStringLiteral("kind")).toString(), kindIds().join(QStringLiteral(", "))));
-    const double length = json.value(QStringLiteral("length")).toDouble(-1), width = json.value(QStringLiteral("width")).toDouble(-1);
+    const double length = json.value(QStringLiteral("length")).toDouble(-1),
+                 width = json.value(QStringLiteral("width")).toDouble(-1);
     const double rotation = json.value(QStringLiteral("rotation")).toDouble(std::nan(""));
     const QJsonArray centre = json.value(QStringLiteral("centre")).toArray();
     if (!(length > 0) || !(width > 0) || !std::isfinite(length) || !std::isfinite(width))
@@ -287,7 +309,11 @@ QStringList PitchGeometry::notes() const {
     auto range = [&](const char* what, double v, double lo, double hi, const char* law) {
         if (v < lo - 0.5 || v > hi + 0.5)
             notes << QStringLiteral("%1 %2 m is outside %3 (%4-%5 m)")
-                         .arg(QLatin1String(what)).arg(v, 0, 'f', 1).arg(QLatin1String(law)).arg(lo).arg(hi);
+                         .arg(QLatin1String(what))
+                         .arg(v, 0, 'f', 1)
+                         .arg(QLatin1String(law))
+                         .arg(lo)
+                         .arg(hi);
     };
     if (kind_ == Kind::Football) {
         range("length", length_, 90, 120, "IFAB Law 1");

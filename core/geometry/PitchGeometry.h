@@ -46,8 +46,8 @@ public:
     // Least-squares rectangle through 4 corners (m, ENU) in cyclic order. Refuses (naming the
     // corner and the parameter) fewer or more than 4 corners, non-finite values, an outline that
     // crosses itself or is not convex, sides shorter than minSide, residuals above maxResidual.
-    static Expected<PitchGeometry> fit(const std::vector<Eigen::Vector2d>& corners, Kind kind, const Params& params = {},
-                                       QString name = {});
+    static Expected<PitchGeometry> fit(const std::vector<Eigen::Vector2d>& corners, Kind kind,
+                                       const Params& params = {}, QString name = {});
     // Corners as (lat, lon) in deg, converted to ENU about origin; the geodetic corners are kept.
     static Expected<PitchGeometry> fitGeodetic(const std::vector<Eigen::Vector2d>& latLon, const GeodeticOrigin& origin,
                                                Kind kind, const Params& params = {}, QString name = {});
@@ -76,9 +76,9 @@ public:
 
     Kind kind() const { return kind_; }
     const QString& name() const { return name_; }
-    double length() const { return length_; }      // m, along pitch x
-    double width() const { return width_; }        // m, along pitch y
-    double rotation() const { return rotation_; }  // rad, pitch x from East, counter-clockwise
+    double length() const { return length_; }                  // m, along pitch x
+    double width() const { return width_; }                    // m, along pitch y
+    double rotation() const { return rotation_; }              // rad, pitch x from East, counter-clockwise
     const Eigen::Vector2d& centre() const { return centre_; }  // m, ENU
     // The corners as given (ENU, m) and their residuals (m), in input order; empty for placed().
     const std::vector<Eigen::Vector2d>& corners() const { return corners_; }

@@ -84,8 +84,9 @@ Expected<TrackGeometry> TrackGeometry::fromJson(const QJsonObject& json) {
         p.firstLaneLine = number("first_lane_line", p.firstLaneLine);
         p.otherLaneLine = number("other_lane_line", p.otherLaneLine);
         if (!(p.kerbRadius > 0) || !(p.straightLength >= 0) || !(p.laneWidth > 0) || p.lanes < 1)
-            return makeError(QStringLiteral("track-oval needs kerb_radius > 0, straight_length >= 0, lane_width > 0, "
-                                            "lanes >= 1"));
+            return makeError(
+                QStringLiteral("track-oval needs kerb_radius > 0, straight_length >= 0, lane_width > 0, "
+                               "lanes >= 1"));
         g = oval(p);
     } else if (type == QLatin1String("track-polyline") || type == QLatin1String("polyline")) {
         PolylineParams p;
@@ -104,7 +105,8 @@ Expected<TrackGeometry> TrackGeometry::fromJson(const QJsonObject& json) {
         p.lanes = json.value(QStringLiteral("lanes")).toInt(p.lanes);
         g = polyline(std::move(p));
     } else {
-        return makeError(QStringLiteral("unknown geometry type '%1' (expected track-oval or track-polyline)").arg(type));
+        return makeError(
+            QStringLiteral("unknown geometry type '%1' (expected track-oval or track-polyline)").arg(type));
     }
     g.name_ = json.value(QStringLiteral("name")).toString();
     const QJsonObject pose = json.value(QStringLiteral("pose")).toObject();
@@ -168,8 +170,7 @@ double TrackGeometry::laneOffset(int lane) const {
 }
 
 double TrackGeometry::laneLength(int lane) const {
-    if (kind_ == Kind::Oval)
-        return 2.0 * oval_.straightLength + 2.0 * kPi * (oval_.kerbRadius + laneOffset(lane));
+    if (kind_ == Kind::Oval) return 2.0 * oval_.straightLength + 2.0 * kPi * (oval_.kerbRadius + laneOffset(lane));
     return referenceLength();  // polyline offsets are not length-preserving; the reference is what we know
 }
 
@@ -325,8 +326,8 @@ TrackPoint TrackGeometry::pointPolylineLocal(double s, double d) const {
         s = std::clamp(s, 0.0, total);
     }
     const auto it = std::upper_bound(cumLength_.begin(), cumLength_.end(), s);
-    const std::size_t i = std::min<std::size_t>(std::max<std::ptrdiff_t>(it - cumLength_.begin() - 1, 0),
-                                                 segHeading_.size() - 1);
+    const std::size_t i =
+        std::min<std::size_t>(std::max<std::ptrdiff_t>(it - cumLength_.begin() - 1, 0), segHeading_.size() - 1);
     const auto& pts = poly_.points;
     const Eigen::Vector2d a = pts[i], b = pts[(i + 1) % pts.size()];
     const double len = cumLength_[i + 1] - cumLength_[i];

@@ -30,7 +30,7 @@
 namespace athlos {
 
 struct TrackPose {
-    double x = 0.0;         // m, translation of the track origin in LPS coordinates
+    double x = 0.0;  // m, translation of the track origin in LPS coordinates
     double y = 0.0;
     double rotation = 0.0;  // rad, counter-clockwise rotation of the track frame
 };
@@ -40,14 +40,14 @@ struct TrackPose {
 // line (constant lateral offset), which is what a runner keeping a lane follows.
 struct TrackQuery {
     Eigen::Vector2d nearest = Eigen::Vector2d::Zero();  // nearest reference-line point (LPS)
-    double s = 0.0;          // arc length of `nearest` along the reference line (m)
+    double s = 0.0;                                     // arc length of `nearest` along the reference line (m)
     double d = 0.0;          // signed lateral offset, positive to the right of the running direction (m)
     double heading = 0.0;    // running direction at the point (rad, LPS frame, in (−π, π])
     double curvature = 0.0;  // signed curvature of the parallel line through the point (1/m, > 0 = left turn)
     Eigen::Vector2d headingGradient = Eigen::Vector2d::Zero();    // ∂heading/∂p (1/m), LPS frame
     Eigen::Vector2d curvatureGradient = Eigen::Vector2d::Zero();  // ∂curvature/∂p (1/m²), LPS frame
-    int segment = 0;         // oval: 0 bend 1, 1 back straight, 2 bend 2, 3 home straight; polyline: segment index
-    bool onBend = false;     // oval only: inside a bend sector
+    int segment = 0;      // oval: 0 bend 1, 1 back straight, 2 bend 2, 3 home straight; polyline: segment index
+    bool onBend = false;  // oval only: inside a bend sector
 };
 
 // A point on a line parallel to the reference line (for simulators): position, heading, curvature.
@@ -62,18 +62,18 @@ public:
     enum class Kind { Oval, Polyline };
 
     struct OvalParams {
-        double kerbRadius = 36.50;        // m, inner kerb radius of the bends
-        double straightLength = 84.39;    // m
-        double laneWidth = 1.22;          // m
+        double kerbRadius = 36.50;      // m, inner kerb radius of the bends
+        double straightLength = 84.39;  // m
+        double laneWidth = 1.22;        // m
         int lanes = 8;
-        double firstLaneLine = 0.30;      // m, lane 1 running line outside the kerb
-        double otherLaneLine = 0.20;      // m, running line of lanes ≥ 2 outside their inner lane line
+        double firstLaneLine = 0.30;  // m, lane 1 running line outside the kerb
+        double otherLaneLine = 0.20;  // m, running line of lanes ≥ 2 outside their inner lane line
     };
 
     struct PolylineParams {
         std::vector<Eigen::Vector2d> points;  // track frame, in running order
         bool closed = false;
-        double laneWidth = 1.0;               // m, for lane offsets (cycling, skating: set as needed)
+        double laneWidth = 1.0;  // m, for lane offsets (cycling, skating: set as needed)
         int lanes = 1;
     };
 
@@ -159,7 +159,7 @@ inline TrackQuery TrackGeometry::fieldOval(const Eigen::Vector2d& p) const {
         const Eigen::Vector2d rel(q.x() - (q.x() > 0 ? halfL : -halfL), q.y());
         const double rho2 = std::max(rel.squaredNorm(), 1e-12), rho = std::sqrt(rho2);
         const double invRho2 = 1.0 / rho2, invRho = rho * invRho2;
-        const Eigen::Vector2d tangent = rot_ * Eigen::Vector2d(-rel.y(), rel.x());  // running direction × ρ
+        const Eigen::Vector2d tangent = rot_ * Eigen::Vector2d(-rel.y(), rel.x());      // running direction × ρ
         f.heading = wrapAngle(std::atan2(rel.y(), rel.x()) + pi / 2 + pose_.rotation);  // eq. 4.21
         f.curvature = invRho;
         f.headingGradient = tangent * invRho2;

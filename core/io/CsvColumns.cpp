@@ -17,8 +17,7 @@ constexpr char kPrefix[] = "%1:%2:%3 (column '%4')";
 
 const ColumnMapping* findMapping(const ImportOptions& options, const QString& source) {
     for (const ColumnMapping& m : options.columns)
-        if (m.source == source)
-            return &m;
+        if (m.source == source) return &m;
     return nullptr;
 }
 
@@ -30,32 +29,50 @@ Status checkMapping(const ImportOptions& options, const QStringList& sources, co
     for (const ColumnMapping& m : options.columns) {
         if (!sources.contains(m.source))
             return makeError(QStringLiteral("%1:%2: column mapping: the file has no column '%3'; columns: %4")
-                                 .arg(file).arg(line).arg(m.source, known));
+                                 .arg(file)
+                                 .arg(line)
+                                 .arg(m.source, known));
         if (seen.contains(m.source))
-            return makeError(QStringLiteral("%1:%2: column mapping: column '%3' is mapped twice").arg(file).arg(line).arg(m.source));
+            return makeError(
+                QStringLiteral("%1:%2: column mapping: column '%3' is mapped twice").arg(file).arg(line).arg(m.source));
         seen << m.source;
         if (!m.skip && !m.unit.trimmed().isEmpty() && siUnitOf(canonicalUnit(m.unit)).isEmpty())
             return makeError(QStringLiteral("%1:%2: column mapping for '%3': unknown unit '%4' (accepted: %5)")
-                                 .arg(file).arg(line).arg(m.source, m.unit, knownUnitNames()));
+                                 .arg(file)
+                                 .arg(line)
+                                 .arg(m.source, m.unit, knownUnitNames()));
     }
     if (!options.timeColumn.isEmpty()) {
         if (!sources.contains(options.timeColumn))
             return makeError(QStringLiteral("%1:%2: time column '%3' is not in the file; columns: %4")
-                                 .arg(file).arg(line).arg(options.timeColumn, known));
+                                 .arg(file)
+                                 .arg(line)
+                                 .arg(options.timeColumn, known));
         if (const ColumnMapping* m = findMapping(options, options.timeColumn); m && m->skip)
-            return makeError(QStringLiteral("%1:%2: time column '%3' is also marked to skip").arg(file).arg(line).arg(options.timeColumn));
+            return makeError(QStringLiteral("%1:%2: time column '%3' is also marked to skip")
+                                 .arg(file)
+                                 .arg(line)
+                                 .arg(options.timeColumn));
     }
     if (!options.labelColumn.isEmpty()) {
         if (!sources.contains(options.labelColumn))
             return makeError(QStringLiteral("%1:%2: label column '%3' is not in the file; columns: %4")
-                                 .arg(file).arg(line).arg(options.labelColumn, known));
+                                 .arg(file)
+                                 .arg(line)
+                                 .arg(options.labelColumn, known));
         if (const ColumnMapping* m = findMapping(options, options.labelColumn); m)
-            return makeError(QStringLiteral("%1:%2: label column '%3' is also mapped or skipped").arg(file).arg(line).arg(options.labelColumn));
+            return makeError(QStringLiteral("%1:%2: label column '%3' is also mapped or skipped")
+                                 .arg(file)
+                                 .arg(line)
+                                 .arg(options.labelColumn));
     }
     if (!options.timeUnit.isEmpty()) {
         const auto format = parseTimeFormat(options.timeUnit);
         if (!format)
-            return makeError(QStringLiteral("%1:%2: time column '%3': %4").arg(file).arg(line).arg(options.timeColumn, format.message()));
+            return makeError(QStringLiteral("%1:%2: time column '%3': %4")
+                                 .arg(file)
+                                 .arg(line)
+                                 .arg(options.timeColumn, format.message()));
     }
     return {};
 }
@@ -86,33 +103,28 @@ bool isUnnamedColumn(const QString& name) {
 QString knownChannelName(const QString& name) {
     const QString lower = name.trimmed().toLower();
     static const QHash<QString, QString> aliases{
-        {"latitude", "lat"}, {"longitude", "lon"}, {"lng", "lon"},        {"long", "lon"},
+        {"latitude", "lat"}, {"longitude", "lon"},   {"lng", "lon"},      {"long", "lon"},
         {"altitude", "alt"}, {"satellites", "sats"}, {"numsats", "sats"}, {"num_sats", "sats"},
     };
-    if (const auto it = aliases.constFind(lower); it != aliases.cend())
-        return *it;
+    if (const auto it = aliases.constFind(lower); it != aliases.cend()) return *it;
     if (lower == QLatin1String("t") || lower == name)
         return {};  // the time column is named explicitly; already canonical
     for (const StreamKind& kind : streamKinds())
-        if (!kind.unitFor(lower).isEmpty() || kind.requiredColumns.contains(lower))
-            return lower;
+        if (!kind.unitFor(lower).isEmpty() || kind.requiredColumns.contains(lower)) return lower;
     return {};
 }
 
 bool isKindColumn(const StreamKind* kind, const QString& name, bool table) {
-    if (!kind)
-        return false;
+    if (!kind) return false;
     if (table && (name == QLatin1String("id") || name == QLatin1String("name") || name == QLatin1String("label")))
         return true;
     return !kind->unitFor(name).isEmpty() || kind->requiredColumns.contains(name);
 }
 
 const StreamKind* lookupKind(const QString& kind) {
-    if (const StreamKind* k = findStreamKind(kind))
-        return k;
+    if (const StreamKind* k = findStreamKind(kind)) return k;
     for (const auto& k : streamKinds())  // "lps", "tdoa": the default names work as well
-        if (k.defaultName == kind)
-            return &k;
+        if (k.defaultName == kind) return &k;
     return nullptr;
 }
 
@@ -120,8 +132,7 @@ Expected<Header> planHeader(CsvReader& reader, const QString& file, const Import
                             const QString& kindName, const StreamKind* kind, bool table) {
     Header header;
     QStringList cells;
-    if (!reader.readHeader(cells))
-        return makeError(QStringLiteral("%1: empty file (no header row)").arg(file));
+    if (!reader.readHeader(cells)) return makeError(QStringLiteral("%1: empty file (no header row)").arg(file));
     header.line = reader.line();
     QStringList sources;
     for (const QString& cell : cells) {
@@ -129,8 +140,7 @@ Expected<Header> planHeader(CsvReader& reader, const QString& file, const Import
         splitNameAndUnit(cell, name, unit);
         sources << name;
     }
-    if (Status s = checkMapping(options, sources, file, header.line); !s)
-        return s.error();
+    if (Status s = checkMapping(options, sources, file, header.line); !s) return s.error();
     QStringList names;
     std::vector<int> nameColumn;  // file column (1-based) of each name, for messages
     for (int i = 0; i < cells.size(); ++i) {
@@ -150,11 +160,10 @@ Expected<Header> planHeader(CsvReader& reader, const QString& file, const Import
             unit = canonicalUnit(mapping->unit);
             mappedUnit = true;
         }
-        const bool isTime = !table && (options.timeColumn.isEmpty() ? col.name == QLatin1String("t")
-                                                                    : col.name == options.timeColumn);
+        const bool isTime =
+            !table && (options.timeColumn.isEmpty() ? col.name == QLatin1String("t") : col.name == options.timeColumn);
         if (!table && !options.labelColumn.isEmpty() && col.source == options.labelColumn) {
-            if (isTime)
-                return makeError(QStringLiteral("%1: the label column is the time column").arg(at));
+            if (isTime) return makeError(QStringLiteral("%1: the label column is the time column").arg(at));
             col.role = Role::Label;
             header.labelColumn = i;
             header.columns.push_back(col);
@@ -172,14 +181,18 @@ Expected<Header> planHeader(CsvReader& reader, const QString& file, const Import
         }
         if (isTime) {
             col.name = QStringLiteral("t");
-            if (!options.timeUnit.isEmpty())
-                unit = options.timeUnit.trimmed();
+            if (!options.timeUnit.isEmpty()) unit = options.timeUnit.trimmed();
         } else if (!table && !options.timeColumn.isEmpty() && col.name == QLatin1String("t")) {
-            return makeError(QStringLiteral("%1: the name 't' is taken by the time column '%2'").arg(at, options.timeColumn));
+            return makeError(
+                QStringLiteral("%1: the name 't' is taken by the time column '%2'").arg(at, options.timeColumn));
         }
         if (const qsizetype other = names.indexOf(col.name); other >= 0)
-            return makeError(mapping ? QStringLiteral("%1: duplicate channel '%2' (also column %3)").arg(at, col.name).arg(nameColumn[size_t(other)])
-                                     : QStringLiteral("%1: duplicate column name (also column %2)").arg(at).arg(nameColumn[size_t(other)]));
+            return makeError(mapping ? QStringLiteral("%1: duplicate channel '%2' (also column %3)")
+                                           .arg(at, col.name)
+                                           .arg(nameColumn[size_t(other)])
+                                     : QStringLiteral("%1: duplicate column name (also column %2)")
+                                           .arg(at)
+                                           .arg(nameColumn[size_t(other)]));
         names << col.name;
         nameColumn.push_back(i + 1);
 
@@ -187,8 +200,7 @@ Expected<Header> planHeader(CsvReader& reader, const QString& file, const Import
             col.role = Role::Time;
             header.timeColumn = i;
             const auto format = parseTimeFormat(unit);
-            if (!format)
-                return makeError(QStringLiteral("%1: %2").arg(at, format.message()));
+            if (!format) return makeError(QStringLiteral("%1: %2").arg(at, format.message()));
             header.timeFormat = *format;
             col.unit = QStringLiteral("s");
             if (!format->absolute() && format->scale != 1.0) {
@@ -215,8 +227,7 @@ Expected<Header> planHeader(CsvReader& reader, const QString& file, const Import
                 return makeError(QStringLiteral("%1: an id column has no unit (got '%2')").arg(at, unit));
         } else if (!target.isEmpty()) {
             const auto conversion = conversionTo(unit, target);
-            if (!conversion)
-                return makeError(QStringLiteral("%1: %2").arg(at, conversion.message()));
+            if (!conversion) return makeError(QStringLiteral("%1: %2").arg(at, conversion.message()));
             col.unit = conversion->si;
             col.scale = conversion->scale;
             col.offset = conversion->offset;
@@ -257,20 +268,30 @@ Expected<Header> planHeader(CsvReader& reader, const QString& file, const Import
     }
     const QString known = names.join(QStringLiteral(", "));
     if (!table && header.timeColumn < 0)
-        return makeError(QStringLiteral("%1:%2: no 't' column (time in seconds); columns: %3").arg(file).arg(header.line).arg(known));
+        return makeError(QStringLiteral("%1:%2: no 't' column (time in seconds); columns: %3")
+                             .arg(file)
+                             .arg(header.line)
+                             .arg(known));
     if (kind) {
         for (const QString& required : kind->requiredColumns)
             if (!names.contains(required))
                 return makeError(QStringLiteral("%1:%2: kind '%3' needs a column '%4'; columns: %5")
-                                     .arg(file).arg(header.line).arg(kind->kind, required, known));
+                                     .arg(file)
+                                     .arg(header.line)
+                                     .arg(kind->kind, required, known));
         if (kind->kind == QLatin1String("gnss") && !(names.contains("lat") && names.contains("lon")) &&
             !(names.contains("x") && names.contains("y")))
-            return makeError(QStringLiteral("%1:%2: kind 'gnss' needs columns lat, lon (WGS84) or x, y (local ENU); columns: %3")
-                                 .arg(file).arg(header.line).arg(known));
+            return makeError(
+                QStringLiteral("%1:%2: kind 'gnss' needs columns lat, lon (WGS84) or x, y (local ENU); columns: %3")
+                    .arg(file)
+                    .arg(header.line)
+                    .arg(known));
     }
     if (const LongLayout* layout = longLayoutOf(kindName); layout && !table && names.size() != 3)
         return makeError(QStringLiteral("%1:%2: kind '%3' has the columns t, beacon, %4 (long format); columns: %5")
-                             .arg(file).arg(header.line).arg(kindName, layout->value, known));
+                             .arg(file)
+                             .arg(header.line)
+                             .arg(kindName, layout->value, known));
     if (names.size() < (table ? 1 : 2))
         return makeError(QStringLiteral("%1:%2: no data columns; columns: %3").arg(file).arg(header.line).arg(known));
     return header;
@@ -279,12 +300,11 @@ Expected<Header> planHeader(CsvReader& reader, const QString& file, const Import
 }  // namespace csv
 
 QString siUnitOf(const QString& unit) {
-    static const char* const kSi[] = {"s", "m", "m/s", "m/s^2", "rad/s", "rad", "uT", "1", "degC", "Hz", "dB", "dBm", "Pa", "lx"};
-    if (unit.trimmed().isEmpty())
-        return {};
+    static const char* const kSi[] = {"s", "m",    "m/s", "m/s^2", "rad/s", "rad", "uT",
+                                      "1", "degC", "Hz",  "dB",    "dBm",   "Pa",  "lx"};
+    if (unit.trimmed().isEmpty()) return {};
     for (const char* si : kSi)
-        if (conversionTo(unit, QLatin1String(si)))
-            return QLatin1String(si);
+        if (conversionTo(unit, QLatin1String(si))) return QLatin1String(si);
     return {};
 }
 
@@ -294,8 +314,7 @@ QStringList mappedColumnNames(const QStringList& headerCells, const ImportOption
         QString name, unit;
         splitNameAndUnit(cell, name, unit);
         const ColumnMapping* m = csv::findMapping(options, name);
-        if ((m && m->skip) || (!m && csv::isUnnamedColumn(name)))
-            continue;
+        if ((m && m->skip) || (!m && csv::isUnnamedColumn(name))) continue;
         if (!options.timeColumn.isEmpty() && name == options.timeColumn)
             names << QStringLiteral("t");
         else if (m && !m->channel.trimmed().isEmpty())
@@ -311,22 +330,16 @@ QStringList mappedColumnNames(const QStringList& headerCells, const ImportOption
 QString inferCsvKind(const QStringList& names) {
     auto has = [&](const char* n) { return names.contains(QLatin1String(n)); };
     auto hasPrefix = [&](const char* p) {
-        return std::any_of(names.begin(), names.end(), [p](const QString& n) { return n.startsWith(QLatin1String(p)); });
+        return std::any_of(names.begin(), names.end(),
+                           [p](const QString& n) { return n.startsWith(QLatin1String(p)); });
     };
-    if (has("beacon") && has("dt"))
-        return QStringLiteral("lps-tdoa");
-    if (has("beacon") && has("range"))
-        return QStringLiteral("lps-range");
-    if (has("id") && has("x") && has("y") && !has("t"))
-        return QStringLiteral("beacons");
-    if (hasPrefix("acc_") || hasPrefix("gyr_") || hasPrefix("mag_"))
-        return QStringLiteral("imu");
-    if (has("qw") && has("qx") && has("qy") && has("qz"))
-        return QStringLiteral("orientation");
-    if (has("lat") && has("lon"))
-        return QStringLiteral("gnss");
-    if (has("x") && has("y"))
-        return QStringLiteral("lps-position");
+    if (has("beacon") && has("dt")) return QStringLiteral("lps-tdoa");
+    if (has("beacon") && has("range")) return QStringLiteral("lps-range");
+    if (has("id") && has("x") && has("y") && !has("t")) return QStringLiteral("beacons");
+    if (hasPrefix("acc_") || hasPrefix("gyr_") || hasPrefix("mag_")) return QStringLiteral("imu");
+    if (has("qw") && has("qx") && has("qy") && has("qz")) return QStringLiteral("orientation");
+    if (has("lat") && has("lon")) return QStringLiteral("gnss");
+    if (has("x") && has("y")) return QStringLiteral("lps-position");
     return {};
 }
 

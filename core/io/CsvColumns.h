@@ -42,9 +42,9 @@ inline bool isDataRole(Role role) {
 
 struct ColumnPlan {
     QString name;
-    QString source;        // name in the header (before mapping), for messages
-    QString unit;          // unit stored with the column
-    QString sourceUnit;    // unit in the header, if one was given
+    QString source;      // name in the header (before mapping), for messages
+    QString unit;        // unit stored with the column
+    QString sourceUnit;  // unit in the header, if one was given
     Role role = Role::Number;
     bool convert = false;  // scale/offset differ from identity (kept apart so -0.0 survives)
     double scale = 1.0;
@@ -55,11 +55,11 @@ struct Header {
     std::vector<ColumnPlan> columns;
     long long line = 0;
     int timeColumn = -1;
-    TimeFormat timeFormat;   // of the time column
-    int dateColumn = -1;     // clock times: the column with their date, if any
-    bool haveDate = false;   // clock times: ImportOptions::date given
-    qint64 dateDays = 0;     // its days since 1970-01-01
-    int labelColumn = -1;    // the column of per-sample labels (ImportOptions::labelColumn), if any
+    TimeFormat timeFormat;  // of the time column
+    int dateColumn = -1;    // clock times: the column with their date, if any
+    bool haveDate = false;  // clock times: ImportOptions::date given
+    qint64 dateDays = 0;    // its days since 1970-01-01
+    int labelColumn = -1;   // the column of per-sample labels (ImportOptions::labelColumn), if any
 };
 
 // An index column without a name: an empty header cell, or pandas' "Unnamed: 0".

@@ -19,8 +19,7 @@ namespace {
 constexpr size_t kFlushBytes = 1 << 20;
 
 void appendNumber(std::string& out, double v) {
-    if (std::isnan(v))
-        return;  // empty cell
+    if (std::isnan(v)) return;  // empty cell
     char buf[32];
     const auto r = std::to_chars(buf, buf + sizeof buf, v);
     out.append(buf, r.ptr);
@@ -38,8 +37,7 @@ void appendText(std::string& out, const QString& text, bool firstCell) {
     }
     out.push_back('"');
     for (char c : utf8) {
-        if (c == '"')
-            out.push_back('"');
+        if (c == '"') out.push_back('"');
         out.push_back(c);
     }
     out.push_back('"');
@@ -47,8 +45,7 @@ void appendText(std::string& out, const QString& text, bool firstCell) {
 
 QString headerCell(const QString& name, const QString& unit, const StreamKind* kind) {
     const QString implied = kind ? kind->unitFor(name) : QString();
-    if (!unit.isEmpty() && unit != implied)
-        return QStringLiteral("%1 [%2]").arg(name, unit);
+    if (!unit.isEmpty() && unit != implied) return QStringLiteral("%1 [%2]").arg(name, unit);
     if (name.endsWith(QLatin1Char(')')) || name.endsWith(QLatin1Char(']')))
         return name + QStringLiteral(" []");  // so that the end of the name is not read as a unit
     return name;
@@ -66,8 +63,7 @@ public:
     std::string& buffer() { return buffer_; }
     // Writes the buffer once it is large; returns false on a write error.
     bool flush(bool force = false) {
-        if (!force && buffer_.size() < kFlushBytes)
-            return true;
+        if (!force && buffer_.size() < kFlushBytes) return true;
         const bool ok = out_.write(buffer_.data(), qint64(buffer_.size())) == qint64(buffer_.size());
         buffer_.clear();
         return ok;
@@ -92,17 +88,18 @@ private:
 
 Status exportStreamCsv(const Stream& stream, const QString& file, const Progress& progress) {
     const auto loaded = stream.data();
-    if (!loaded)
-        return makeError(QStringLiteral("%1: cannot load samples: %2").arg(stream.name(), loaded.message()));
+    if (!loaded) return makeError(QStringLiteral("%1: cannot load samples: %2").arg(stream.name(), loaded.message()));
     const StreamData& data = **loaded;
     const StreamInfo& info = stream.info();
     if (int(info.columns.size()) != data.columns)
-        return makeError(QStringLiteral("%1: %2 column names for %3 columns").arg(stream.name()).arg(info.columns.size()).arg(data.columns));
+        return makeError(QStringLiteral("%1: %2 column names for %3 columns")
+                             .arg(stream.name())
+                             .arg(info.columns.size())
+                             .arg(data.columns));
     const StreamKind* kind = findStreamKind(info.kind);
 
     CsvFile out(file);
-    if (Status s = out.open(); !s)
-        return s;
+    if (Status s = out.open(); !s) return s;
     std::string& buf = out.buffer();
     if (const LongLayout* layout = longLayoutOf(info.kind)) {
         // Back to the long interchange form (TdoaLayout.h); cells that were not received are skipped.
@@ -117,8 +114,7 @@ Status exportStreamCsv(const Stream& stream, const QString& file, const Progress
             buf += '\n';
             ok = ok && out.flush();
         });
-        if (!ok)
-            return out.writeError();
+        if (!ok) return out.writeError();
         return out.commit();
     }
     buf += 't';
@@ -140,8 +136,7 @@ Status exportStreamCsv(const Stream& stream, const QString& file, const Progress
                 out.cancel();
                 return makeError(QStringLiteral("cancelled"));
             }
-            if (!out.flush())
-                return out.writeError();
+            if (!out.flush()) return out.writeError();
             progress.report(double(r) / double(rows), QStringLiteral("Writing %1").arg(QFileInfo(file).fileName()));
         }
     }
@@ -154,23 +149,22 @@ Status exportTableCsv(const Table& table, const QString& file) {
     for (const TableColumn& col : table.columns)
         if (col.size() != rows)
             return makeError(QStringLiteral("%1: column '%2' has %3 rows, the first column %4")
-                                 .arg(table.name, col.name).arg(col.size()).arg(rows));
+                                 .arg(table.name, col.name)
+                                 .arg(col.size())
+                                 .arg(rows));
     const StreamKind* kind = findStreamKind(table.kind);
     CsvFile out(file);
-    if (Status s = out.open(); !s)
-        return s;
+    if (Status s = out.open(); !s) return s;
     std::string& buf = out.buffer();
     for (size_t c = 0; c < table.columns.size(); ++c) {
-        if (c > 0)
-            buf += ',';
+        if (c > 0) buf += ',';
         const TableColumn& col = table.columns[c];
         appendText(buf, headerCell(col.name, col.unit, kind), c == 0);
     }
     buf += '\n';
     for (long long r = 0; r < rows; ++r) {
         for (size_t c = 0; c < table.columns.size(); ++c) {
-            if (c > 0)
-                buf += ',';
+            if (c > 0) buf += ',';
             const TableColumn& col = table.columns[c];
             if (col.isText)
                 appendText(buf, col.texts.at(qsizetype(r)), c == 0);
@@ -180,8 +174,7 @@ Status exportTableCsv(const Table& table, const QString& file) {
                 appendNumber(buf, col.numbers[size_t(r)]);
         }
         buf += '\n';
-        if (!out.flush())
-            return out.writeError();
+        if (!out.flush()) return out.writeError();
     }
     return out.commit();
 }

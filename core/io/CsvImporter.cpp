@@ -29,8 +29,7 @@ Expected<Stream> longStream(const StreamData& rows, const TimeOrigin& origin, co
     int beacon = -1, dt = -1, dtFileColumn = 0, c = 0;
     for (size_t i = 0; i < header.columns.size(); ++i) {
         const auto& col = header.columns[i];
-        if (!isDataRole(col.role))
-            continue;
+        if (!isDataRole(col.role)) continue;
         if (col.name == QLatin1String("beacon"))
             beacon = c;
         else if (col.name == layout.value)
@@ -40,7 +39,8 @@ Expected<Stream> longStream(const StreamData& rows, const TimeOrigin& origin, co
     std::vector<TdoaSample> samples(rows.rows());
     for (size_t r = 0; r < rows.rows(); ++r) {
         if (std::isnan(rows.at(r, dt)))
-            return makeError(QStringLiteral("%1: empty %2").arg(where(origin.file, origin.lines[r], dtFileColumn, layout.value), layout.value));
+            return makeError(QStringLiteral("%1: empty %2")
+                                 .arg(where(origin.file, origin.lines[r], dtFileColumn, layout.value), layout.value));
         const std::string& id = ids[size_t(rows.at(r, beacon))];
         samples[r] = {rows.t[r], QString::fromUtf8(id.data(), qsizetype(id.size())), rows.at(r, dt), origin.lines[r]};
     }
@@ -69,28 +69,24 @@ StreamData withoutLastColumn(const StreamData& data) {
 
 // The distinct labels, named by ImportOptions::labelNames (numbers match numerically: "1.0" is "1"),
 // and each record's index into them (NaN: no label).
-Expected<std::pair<QStringList, std::vector<double>>> nameLabels(const ParsedLabels& labels, const ImportOptions& options,
-                                                                 const TimeOrigin& origin, const QString& column,
-                                                                 int fileColumn) {
+Expected<std::pair<QStringList, std::vector<double>>> nameLabels(const ParsedLabels& labels,
+                                                                 const ImportOptions& options, const TimeOrigin& origin,
+                                                                 const QString& column, int fileColumn) {
     QStringList names;
     std::vector<double> index(labels.size(), std::numeric_limits<double>::quiet_NaN());
     std::unordered_map<std::string, int> seen;
     auto lookup = [&](const QString& text) -> std::optional<QString> {
-        if (options.labelNames.empty())
-            return text;
-        if (const auto it = options.labelNames.find(text); it != options.labelNames.end())
-            return it->second;
+        if (options.labelNames.empty()) return text;
+        if (const auto it = options.labelNames.find(text); it != options.labelNames.end()) return it->second;
         bool ok = false;
         const double v = text.toDouble(&ok);
         if (ok)
             for (const auto& [key, name] : options.labelNames)
-                if (bool keyOk = false; key.toDouble(&keyOk) == v && keyOk)
-                    return name;
+                if (bool keyOk = false; key.toDouble(&keyOk) == v && keyOk) return name;
         return std::nullopt;
     };
     for (size_t r = 0; r < labels.size(); ++r) {
-        if (labels[r].empty())
-            continue;
+        if (labels[r].empty()) continue;
         const auto [it, added] = seen.try_emplace(labels[r], int(names.size()));
         if (added) {
             const QString text = QString::fromUtf8(labels[r].data(), qsizetype(labels[r].size()));
@@ -119,22 +115,22 @@ Expected<QJsonObject> timeAttributesOf(StreamData& data, const Header& header, c
     if (format.absolute()) {
         startAtZero(data.t, base);
         if (!options.start.isEmpty())
-            warnings << QStringLiteral("%1: the times are absolute (%2); the start option is ignored").arg(what, format.name);
+            warnings << QStringLiteral("%1: the times are absolute (%2); the start option is ignored")
+                            .arg(what, format.name);
     } else if (!options.start.isEmpty()) {
         const auto start = parseUtc(options.start);
-        if (!start)
-            return makeError(QStringLiteral("start: %1").arg(start.message()));
+        if (!start) return makeError(QStringLiteral("start: %1").arg(start.message()));
         base.known = true;
         base.t0Ns = *start;
     }
     if (time.missingZone)
         warnings << QStringLiteral("%1: date-times without a zone (Z or +hh:mm) are taken as UTC").arg(what);
     if (base.timeOfDayOnly)
-        warnings << QStringLiteral("%1: clock times without a date; the start is known as a time of day (%2) only "
-                                   "(give the date: --date YYYY-MM-DD)")
+        warnings << QStringLiteral(
+                        "%1: clock times without a date; the start is known as a time of day (%2) only "
+                        "(give the date: --date YYYY-MM-DD)")
                         .arg(what, formatTimeOfDay(base.t0Ns));
-    if (const QString w = samplingRateWarning(data.t, format.name, what); !w.isEmpty())
-        warnings << w;
+    if (const QString w = samplingRateWarning(data.t, format.name, what); !w.isEmpty()) warnings << w;
     QJsonObject attributes;
     writeTimeAttributes(attributes, base, format.name);
     if (format.kind == TimeKind::Uptime)
@@ -146,11 +142,10 @@ Expected<ImportResult> readStream(CsvReader& reader, const MappedFile& mapped, c
                                   const ImportOptions& options, const QString& kindName, const StreamKind* kind,
                                   const Progress& progress) {
     auto header = planHeader(reader, file, options, kindName, kind, false);
-    if (!header)
-        return header.error();
+    if (!header) return header.error();
     StreamData data;
-    TimeOrigin origin{file, header->timeColumn + 1,
-                      options.timeColumn.isEmpty() ? QStringLiteral("t") : options.timeColumn, {}};
+    TimeOrigin origin{
+        file, header->timeColumn + 1, options.timeColumn.isEmpty() ? QStringLiteral("t") : options.timeColumn, {}};
     std::vector<std::string> ids;
     ParsedTime time;
     ParsedLabels labels;
@@ -164,8 +159,7 @@ Expected<ImportResult> readStream(CsvReader& reader, const MappedFile& mapped, c
     if (labelled) {
         auto names = nameLabels(labels, options, origin, header->columns[size_t(header->labelColumn)].source,
                                 header->labelColumn + 1);
-        if (!names)
-            return names.error();
+        if (!names) return names.error();
         labelNames = std::move(names->first);
         data = withColumn(data, names->second);
     }
@@ -175,8 +169,7 @@ Expected<ImportResult> readStream(CsvReader& reader, const MappedFile& mapped, c
     if (Status s = repairTimeOrder(data, origin, options.timeRepair, layout != nullptr, result.warnings); !s)
         return s.error();
     auto timeAttributes = timeAttributesOf(data, *header, time, options, origin, result.warnings);
-    if (!timeAttributes)
-        return timeAttributes.error();
+    if (!timeAttributes) return timeAttributes.error();
     if (labelled) {
         QStringList perRow;
         perRow.reserve(qsizetype(data.rows()));
@@ -193,18 +186,14 @@ Expected<ImportResult> readStream(CsvReader& reader, const MappedFile& mapped, c
     QJsonObject sourceUnits;
     Columns columns;
     for (const auto& col : header->columns) {
-        if (col.convert)
-            sourceUnits.insert(col.name, col.sourceUnit);
-        if (isDataRole(col.role))
-            columns.push_back({col.name, col.unit});
+        if (col.convert) sourceUnits.insert(col.name, col.sourceUnit);
+        if (isDataRole(col.role)) columns.push_back({col.name, col.unit});
     }
     if (layout) {
         auto stream = longStream(data, origin, *header, ids, *layout);
-        if (!stream)
-            return stream.error();
+        if (!stream) return stream.error();
         stream->info().name = kind->defaultName;
-        if (!sourceUnits.isEmpty())
-            stream->info().attributes.insert(QStringLiteral("source_units"), sourceUnits);
+        if (!sourceUnits.isEmpty()) stream->info().attributes.insert(QStringLiteral("source_units"), sourceUnits);
         for (auto it = timeAttributes->begin(); it != timeAttributes->end(); ++it)
             stream->info().attributes.insert(it.key(), it.value());
         result.items.push_back({kind->defaultName, std::move(*stream)});
@@ -216,8 +205,7 @@ Expected<ImportResult> readStream(CsvReader& reader, const MappedFile& mapped, c
     info.name = kind ? kind->defaultName : kindName;
     info.frame = kind ? kind->defaultFrame : QString();
     info.columns = std::move(columns);
-    if (!sourceUnits.isEmpty())
-        info.attributes.insert(QStringLiteral("source_units"), sourceUnits);
+    if (!sourceUnits.isEmpty()) info.attributes.insert(QStringLiteral("source_units"), sourceUnits);
     for (auto it = timeAttributes->begin(); it != timeAttributes->end(); ++it)
         info.attributes.insert(it.key(), it.value());
     if (kindName == QLatin1String("gnss") && info.columnIndex(QStringLiteral("lat")) < 0)
@@ -226,15 +214,15 @@ Expected<ImportResult> readStream(CsvReader& reader, const MappedFile& mapped, c
     if (kindName == QLatin1String("imu")) {
         for (int c = 0; c < data.columns; ++c) {
             const Column& col = info.columns[c];
-            if (!col.name.startsWith(QLatin1String("gyr_")))
-                continue;
+            if (!col.name.startsWith(QLatin1String("gyr_"))) continue;
             double peak = 0.0;
             for (size_t r = 0; r < data.rows(); ++r)
                 if (const double a = std::abs(data.at(r, c)); a > peak)  // NaN compares false
                     peak = a;
             if (peak > kGyrPlausibleMax)
-                result.warnings << QStringLiteral("%1: column '%2' reaches %3 rad/s, implausible for rad/s; if the "
-                                                  "file is in deg/s, say so in the header: '%2 [deg/s]'")
+                result.warnings << QStringLiteral(
+                                       "%1: column '%2' reaches %3 rad/s, implausible for rad/s; if the "
+                                       "file is in deg/s, say so in the header: '%2 [deg/s]'")
                                        .arg(file, col.name, QString::number(peak, 'f', 1));
         }
     }
@@ -245,15 +233,12 @@ Expected<ImportResult> readStream(CsvReader& reader, const MappedFile& mapped, c
 Expected<ImportResult> readTable(CsvReader& reader, const QString& file, const ImportOptions& options,
                                  const QString& kindName, const StreamKind* kind) {
     auto header = planHeader(reader, file, options, kindName, kind, true);
-    if (!header)
-        return header.error();
+    if (!header) return header.error();
     Table table;
     table.kind = kindName;
     table.name = kind ? kind->defaultName : kindName;
-    if (kind && !kind->defaultFrame.isEmpty())
-        table.attributes.insert(QStringLiteral("frame"), kind->defaultFrame);
-    if (Status s = parseTableRecords(reader, file, *header, table); !s)
-        return s.error();
+    if (kind && !kind->defaultFrame.isEmpty()) table.attributes.insert(QStringLiteral("frame"), kind->defaultFrame);
+    if (Status s = parseTableRecords(reader, file, *header, table); !s) return s.error();
     ImportResult result;
     result.items.push_back({table.name, std::move(table)});
     return result;
@@ -275,31 +260,28 @@ Expected<ImportResult> CsvImporter::read(const QString& file, const ImportOption
     if (!repairs.contains(options.timeRepair))
         return makeError(QStringLiteral("unknown time repair '%1' (reject, sort or drop)").arg(options.timeRepair));
     MappedFile mapped;
-    if (Status s = mapped.open(file); !s)
-        return s.error();
+    if (Status s = mapped.open(file); !s) return s.error();
 
     QString kindName = options.kind;
     if (kindName.isEmpty()) {
         CsvReader peek(mapped.begin(), mapped.end());
         QStringList cells;
-        if (!peek.readHeader(cells))
-            return makeError(QStringLiteral("%1: empty file (no header row)").arg(file));
+        if (!peek.readHeader(cells)) return makeError(QStringLiteral("%1: empty file (no header row)").arg(file));
         const QStringList names = mappedColumnNames(cells, options);
         kindName = inferCsvKind(names);
         if (kindName.isEmpty())
-            return makeError(QStringLiteral("%1: cannot tell the kind of data from the columns (%2); give a kind (%3)")
-                                 .arg(file, names.join(QStringLiteral(", ")), streamKindNames().join(QStringLiteral(", "))));
+            return makeError(
+                QStringLiteral("%1: cannot tell the kind of data from the columns (%2); give a kind (%3)")
+                    .arg(file, names.join(QStringLiteral(", ")), streamKindNames().join(QStringLiteral(", "))));
     }
     const StreamKind* kind = lookupKind(kindName);
-    if (kind)
-        kindName = kind->kind;
+    if (kind) kindName = kind->kind;
 
     CsvReader reader(mapped.begin(), mapped.end());
     progress.report(0.0, QStringLiteral("Reading %1").arg(QFileInfo(file).fileName()));
     auto result = kind && kind->table ? readTable(reader, file, options, kindName, kind)
                                       : readStream(reader, mapped, file, options, kindName, kind, progress);
-    if (result)
-        progress.report(1.0);
+    if (result) progress.report(1.0);
     return result;
 }
 

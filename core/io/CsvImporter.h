@@ -25,7 +25,7 @@
 // read() names each item by its default name only ("imu"); importFile() puts it under the target.
 #include "core/io/CsvColumns.h"  // siUnitOf, inferCsvKind, mappedColumnNames
 #include "core/io/Importer.h"
-#include "core/io/TimeOrder.h"   // repairTimeOrder
+#include "core/io/TimeOrder.h"  // repairTimeOrder
 
 namespace athlos {
 

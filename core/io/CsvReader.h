@@ -50,8 +50,7 @@ public:
     // Missing means the line has no more fields.
     Field number(double& value) {
         if (field_++ > 0) {
-            if (p_ == end_ || *p_ != delim_)
-                return Field::Missing;
+            if (p_ == end_ || *p_ != delim_) return Field::Missing;
             ++p_;
         }
         fieldBegin_ = p_;

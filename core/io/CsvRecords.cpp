@@ -22,14 +22,19 @@ public:
 
 private:
     Error cellError(const ColumnPlan& col, const QString& what) const {
-        return makeError(QStringLiteral("%1: %2").arg(where(file_, reader_.line(), reader_.fieldIndex(), col.source), what));
+        return makeError(
+            QStringLiteral("%1: %2").arg(where(file_, reader_.line(), reader_.fieldIndex(), col.source), what));
     }
     Error fieldCountError() const {
         const int found = reader_.fieldsOnLine();
         const int expected = int(header_.columns.size());
         const int column = std::min(found, expected) + 1;
         return makeError(QStringLiteral("%1:%2:%3: line has %4 fields, the header has %5")
-                             .arg(file_).arg(reader_.line()).arg(column).arg(found).arg(expected));
+                             .arg(file_)
+                             .arg(reader_.line())
+                             .arg(column)
+                             .arg(found)
+                             .arg(expected));
     }
 
     CsvReader& reader_;
@@ -61,97 +66,90 @@ Status StreamParser::run(StreamData& data, std::vector<long long>& lines, std::v
         for (int c = 0; c < columns; ++c) {
             const ColumnPlan& col = header_.columns[c];
             if (col.role == Role::Skip) {
-                if (!reader_.text(text))
-                    return fieldCountError();
+                if (!reader_.text(text)) return fieldCountError();
                 continue;
             }
             if (col.role == Role::Label) {
-                if (!reader_.text(text))
-                    return fieldCountError();
-                if (labels)
-                    labels->push_back(text);
+                if (!reader_.text(text)) return fieldCountError();
+                if (labels) labels->push_back(text);
                 continue;
             }
             if (col.role == Role::Date) {
-                if (!reader_.text(text))
-                    return fieldCountError();
+                if (!reader_.text(text)) return fieldCountError();
                 if (!parseIsoDate(text, recordDays))
                     return cellError(col, QStringLiteral("%1 is not a date YYYY-MM-DD").arg(csv::quoted(text)));
                 continue;
             }
             if (col.role == Role::Time && absolute) {
-                if (!reader_.text(text))
-                    return fieldCountError();
-                if (text.empty())
-                    return cellError(col, QStringLiteral("empty time"));
+                if (!reader_.text(text)) return fieldCountError();
+                if (text.empty()) return cellError(col, QStringLiteral("empty time"));
                 bool ok = false, zone = true;
                 switch (format.kind) {
-                case TimeKind::Unix:
-                    ok = parseScaledInstant(text, format.scale * 1e9, recordNs);
-                    break;
-                case TimeKind::Excel:
-                    ok = parseScaledInstant(text, double(kNsPerDay), recordNs);
-                    recordNs -= kExcelUnixEpoch * kNsPerDay;
-                    break;
-                case TimeKind::Iso:
-                    ok = parseIsoDateTime(text, recordNs, zone);
-                    time.missingZone = time.missingZone || !zone;
-                    break;
-                default:
-                    ok = parseClockTime(text, recordNs);
-                    break;
+                    case TimeKind::Unix:
+                        ok = parseScaledInstant(text, format.scale * 1e9, recordNs);
+                        break;
+                    case TimeKind::Excel:
+                        ok = parseScaledInstant(text, double(kNsPerDay), recordNs);
+                        recordNs -= kExcelUnixEpoch * kNsPerDay;
+                        break;
+                    case TimeKind::Iso:
+                        ok = parseIsoDateTime(text, recordNs, zone);
+                        time.missingZone = time.missingZone || !zone;
+                        break;
+                    default:
+                        ok = parseClockTime(text, recordNs);
+                        break;
                 }
                 if (!ok) {
-                    static const char* const kExpected[] = {"", "", "a number", "an ISO 8601 date-time (2024-05-01T13:45:01.25Z)",
-                                                            "a clock time hh:mm:ss[.fff]", "a number"};
-                    return cellError(col, QStringLiteral("%1 is not %2 (time format '%3')")
-                                              .arg(csv::quoted(text), QLatin1String(kExpected[int(format.kind)]), format.name));
+                    static const char* const kExpected[] = {"",
+                                                            "",
+                                                            "a number",
+                                                            "an ISO 8601 date-time (2024-05-01T13:45:01.25Z)",
+                                                            "a clock time hh:mm:ss[.fff]",
+                                                            "a number"};
+                    return cellError(
+                        col, QStringLiteral("%1 is not %2 (time format '%3')")
+                                 .arg(csv::quoted(text), QLatin1String(kExpected[int(format.kind)]), format.name));
                 }
                 continue;
             }
             if (col.role == Role::Id) {
-                if (!reader_.text(text))
-                    return fieldCountError();
-                if (text.empty())
-                    return cellError(col, QStringLiteral("empty id"));
+                if (!reader_.text(text)) return fieldCountError();
+                if (text.empty()) return cellError(col, QStringLiteral("empty id"));
                 const auto [it, added] = idIndex.try_emplace(text, int(ids.size()));
-                if (added)
-                    ids.push_back(text);
+                if (added) ids.push_back(text);
                 data.values.push_back(it->second);
                 continue;
             }
             double v;
             switch (reader_.number(v)) {
-            case CsvReader::Field::Number:
-                if (!std::isfinite(v) && (col.role == Role::Time || !std::isnan(v)))
-                    return cellError(col, QStringLiteral("%1 is not a finite number").arg(quoted(reader_.lastField())));
-                break;
-            case CsvReader::Field::Empty:
-                if (col.role == Role::Time)
-                    return cellError(col, QStringLiteral("empty time"));
-                break;
-            case CsvReader::Field::Invalid:
-                return cellError(col, QStringLiteral("%1 is not a number").arg(quoted(reader_.lastField())));
-            case CsvReader::Field::Missing:
-                return fieldCountError();
+                case CsvReader::Field::Number:
+                    if (!std::isfinite(v) && (col.role == Role::Time || !std::isnan(v)))
+                        return cellError(col,
+                                         QStringLiteral("%1 is not a finite number").arg(quoted(reader_.lastField())));
+                    break;
+                case CsvReader::Field::Empty:
+                    if (col.role == Role::Time) return cellError(col, QStringLiteral("empty time"));
+                    break;
+                case CsvReader::Field::Invalid:
+                    return cellError(col, QStringLiteral("%1 is not a number").arg(quoted(reader_.lastField())));
+                case CsvReader::Field::Missing:
+                    return fieldCountError();
             }
-            if (col.convert)
-                v = v * col.scale + col.offset;
+            if (col.convert) v = v * col.scale + col.offset;
             if (col.role == Role::Time)
                 data.t.push_back(v);
             else
                 data.values.push_back(v);
         }
-        if (!reader_.finishRecord())
-            return fieldCountError();
+        if (!reader_.finishRecord()) return fieldCountError();
         if (absolute) {
             qint64 ns = recordNs;
             if (clock) {
                 if (header_.dateColumn >= 0) {
                     ns += recordDays * kNsPerDay;
                 } else {
-                    if (previousTod >= 0 && recordNs < previousTod - kHalfDay)
-                        ++dayOffset;  // past midnight
+                    if (previousTod >= 0 && recordNs < previousTod - kHalfDay) ++dayOffset;  // past midnight
                     previousTod = recordNs;
                     ns += (dayOffset + (header_.haveDate ? header_.dateDays : 0)) * kNsPerDay;
                 }
@@ -172,8 +170,7 @@ Status StreamParser::run(StreamData& data, std::vector<long long>& lines, std::v
             lines.reserve(estimate);
         }
         if ((records & 1023) == 0 && reader_.offset() >= nextReport) {
-            if (progress_.isCancelled())
-                return makeError(QStringLiteral("cancelled"));
+            if (progress_.isCancelled()) return makeError(QStringLiteral("cancelled"));
             progress_.report(double(reader_.offset()) / double(mapped_.size()),
                              QStringLiteral("Reading %1").arg(QFileInfo(file_).fileName()));
             nextReport = reader_.offset() + kProgressBytes;
@@ -201,8 +198,7 @@ Status parseTableRecords(CsvReader& reader, const QString& file, const Header& h
     std::vector<int> out(header.columns.size(), -1);  // table column of each file column
     for (size_t c = 0; c < header.columns.size(); ++c) {
         const auto& col = header.columns[c];
-        if (col.role == Role::Skip)
-            continue;
+        if (col.role == Role::Skip) continue;
         out[c] = int(table.columns.size());
         table.columns.push_back({col.name, col.unit, col.role == Role::Text, {}, {}});
     }
@@ -216,14 +212,22 @@ Status parseTableRecords(CsvReader& reader, const QString& file, const Header& h
             if (col.role == Role::Skip || col.role == Role::Date) {
                 if (!reader.text(text))
                     return makeError(QStringLiteral("%1:%2:%3: line has %4 fields, the header has %5")
-                                         .arg(file).arg(reader.line()).arg(c + 1).arg(reader.fieldsOnLine()).arg(columns));
+                                         .arg(file)
+                                         .arg(reader.line())
+                                         .arg(c + 1)
+                                         .arg(reader.fieldsOnLine())
+                                         .arg(columns));
                 continue;
             }
             TableColumn& column = table.columns[size_t(out[c])];
             if (col.role == Role::Text) {
                 if (!reader.text(text))
                     return makeError(QStringLiteral("%1:%2:%3: line has %4 fields, the header has %5")
-                                         .arg(file).arg(reader.line()).arg(c + 1).arg(reader.fieldsOnLine()).arg(columns));
+                                         .arg(file)
+                                         .arg(reader.line())
+                                         .arg(c + 1)
+                                         .arg(reader.fieldsOnLine())
+                                         .arg(columns));
                 column.texts << QString::fromUtf8(text.data(), qsizetype(text.size()));
                 continue;
             }
@@ -231,7 +235,11 @@ Status parseTableRecords(CsvReader& reader, const QString& file, const Header& h
             const auto field = reader.number(v);
             if (field == CsvReader::Field::Missing)
                 return makeError(QStringLiteral("%1:%2:%3: line has %4 fields, the header has %5")
-                                     .arg(file).arg(reader.line()).arg(c + 1).arg(reader.fieldsOnLine()).arg(columns));
+                                     .arg(file)
+                                     .arg(reader.line())
+                                     .arg(c + 1)
+                                     .arg(reader.fieldsOnLine())
+                                     .arg(columns));
             if (field == CsvReader::Field::Invalid)
                 return makeError(QStringLiteral("%1: %2 is not a number").arg(at(), quoted(reader.lastField())));
             if (std::isinf(v))
@@ -240,7 +248,11 @@ Status parseTableRecords(CsvReader& reader, const QString& file, const Header& h
         }
         if (!reader.finishRecord())
             return makeError(QStringLiteral("%1:%2:%3: line has %4 fields, the header has %5")
-                                 .arg(file).arg(reader.line()).arg(columns + 1).arg(reader.fieldsOnLine()).arg(columns));
+                                 .arg(file)
+                                 .arg(reader.line())
+                                 .arg(columns + 1)
+                                 .arg(reader.fieldsOnLine())
+                                 .arg(columns));
         ++rows;
     }
     if (rows == 0)

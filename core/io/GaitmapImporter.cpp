@@ -16,13 +16,10 @@ namespace {
 const QStringList kAxisOrder{"acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z"};
 
 QString streamNameFor(const QString& sensor) {
-    if (sensor == QLatin1String("left_sensor"))
-        return QStringLiteral("left-foot");
-    if (sensor == QLatin1String("right_sensor"))
-        return QStringLiteral("right-foot");
+    if (sensor == QLatin1String("left_sensor")) return QStringLiteral("left-foot");
+    if (sensor == QLatin1String("right_sensor")) return QStringLiteral("right-foot");
     QString name = sensor;
-    if (name.endsWith(QLatin1String("_sensor")))
-        name.chop(7);
+    if (name.endsWith(QLatin1String("_sensor"))) name.chop(7);
     return name.replace(QLatin1Char('_'), QLatin1Char('-'));
 }
 
@@ -38,17 +35,14 @@ struct SensorColumn {
 // Sample index (consecutive integers) or time in seconds: see the header.
 bool isSampleIndex(const std::vector<double>& first) {
     for (size_t i = 0; i < first.size(); ++i)
-        if (first[i] != std::round(first[i]) || (i > 0 && first[i] != first[i - 1] + 1.0))
-            return false;
+        if (first[i] != std::round(first[i]) || (i > 0 && first[i] != first[i - 1] + 1.0)) return false;
     return true;
 }
 
 double medianInterval(const std::vector<double>& t) {
-    if (t.size() < 2)
-        return 0.0;
+    if (t.size() < 2) return 0.0;
     std::vector<double> d(t.size() - 1);
-    for (size_t i = 1; i < t.size(); ++i)
-        d[i - 1] = t[i] - t[i - 1];
+    for (size_t i = 1; i < t.size(); ++i) d[i - 1] = t[i] - t[i - 1];
     std::nth_element(d.begin(), d.begin() + ptrdiff_t(d.size() / 2), d.end());
     return d[d.size() / 2];
 }
@@ -60,8 +54,7 @@ QString GaitmapImporter::description() const {
 }
 
 bool GaitmapImporter::canRead(const QString& file, const QByteArray& head) const {
-    if (QFileInfo(file).suffix().toLower() != QLatin1String("csv"))
-        return false;
+    if (QFileInfo(file).suffix().toLower() != QLatin1String("csv")) return false;
     const QList<QByteArray> lines = head.split('\n');
     return lines.size() >= 2 && (lines[0].contains("left_sensor") || lines[0].contains("right_sensor")) &&
            (lines[1].contains("acc_") || lines[1].contains("gyr_"));
@@ -70,18 +63,19 @@ bool GaitmapImporter::canRead(const QString& file, const QByteArray& head) const
 Expected<ImportResult> GaitmapImporter::read(const QString& file, const ImportOptions& options,
                                              const Progress& progress) const {
     MappedFile mapped;
-    if (Status s = mapped.open(file); !s)
-        return s.error();
+    if (Status s = mapped.open(file); !s) return s.error();
     CsvReader reader(mapped.begin(), mapped.end());
     QStringList sensors, axes;
-    if (!reader.readHeader(sensors))
-        return makeError(QStringLiteral("%1: empty file (no header rows)").arg(file));
+    if (!reader.readHeader(sensors)) return makeError(QStringLiteral("%1: empty file (no header rows)").arg(file));
     if (!reader.readHeader(axes))
         return makeError(QStringLiteral("%1: the second header row (axes) is missing").arg(file));
     const long long axisLine = reader.line();
     if (axes.size() != sensors.size())
         return makeError(QStringLiteral("%1:%2: the axis row has %3 fields, the sensor row %4")
-                             .arg(file).arg(axisLine).arg(axes.size()).arg(sensors.size()));
+                             .arg(file)
+                             .arg(axisLine)
+                             .arg(axes.size())
+                             .arg(sensors.size()));
 
     // Group columns by sensor, in order of first appearance; the column without a sensor is time.
     const StreamKind* imu = findStreamKind(QStringLiteral("imu"));
@@ -92,15 +86,19 @@ Expected<ImportResult> GaitmapImporter::read(const QString& file, const ImportOp
         const QString sensor = sensors[i].trimmed();
         if (sensor.isEmpty()) {
             if (timeColumn >= 0)
-                return makeError(QStringLiteral("%1:1:%2: a second column without a sensor name (the first is column %3)")
-                                     .arg(file).arg(i + 1).arg(timeColumn + 1));
+                return makeError(
+                    QStringLiteral("%1:1:%2: a second column without a sensor name (the first is column %3)")
+                        .arg(file)
+                        .arg(i + 1)
+                        .arg(timeColumn + 1));
             timeColumn = i;
             continue;
         }
         SensorColumn col{i, {}, {}};
         QString unit;
         splitNameAndUnit(axes[i], col.axis, unit);
-        const QString at = QStringLiteral("%1:%2:%3 (column '%4/%5')").arg(file).arg(axisLine).arg(i + 1).arg(sensor, col.axis);
+        const QString at =
+            QStringLiteral("%1:%2:%3 (column '%4/%5')").arg(file).arg(axisLine).arg(i + 1).arg(sensor, col.axis);
         if (unit.isEmpty() && col.axis.startsWith(QLatin1String("gyr_")))
             unit = QStringLiteral("deg/s");  // gaitmap's convention
         col.unit = imu->unitFor(col.axis);
@@ -108,24 +106,20 @@ Expected<ImportResult> GaitmapImporter::read(const QString& file, const ImportOp
             col.unit = unit;
         } else {
             const auto conversion = conversionTo(unit, col.unit);
-            if (!conversion)
-                return makeError(QStringLiteral("%1: %2").arg(at, conversion.message()));
+            if (!conversion) return makeError(QStringLiteral("%1: %2").arg(at, conversion.message()));
             col.scale = conversion->scale;
             col.offset = conversion->offset;
-            if (col.scale != 1.0 || col.offset != 0.0)
-                col.sourceUnit = unit;
+            if (col.scale != 1.0 || col.offset != 0.0) col.sourceUnit = unit;
         }
         auto& columns = bySensor[sensor];
         if (std::any_of(columns.begin(), columns.end(), [&](const SensorColumn& c) { return c.axis == col.axis; }))
             return makeError(QStringLiteral("%1: duplicate column").arg(at));
-        if (columns.empty())
-            order << sensor;
+        if (columns.empty()) order << sensor;
         columns.push_back(col);
     }
     if (timeColumn < 0)
         return makeError(QStringLiteral("%1:1: no index/time column (a column with an empty sensor name)").arg(file));
-    if (order.isEmpty())
-        return makeError(QStringLiteral("%1:1: no sensor columns").arg(file));
+    if (order.isEmpty()) return makeError(QStringLiteral("%1:1: no sensor columns").arg(file));
 
     // All file columns into one block; time repair then applies to all sensors alike.
     const int width = int(sensors.size());
@@ -143,38 +137,41 @@ Expected<ImportResult> GaitmapImporter::read(const QString& file, const ImportOp
                 return QStringLiteral("%1:%2:%3 (column '%4')").arg(file).arg(reader.line()).arg(c + 1).arg(name);
             };
             if (field == CsvReader::Field::Missing)
-                return makeError(QStringLiteral("%1: line has %2 fields, the header has %3").arg(at()).arg(reader.fieldsOnLine()).arg(width));
+                return makeError(QStringLiteral("%1: line has %2 fields, the header has %3")
+                                     .arg(at())
+                                     .arg(reader.fieldsOnLine())
+                                     .arg(width));
             if (field == CsvReader::Field::Invalid) {
                 const auto raw = reader.lastField();
-                return makeError(QStringLiteral("%1: '%2' is not a number").arg(at(), QString::fromUtf8(raw.data(), qsizetype(raw.size()))));
+                return makeError(QStringLiteral("%1: '%2' is not a number")
+                                     .arg(at(), QString::fromUtf8(raw.data(), qsizetype(raw.size()))));
             }
             if (std::isinf(v) || (c == timeColumn && !std::isfinite(v)))
                 return makeError(QStringLiteral("%1: not a finite number").arg(at()));
-            if (c == timeColumn)
-                first.push_back(v);
+            if (c == timeColumn) first.push_back(v);
             all.values.push_back(v);
         }
         if (!reader.finishRecord())
             return makeError(QStringLiteral("%1:%2:%3: line has %4 fields, the header has %3")
-                                 .arg(file).arg(reader.line()).arg(width + 1).arg(reader.fieldsOnLine()).arg(width));
+                                 .arg(file)
+                                 .arg(reader.line())
+                                 .arg(width + 1)
+                                 .arg(reader.fieldsOnLine())
+                                 .arg(width));
         origin.lines.push_back(reader.line());
         if ((origin.lines.size() & 4095) == 0) {
-            if (progress.isCancelled())
-                return makeError(QStringLiteral("cancelled"));
+            if (progress.isCancelled()) return makeError(QStringLiteral("cancelled"));
             progress.report(double(reader.offset()) / double(total));
         }
     }
-    if (first.empty())
-        return makeError(QStringLiteral("%1: no data rows after the header").arg(file));
+    if (first.empty()) return makeError(QStringLiteral("%1: no data rows after the header").arg(file));
 
     const bool index = isSampleIndex(first);
     all.t = first;
     if (index)
-        for (double& t : all.t)
-            t /= kIndexRate;
+        for (double& t : all.t) t /= kIndexRate;
     ImportResult result;
-    if (Status s = repairTimeOrder(all, origin, options.timeRepair, false, result.warnings); !s)
-        return s.error();
+    if (Status s = repairTimeOrder(all, origin, options.timeRepair, false, result.warnings); !s) return s.error();
     const double rate = index ? kIndexRate : 1.0 / medianInterval(all.t);
 
     for (const QString& sensor : order) {
@@ -192,7 +189,8 @@ Expected<ImportResult> GaitmapImporter::read(const QString& file, const ImportOp
         info.frame = imu->defaultFrame;
         info.attributes.insert(QStringLiteral("sampling_rate"), rate);
         info.attributes.insert(QStringLiteral("sensor"), sensor);
-        info.attributes.insert(QStringLiteral("time_column"), index ? QStringLiteral("sample index") : QStringLiteral("seconds"));
+        info.attributes.insert(QStringLiteral("time_column"),
+                               index ? QStringLiteral("sample index") : QStringLiteral("seconds"));
         StreamData data(all.rows(), int(columns.size()));
         data.t = all.t;
         for (size_t r = 0; r < all.rows(); ++r)
@@ -203,8 +201,7 @@ Expected<ImportResult> GaitmapImporter::read(const QString& file, const ImportOp
         QJsonObject sourceUnits;
         for (const SensorColumn& col : columns) {
             info.columns.push_back({col.axis, col.unit});
-            if (!col.sourceUnit.isEmpty())
-                sourceUnits.insert(col.axis, col.sourceUnit);
+            if (!col.sourceUnit.isEmpty()) sourceUnits.insert(col.axis, col.sourceUnit);
         }
         if (!sourceUnits.isEmpty())  // as the CSV importer does: what the file said, for provenance
             info.attributes.insert(QStringLiteral("source_units"), sourceUnits);

@@ -41,38 +41,37 @@ Expected<ImportResult> GpxImporter::read(const QString& file, const ImportOption
     auto at = [&](qint64 line, qint64 column) { return QStringLiteral("%1:%2:%3").arg(file).arg(line).arg(column); };
     while (!xml.atEnd()) {
         xml.readNext();
-        if (!xml.isStartElement())
-            continue;
+        if (!xml.isStartElement()) continue;
         if (!root) {
             if (xml.name() != QLatin1String("gpx"))
-                return makeError(QStringLiteral("%1: not a GPX file (root element <%2>)").arg(at(xml.lineNumber(), xml.columnNumber()), xml.name().toString()));
+                return makeError(QStringLiteral("%1: not a GPX file (root element <%2>)")
+                                     .arg(at(xml.lineNumber(), xml.columnNumber()), xml.name().toString()));
             root = true;
             continue;
         }
-        if (xml.name() != QLatin1String("trkpt"))
-            continue;
+        if (xml.name() != QLatin1String("trkpt")) continue;
         const qint64 line = xml.lineNumber(), column = xml.columnNumber();
         Point p;
         bool ok = false;
         p.lat = xml.attributes().value(QStringLiteral("lat")).toDouble(&ok);
         if (!ok || std::abs(p.lat) > 90.0)
-            return makeError(QStringLiteral("%1: <trkpt> lat '%2' is not a latitude").arg(at(line, column), xml.attributes().value(QStringLiteral("lat")).toString()));
+            return makeError(QStringLiteral("%1: <trkpt> lat '%2' is not a latitude")
+                                 .arg(at(line, column), xml.attributes().value(QStringLiteral("lat")).toString()));
         p.lon = xml.attributes().value(QStringLiteral("lon")).toDouble(&ok);
         if (!ok || std::abs(p.lon) > 180.0)
-            return makeError(QStringLiteral("%1: <trkpt> lon '%2' is not a longitude").arg(at(line, column), xml.attributes().value(QStringLiteral("lon")).toString()));
+            return makeError(QStringLiteral("%1: <trkpt> lon '%2' is not a longitude")
+                                 .arg(at(line, column), xml.attributes().value(QStringLiteral("lon")).toString()));
         bool timed = false;
         while (!xml.atEnd() && !(xml.isEndElement() && xml.name() == QLatin1String("trkpt"))) {
             xml.readNext();
-            if (!xml.isStartElement())
-                continue;
+            if (!xml.isStartElement()) continue;
             const QString name = xml.name().toString();
             const qint64 l = xml.lineNumber(), c = xml.columnNumber();
             auto number = [&](double& out, double scale) -> Status {
                 const QString text = xml.readElementText().trimmed();
                 bool good = false;
                 out = text.toDouble(&good) * scale;
-                if (!good)
-                    return makeError(QStringLiteral("%1: <%2> '%3' is not a number").arg(at(l, c), name, text));
+                if (!good) return makeError(QStringLiteral("%1: <%2> '%3' is not a number").arg(at(l, c), name, text));
                 return {};
             };
             Status s;
@@ -83,7 +82,8 @@ Expected<ImportResult> GpxImporter::read(const QString& file, const ImportOption
                 const QByteArray utf8 = text.toUtf8();
                 bool zone = false;
                 if (!parseIsoDateTime(std::string_view(utf8.constData(), size_t(utf8.size())), p.ns, zone))
-                    return makeError(QStringLiteral("%1: <time> '%2' is not an ISO 8601 date-time").arg(at(l, c), text));
+                    return makeError(
+                        QStringLiteral("%1: <time> '%2' is not an ISO 8601 date-time").arg(at(l, c), text));
                 timed = true;
             } else if (name == QLatin1String("hr")) {
                 s = number(p.hr, 1.0 / 60.0);
@@ -92,17 +92,16 @@ Expected<ImportResult> GpxImporter::read(const QString& file, const ImportOption
             } else if (name == QLatin1String("speed")) {
                 s = number(p.speed, 1.0);
             }
-            if (!s)
-                return s.error();
+            if (!s) return s.error();
         }
         if (!timed)
-            return makeError(QStringLiteral("%1: <trkpt> has no <time>; a track needs time stamps").arg(at(line, column)));
+            return makeError(
+                QStringLiteral("%1: <trkpt> has no <time>; a track needs time stamps").arg(at(line, column)));
         points.push_back(p);
     }
     if (xml.hasError())
         return makeError(QStringLiteral("%1: %2").arg(at(xml.lineNumber(), xml.columnNumber()), xml.errorString()));
-    if (points.empty())
-        return makeError(QStringLiteral("%1: no track points (<trkpt>)").arg(file));
+    if (points.empty()) return makeError(QStringLiteral("%1: no track points (<trkpt>)").arg(file));
 
     auto any = [&](double Point::*m) {
         return std::any_of(points.begin(), points.end(), [&](const Point& p) { return !std::isnan(p.*m); });
@@ -125,7 +124,9 @@ Expected<ImportResult> GpxImporter::read(const QString& file, const ImportOption
     }
     if (const long long bad = data.firstNonIncreasing(); bad >= 0)
         return makeError(QStringLiteral("%1: track point %2 has time %3, not after the point before (%4)")
-                             .arg(file).arg(bad + 1).arg(formatUtc(points[size_t(bad)].ns), formatUtc(points[size_t(bad - 1)].ns)));
+                             .arg(file)
+                             .arg(bad + 1)
+                             .arg(formatUtc(points[size_t(bad)].ns), formatUtc(points[size_t(bad - 1)].ns)));
     StreamInfo info;
     info.kind = QStringLiteral("gnss");
     info.frame = QStringLiteral("WGS84");

@@ -32,10 +32,12 @@ Status writeExport(const QString& what, const QString& file, const std::function
         return {};
     } catch (const h5::Failure& failure) {
         if (created) QFile::remove(file);
-        return makeError(QStringLiteral("cannot export %1 to '%2': %3").arg(what, QDir::toNativeSeparators(file), failure.message));
+        return makeError(
+            QStringLiteral("cannot export %1 to '%2': %3").arg(what, QDir::toNativeSeparators(file), failure.message));
     } catch (const std::bad_alloc&) {
         if (created) QFile::remove(file);
-        return makeError(QStringLiteral("cannot export %1 to '%2': out of memory").arg(what, QDir::toNativeSeparators(file)));
+        return makeError(
+            QStringLiteral("cannot export %1 to '%2': out of memory").arg(what, QDir::toNativeSeparators(file)));
     }
 }
 
@@ -50,7 +52,9 @@ Status exportStreamHdf5(const Stream& stream, const QString& file) {
     const StreamInfo& info = stream.info();
     if (samples.columns != static_cast<int>(info.columns.size()))
         return makeError(QStringLiteral("cannot export %1: %2 columns of samples but %3 named")
-                             .arg(what).arg(samples.columns).arg(info.columns.size()));
+                             .arg(what)
+                             .arg(samples.columns)
+                             .arg(info.columns.size()));
 
     return writeExport(what, file, [&](hid_t root) {
         QStringList names, units;

@@ -17,19 +17,16 @@ namespace {
 QString normalized(const QString& name) {
     QString n;
     for (const QChar c : name)
-        if (c.isLetterOrNumber())
-            n += c.toLower();
+        if (c.isLetterOrNumber()) n += c.toLower();
     return n;
 }
 
 bool isNumberCell(const QString& cell) {
     const QString c = cell.trimmed();
-    if (c.isEmpty() || c.compare(QLatin1String("nan"), Qt::CaseInsensitive) == 0)
-        return true;
+    if (c.isEmpty() || c.compare(QLatin1String("nan"), Qt::CaseInsensitive) == 0) return true;
     bool ok = false;
     c.toDouble(&ok);
-    if (!ok)
-        QString(c).replace(QLatin1Char(','), QLatin1Char('.')).toDouble(&ok);
+    if (!ok) QString(c).replace(QLatin1Char(','), QLatin1Char('.')).toDouble(&ok);
     return ok;
 }
 
@@ -38,19 +35,16 @@ QString timeUnitFromName(const QString& name) {
     const QString n = normalized(name);
     for (const char* unit : {"ms", "us", "ns"})
         for (const char* stem : {"time", "timestamp", "t"})
-            if (n == QLatin1String(stem) + QLatin1String(unit))
-                return QLatin1String(unit);
+            if (n == QLatin1String(stem) + QLatin1String(unit)) return QLatin1String(unit);
     return {};
 }
 
 Expected<ImportPreview> previewCsv(const QString& file, int maxRows, const QString& forcedKind) {
     MappedFile mapped;
-    if (Status s = mapped.open(file); !s)
-        return s.error();
+    if (Status s = mapped.open(file); !s) return s.error();
     CsvReader reader(mapped.begin(), mapped.end());
     QStringList cells;
-    if (!reader.readHeader(cells))
-        return makeError(QStringLiteral("%1: empty file (no header row)").arg(file));
+    if (!reader.readHeader(cells)) return makeError(QStringLiteral("%1: empty file (no header row)").arg(file));
     ImportPreview preview;
     preview.file = file;
     preview.format = QStringLiteral("csv");
@@ -59,8 +53,7 @@ Expected<ImportPreview> previewCsv(const QString& file, int maxRows, const QStri
     std::string cell;
     while (int(preview.rows.size()) < maxRows && reader.nextRecord()) {
         QStringList row;
-        while (reader.text(cell))
-            row << QString::fromUtf8(cell.data(), qsizetype(cell.size()));
+        while (reader.text(cell)) row << QString::fromUtf8(cell.data(), qsizetype(cell.size()));
         reader.finishRecord();
         preview.rows.push_back(row);
     }
@@ -79,8 +72,7 @@ Expected<ImportPreview> previewCsv(const QString& file, int maxRows, const QStri
                 col.unit = timeUnitFromName(col.source);
             haveTime = haveTime || !col.channel.isEmpty();
         }
-        if (col.channel.isEmpty())
-            col.channel = col.source;
+        if (col.channel.isEmpty()) col.channel = col.source;
         col.time = col.channel == QLatin1String("t");
         channels << col.channel;
         preview.columns.push_back(col);
@@ -105,8 +97,7 @@ Expected<ImportPreview> previewImported(const QString& file, const Importer& imp
     options.kind = kind;
     options.target = QStringLiteral("preview");
     auto result = importFile(file, options);
-    if (!result)
-        return result.error();
+    if (!result) return result.error();
     ImportPreview preview;
     preview.file = file;
     preview.format = importer.format();
@@ -117,16 +108,13 @@ Expected<ImportPreview> previewImported(const QString& file, const Importer& imp
         preview.items << name;
         if (const auto* stream = std::get_if<Stream>(&item.item)) {
             auto d = stream->data();
-            if (!d)
-                return d.error();
+            if (!d) return d.error();
             data.push_back(*d);
             streams.push_back(stream);
-            if (preview.kind.isEmpty())
-                preview.kind = stream->info().kind;
+            if (preview.kind.isEmpty()) preview.kind = stream->info().kind;
         }
     }
-    if (streams.empty())
-        return preview;
+    if (streams.empty()) return preview;
     const bool prefix = streams.size() > 1;
     preview.columns.push_back({QStringLiteral("t"), QStringLiteral("t"), QStringLiteral("s"), QStringLiteral("t"),
                                QStringLiteral("s"), true});
@@ -155,74 +143,80 @@ QString detectChannel(const QString& name) {
     if (trimmed == QLatin1String("t") || trimmed == QLatin1String("beacon") || trimmed == QLatin1String("id"))
         return trimmed;
     for (const StreamKind& kind : streamKinds())  // interchange names are their own channel
-        if (!kind.unitFor(trimmed).isEmpty())
-            return trimmed;
+        if (!kind.unitFor(trimmed).isEmpty()) return trimmed;
 
     static const QHash<QString, QString> exact{
-        {"time", "t"},          {"timestamp", "t"},     {"times", "t"},        {"sec", "t"},
-        {"seconds", "t"},       {"timesec", "t"},       {"timess", "t"},       {"elapsed", "t"},
-        {"elapsedtime", "t"},   {"timems", "t"},        {"timestampms", "t"},  {"tms", "t"},
-        {"timeus", "t"},        {"timestampus", "t"},   {"latitude", "lat"},   {"longitude", "lon"},
-        {"lng", "lon"},         {"long", "lon"},        {"altitude", "alt"},   {"height", "alt"},
-        {"elevation", "alt"},   {"quatw", "qw"},        {"quaternionw", "qw"}, {"quatx", "qx"},
-        {"quaternionx", "qx"},  {"quaty", "qy"},        {"quaterniony", "qy"}, {"quatz", "qz"},
-        {"quaternionz", "qz"},  {"posx", "x"},          {"posy", "y"},         {"posz", "z"},
-        {"positionx", "x"},     {"positiony", "y"},     {"positionz", "z"},    {"temperature", "temp"},
-        {"tdoa", "dt"},         {"anchor", "beacon"},   {"anchorid", "beacon"}, {"beaconid", "beacon"},
+        {"time", "t"},          {"timestamp", "t"},   {"times", "t"},         {"sec", "t"},
+        {"seconds", "t"},       {"timesec", "t"},     {"timess", "t"},        {"elapsed", "t"},
+        {"elapsedtime", "t"},   {"timems", "t"},      {"timestampms", "t"},   {"tms", "t"},
+        {"timeus", "t"},        {"timestampus", "t"}, {"latitude", "lat"},    {"longitude", "lon"},
+        {"lng", "lon"},         {"long", "lon"},      {"altitude", "alt"},    {"height", "alt"},
+        {"elevation", "alt"},   {"quatw", "qw"},      {"quaternionw", "qw"},  {"quatx", "qx"},
+        {"quaternionx", "qx"},  {"quaty", "qy"},      {"quaterniony", "qy"},  {"quatz", "qz"},
+        {"quaternionz", "qz"},  {"posx", "x"},        {"posy", "y"},          {"posz", "z"},
+        {"positionx", "x"},     {"positiony", "y"},   {"positionz", "z"},     {"temperature", "temp"},
+        {"tdoa", "dt"},         {"anchor", "beacon"}, {"anchorid", "beacon"}, {"beaconid", "beacon"},
         {"satellites", "sats"}, {"numsats", "sats"},
     };
     const QString n = normalized(trimmed);
-    if (const auto it = exact.constFind(n); it != exact.cend())
-        return *it;
+    if (const auto it = exact.constFind(n); it != exact.cend()) return *it;
     // Sensor axes: a stem and a final x, y or z ("AccX", "acc-y", "Gyroscope Z", "ax").
     if (n.size() >= 2) {
         const QChar axis = n.back();
         if (axis == QLatin1Char('x') || axis == QLatin1Char('y') || axis == QLatin1Char('z')) {
             const QString stem = n.left(n.size() - 1);
             static const QHash<QString, QString> stems{
-                {"a", "acc_"},     {"acc", "acc_"},  {"accel", "acc_"}, {"acceleration", "acc_"}, {"accelerometer", "acc_"},
-                {"g", "gyr_"},     {"gyr", "gyr_"},  {"gyro", "gyr_"},  {"gyroscope", "gyr_"},    {"angularvelocity", "gyr_"},
-                {"w", "gyr_"},     {"omega", "gyr_"}, {"m", "mag_"},    {"mag", "mag_"},          {"magnetometer", "mag_"},
-                {"magneticfield", "mag_"}, {"magn", "mag_"}, {"v", "v"}, {"vel", "v"},            {"velocity", "v"},
+                {"a", "acc_"},
+                {"acc", "acc_"},
+                {"accel", "acc_"},
+                {"acceleration", "acc_"},
+                {"accelerometer", "acc_"},
+                {"g", "gyr_"},
+                {"gyr", "gyr_"},
+                {"gyro", "gyr_"},
+                {"gyroscope", "gyr_"},
+                {"angularvelocity", "gyr_"},
+                {"w", "gyr_"},
+                {"omega", "gyr_"},
+                {"m", "mag_"},
+                {"mag", "mag_"},
+                {"magnetometer", "mag_"},
+                {"magneticfield", "mag_"},
+                {"magn", "mag_"},
+                {"v", "v"},
+                {"vel", "v"},
+                {"velocity", "v"},
             };
-            if (const auto it = stems.constFind(stem); it != stems.cend())
-                return *it + axis;
+            if (const auto it = stems.constFind(stem); it != stems.cend()) return *it + axis;
         }
     }
     return {};
 }
 
 Expected<ImportPreview> previewFile(const QString& file, const QString& format, int maxRows, const QString& kind) {
-    if (!QFileInfo(file).isFile())
-        return makeError(QStringLiteral("%1: no such file").arg(file));
+    if (!QFileInfo(file).isFile()) return makeError(QStringLiteral("%1: no such file").arg(file));
     const auto importer = chooseImporter(file, format);
-    if (!importer)
-        return importer.error();
-    if ((*importer)->format() == QLatin1String("csv"))
-        return previewCsv(file, maxRows, kind);
+    if (!importer) return importer.error();
+    if ((*importer)->format() == QLatin1String("csv")) return previewCsv(file, maxRows, kind);
     return previewImported(file, **importer, maxRows, kind);
 }
 
 Expected<QString> storedUnitFor(const QString& kindName, const QString& channel, const QString& unit, bool time) {
     if (time) {  // any time format (ms, unix_ns, iso, hh:mm:ss, ...) is stored as t in s
         const auto format = parseTimeFormat(unit);
-        if (!format)
-            return format.error();
+        if (!format) return format.error();
         return QStringLiteral("s");
     }
     const StreamKind* kind = findStreamKind(kindName);
     const QString target = kind ? kind->unitFor(channel) : QString();
     if (!target.isEmpty()) {
         const auto conversion = conversionTo(unit, target);
-        if (!conversion)
-            return conversion.error();
+        if (!conversion) return conversion.error();
         return conversion->si;
     }
-    if (unit.trimmed().isEmpty())
-        return QString();
+    if (unit.trimmed().isEmpty()) return QString();
     const QString si = siUnitOf(canonicalUnit(unit));
-    if (si.isEmpty())
-        return makeError(QStringLiteral("unknown unit '%1'").arg(unit));
+    if (si.isEmpty()) return makeError(QStringLiteral("unknown unit '%1'").arg(unit));
     return si;
 }
 
@@ -230,24 +224,20 @@ ImportOptions suggestedOptions(const ImportPreview& preview) {
     ImportOptions options;
     options.format = preview.format;
     options.kind = preview.kind;
-    if (!preview.mappable)
-        return options;
+    if (!preview.mappable) return options;
     for (size_t c = 0; c < preview.columns.size(); ++c) {
         const PreviewColumn& col = preview.columns[c];
         // A text column (a date, a label) is skipped; a number column with a bad cell is not, so
         // the check reports the cell.
         bool anyNumber = false, anyText = false;
         for (const QStringList& row : preview.rows)
-            if (qsizetype(c) < row.size())
-                (isNumberCell(row[qsizetype(c)]) ? anyNumber : anyText) = true;
+            if (qsizetype(c) < row.size()) (isNumberCell(row[qsizetype(c)]) ? anyNumber : anyText) = true;
         const bool numeric = anyNumber || !anyText;
         const bool idColumn = col.channel == QLatin1String("beacon") || col.channel == QLatin1String("id") ||
                               col.channel == QLatin1String("name") || col.channel == QLatin1String("label");
         if (col.time) {
-            if (col.source != QLatin1String("t"))
-                options.timeColumn = col.source;
-            if (col.unit != QLatin1String("s") && !col.unit.isEmpty())
-                options.timeUnit = col.unit;
+            if (col.source != QLatin1String("t")) options.timeColumn = col.source;
+            if (col.unit != QLatin1String("s") && !col.unit.isEmpty()) options.timeUnit = col.unit;
         } else if (!numeric && !idColumn) {
             options.columns.push_back({col.source, {}, {}, true});  // text such as a date: not a channel
         } else if (col.channel != col.source) {

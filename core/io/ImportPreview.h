@@ -22,13 +22,13 @@ struct PreviewColumn {
 
 struct ImportPreview {
     QString file;
-    QString format;          // "csv", "gaitmap", "broad", "nmea"
-    QString kind;            // detected kind, empty if the columns do not tell
-    bool mappable = false;   // csv: ImportOptions::columns can rename, re-unit and skip the columns
+    QString format;            // "csv", "gaitmap", "broad", "nmea"
+    QString kind;              // detected kind, empty if the columns do not tell
+    bool mappable = false;     // csv: ImportOptions::columns can rename, re-unit and skip the columns
     long long headerLine = 0;  // csv: line of the header row
     std::vector<PreviewColumn> columns;
     std::vector<QStringList> rows;  // the first rows, one text cell per column
-    QStringList items;       // formats with fixed streams: the items the import makes ("left-foot", ...)
+    QStringList items;              // formats with fixed streams: the items the import makes ("left-foot", ...)
 };
 
 // Reads the head of file (csv) or imports it in memory (other formats) to describe it.
@@ -52,9 +52,9 @@ ImportOptions suggestedOptions(const ImportPreview& preview);
 // A dry run: the full parse of importFile() without applying anything.
 struct ImportCheck {
     QString file;
-    QStringList errors;    // "imu.csv:58:3 (column 'acc_y'): 'abc' is not a number"
+    QStringList errors;  // "imu.csv:58:3 (column 'acc_y'): 'abc' is not a number"
     QStringList warnings;
-    QStringList items;     // "rec/stream" paths the import would create
+    QStringList items;  // "rec/stream" paths the import would create
     long long samples = 0;
     bool cancelled = false;
 };

@@ -20,53 +20,53 @@ namespace athlos {
 
 // How one source column of a CSV file is imported (ImportOptions::columns).
 struct ColumnMapping {
-    QString source;   // the column's name in the header, without its unit ("Gyro X" of "Gyro X [deg/s]")
-    QString channel;  // name to store it under; empty keeps the source name
-    QString unit;     // unit of the values in the file; empty takes the header's (or the kind's) unit.
-                      // Values are converted to the kind's SI unit, or to SI if the kind has no rule.
+    QString source;     // the column's name in the header, without its unit ("Gyro X" of "Gyro X [deg/s]")
+    QString channel;    // name to store it under; empty keeps the source name
+    QString unit;       // unit of the values in the file; empty takes the header's (or the kind's) unit.
+                        // Values are converted to the kind's SI unit, or to SI if the kind has no rule.
     bool skip = false;  // leave the column out (its cells are not parsed)
 };
 
 struct ImportOptions {
-    QString format = QStringLiteral("auto");  // auto | csv | broad | gaitmap | ...
-    QString kind;                            // csv: imu | lps-position | lps-tdoa | gnss | beacons | ...
-    QString target;                          // "rec" (streams named after kind) or "rec/stream"
+    QString format = QStringLiteral("auto");        // auto | csv | broad | gaitmap | ...
+    QString kind;                                   // csv: imu | lps-position | lps-tdoa | gnss | beacons | ...
+    QString target;                                 // "rec" (streams named after kind) or "rec/stream"
     QString timeRepair = QStringLiteral("reject");  // reject | sort | drop: non-increasing time stamps
-    QString frame;                           // overrides the kind's default frame
-    bool overwrite = false;                  // replace existing items of the same name
+    QString frame;                                  // overrides the kind's default frame
+    bool overwrite = false;                         // replace existing items of the same name
     // csv: mapping of source columns; columns not listed keep their header name and unit.
     std::vector<ColumnMapping> columns;
-    QString timeColumn;                      // csv: source column holding time ("" = the column 't')
-    QString timeUnit;                        // csv: unit or time format of that column ("" = from its header,
-                                             // else s); see core/io/TimeFormats.h (ms, unix_ns, iso, hh:mm:ss, excel…)
-    bool dropUnmapped = false;               // csv: leave out columns neither mapped nor known to the kind
-    QString labelColumn;                     // csv: per-sample labels → annotations (runs of equal labels)
-    std::map<QString, QString> labelNames;   // csv: label value → name ("0" → "rest"); numbers match numerically
-    std::optional<GeodeticOrigin> origin;    // the project's geodetic origin, if it has none yet (Geodesy.h)
-    QString date;                            // YYYY-MM-DD: the date of clock times (hh:mm:ss) without one
-    QString start;                           // ISO 8601: the UTC instant of t = 0 for relative times
-    QJsonObject metadata;                    // merged into the target recording's metadata (athlete, ...)
+    QString timeColumn;                     // csv: source column holding time ("" = the column 't')
+    QString timeUnit;                       // csv: unit or time format of that column ("" = from its header,
+                                            // else s); see core/io/TimeFormats.h (ms, unix_ns, iso, hh:mm:ss, excel…)
+    bool dropUnmapped = false;              // csv: leave out columns neither mapped nor known to the kind
+    QString labelColumn;                    // csv: per-sample labels → annotations (runs of equal labels)
+    std::map<QString, QString> labelNames;  // csv: label value → name ("0" → "rest"); numbers match numerically
+    std::optional<GeodeticOrigin> origin;   // the project's geodetic origin, if it has none yet (Geodesy.h)
+    QString date;                           // YYYY-MM-DD: the date of clock times (hh:mm:ss) without one
+    QString start;                          // ISO 8601: the UTC instant of t = 0 for relative times
+    QJsonObject metadata;                   // merged into the target recording's metadata (athlete, ...)
 };
 
 struct ImportedItem {
-    QString path;                            // "rec/item"
+    QString path;  // "rec/item"
     std::variant<Stream, Table> item;
 };
 
 struct ImportResult {
     std::vector<ImportedItem> items;
-    QStringList warnings;                    // e.g. "repaired 3 non-increasing time stamps"
+    QStringList warnings;                              // e.g. "repaired 3 non-increasing time stamps"
     std::map<QString, QJsonObject> recordingMetadata;  // recording → keys merged into its metadata
     // recording → annotations to add (importers use "" for the target recording). Applying replaces
     // the recording's annotations of the same source and annotator when overwriting.
     std::map<QString, Annotations> annotations;
-    std::optional<GeodeticOrigin> origin;    // ImportOptions::origin, applied with the items
+    std::optional<GeodeticOrigin> origin;  // ImportOptions::origin, applied with the items
 };
 
 class Importer {
 public:
     virtual ~Importer() = default;
-    virtual QString format() const = 0;       // "csv"
+    virtual QString format() const = 0;  // "csv"
     virtual QString description() const = 0;
     virtual QStringList extensions() const = 0;  // {"csv", "txt"}
     // Auto-detection from the file name and its first bytes.

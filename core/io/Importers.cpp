@@ -35,8 +35,7 @@ struct Target {
 };
 
 Expected<Target> parseTarget(const QString& target, const QString& file) {
-    if (target.trimmed().isEmpty())
-        return Target{QFileInfo(file).completeBaseName(), {}};
+    if (target.trimmed().isEmpty()) return Target{QFileInfo(file).completeBaseName(), {}};
     const QStringList parts = target.trimmed().split(QLatin1Char('/'));
     if (parts.size() > 2 || parts.front().isEmpty() || (parts.size() == 2 && parts.back().isEmpty()))
         return makeError(QStringLiteral("target '%1': expected <recording> or <recording>/<stream>").arg(target));
@@ -55,21 +54,16 @@ Provenance importProvenance(const Importer& importer, const QString& file, const
     if (!options.columns.empty()) {
         QJsonArray columns;
         for (const ColumnMapping& m : options.columns)
-            columns.append(QJsonObject{{"source", m.source}, {"channel", m.channel}, {"unit", m.unit}, {"skip", m.skip}});
+            columns.append(
+                QJsonObject{{"source", m.source}, {"channel", m.channel}, {"unit", m.unit}, {"skip", m.skip}});
         p.parameters.insert(QStringLiteral("columns"), columns);
     }
-    if (!options.timeColumn.isEmpty())
-        p.parameters.insert(QStringLiteral("time_column"), options.timeColumn);
-    if (!options.timeUnit.isEmpty())
-        p.parameters.insert(QStringLiteral("time_unit"), options.timeUnit);
-    if (options.dropUnmapped)
-        p.parameters.insert(QStringLiteral("drop_unmapped"), true);
-    if (options.origin)
-        p.parameters.insert(QStringLiteral("origin"), options.origin->toJson());
-    if (!options.date.isEmpty())
-        p.parameters.insert(QStringLiteral("date"), options.date);
-    if (!options.start.isEmpty())
-        p.parameters.insert(QStringLiteral("start"), options.start);
+    if (!options.timeColumn.isEmpty()) p.parameters.insert(QStringLiteral("time_column"), options.timeColumn);
+    if (!options.timeUnit.isEmpty()) p.parameters.insert(QStringLiteral("time_unit"), options.timeUnit);
+    if (options.dropUnmapped) p.parameters.insert(QStringLiteral("drop_unmapped"), true);
+    if (options.origin) p.parameters.insert(QStringLiteral("origin"), options.origin->toJson());
+    if (!options.date.isEmpty()) p.parameters.insert(QStringLiteral("date"), options.date);
+    if (!options.start.isEmpty()) p.parameters.insert(QStringLiteral("start"), options.start);
     p.sourceFile = QFileInfo(file).absoluteFilePath();
     p.appVersion = appVersion();
     p.time = QDateTime::currentDateTimeUtc();
@@ -100,13 +94,11 @@ const std::vector<std::unique_ptr<Importer>>& importers() {
 Expected<const Importer*> chooseImporter(const QString& file, const QString& format) {
     auto known = [] {
         QStringList formats;
-        for (const auto& candidate : importers())
-            formats << candidate->format();
+        for (const auto& candidate : importers()) formats << candidate->format();
         return formats.join(QStringLiteral(", "));
     };
     if (!format.isEmpty() && format != QLatin1String("auto")) {
-        if (const Importer* importer = findImporter(format))
-            return importer;
+        if (const Importer* importer = findImporter(format)) return importer;
         return makeError(QStringLiteral("unknown import format '%1' (known: auto, %2)").arg(format, known()));
     }
     QFile f(file);
@@ -114,43 +106,36 @@ Expected<const Importer*> chooseImporter(const QString& file, const QString& for
         return makeError(QStringLiteral("%1: cannot open: %2").arg(file, f.errorString()));
     const QByteArray head = f.read(kHeadBytes);
     for (const auto& candidate : importers())
-        if (candidate->canRead(file, head))
-            return candidate.get();
+        if (candidate->canRead(file, head)) return candidate.get();
     return makeError(QStringLiteral("%1: cannot tell the file format; give one of: %2").arg(file, known()));
 }
 
 const Importer* findImporter(const QString& format) {
     for (const auto& importer : importers())
-        if (importer->format() == format)
-            return importer.get();
+        if (importer->format() == format) return importer.get();
     return nullptr;
 }
 
 Expected<ImportResult> importFile(const QString& file, const ImportOptions& options, const Progress& progress) {
     const QFileInfo info(file);
-    if (!info.exists())
-        return makeError(QStringLiteral("%1: no such file").arg(file));
-    if (!info.isFile())
-        return makeError(QStringLiteral("%1: not a file").arg(file));
+    if (!info.exists()) return makeError(QStringLiteral("%1: no such file").arg(file));
+    if (!info.isFile()) return makeError(QStringLiteral("%1: not a file").arg(file));
     const auto target = parseTarget(options.target, file);
-    if (!target)
-        return target.error();
+    if (!target) return target.error();
 
     const auto chosen = chooseImporter(file, options.format);
-    if (!chosen)
-        return chosen.error();
+    if (!chosen) return chosen.error();
     const Importer* importer = *chosen;
-    if (!options.columns.empty() || !options.timeColumn.isEmpty() || !options.timeUnit.isEmpty() || options.dropUnmapped)
+    if (!options.columns.empty() || !options.timeColumn.isEmpty() || !options.timeUnit.isEmpty() ||
+        options.dropUnmapped)
         if (!importer->mapsColumns())
             return makeError(QStringLiteral("%1: a column mapping applies to CSV files only (format '%2')")
                                  .arg(file, importer->format()));
 
     auto result = importer->read(file, options, progress);
-    if (!result)
-        return result;
+    if (!result) return result;
     const Provenance provenance = importProvenance(*importer, file, options);
-    if (!options.metadata.isEmpty())
-        result->recordingMetadata[target->recording] = options.metadata;
+    if (!options.metadata.isEmpty()) result->recordingMetadata[target->recording] = options.metadata;
     result->origin = options.origin;
     if (auto it = result->annotations.find(QString()); it != result->annotations.end()) {
         Annotations own = std::move(it->second);
@@ -162,20 +147,18 @@ Expected<ImportResult> importFile(const QString& file, const ImportOptions& opti
     for (ImportedItem& item : result->items) {
         const QString defaultName = item.path;
         const QString name = target->item.isEmpty() ? defaultName
-                             : several               ? target->item + QLatin1Char('-') + defaultName
-                                                     : target->item;
+                             : several              ? target->item + QLatin1Char('-') + defaultName
+                                                    : target->item;
         item.path = target->recording + QLatin1Char('/') + name;
         if (auto* stream = std::get_if<Stream>(&item.item)) {
             stream->info().name = name;
             stream->info().provenance = provenance;
-            if (!options.frame.isEmpty())
-                stream->info().frame = options.frame;
+            if (!options.frame.isEmpty()) stream->info().frame = options.frame;
         } else {
             auto& table = std::get<Table>(item.item);
             table.name = name;
             table.provenance = provenance;
-            if (!options.frame.isEmpty())
-                table.attributes.insert(QStringLiteral("frame"), options.frame);
+            if (!options.frame.isEmpty()) table.attributes.insert(QStringLiteral("frame"), options.frame);
         }
     }
     return result;
@@ -186,7 +169,8 @@ Expected<std::map<QString, QString>> parseLabelNames(const QString& text) {
     for (const QString& pair : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
         const qsizetype eq = pair.indexOf(QLatin1Char('='));
         if (eq <= 0 || pair.left(eq).trimmed().isEmpty() || pair.mid(eq + 1).trimmed().isEmpty())
-            return makeError(QStringLiteral("label names: '%1' is not VALUE=NAME (e.g. 0=rest,1=run)").arg(pair.trimmed()));
+            return makeError(
+                QStringLiteral("label names: '%1' is not VALUE=NAME (e.g. 0=rest,1=run)").arg(pair.trimmed()));
         names[pair.left(eq).trimmed()] = pair.mid(eq + 1).trimmed();
     }
     return names;
@@ -202,14 +186,17 @@ Status applyImport(Project& project, ImportResult result, bool overwrite) {
             return makeError(QStringLiteral("the import has two items named '%1'").arg(item.path));
         seen.insert(item.path);
         if (!overwrite && (project.stream(item.path) || project.table(item.path)))
-            return makeError(QStringLiteral("'%1' already exists in the project (overwrite to replace it)").arg(item.path));
+            return makeError(
+                QStringLiteral("'%1' already exists in the project (overwrite to replace it)").arg(item.path));
     }
     // The project's geodetic origin, and every GNSS stream in its ENU frame (before anything changes).
     std::optional<GeodeticOrigin> origin = projectOrigin(project.meta());
     if (origin && result.origin && !(*origin == *result.origin))
         return makeError(QStringLiteral("the project's geodetic origin is %1, %2, %3 m; it cannot change (all GNSS "
                                         "streams share it)")
-                             .arg(origin->lat, 0, 'g', 12).arg(origin->lon, 0, 'g', 12).arg(origin->height));
+                             .arg(origin->lat, 0, 'g', 12)
+                             .arg(origin->lon, 0, 'g', 12)
+                             .arg(origin->height));
     bool newOrigin = false;
     if (!origin && result.origin) {
         origin = result.origin;
@@ -217,25 +204,21 @@ Status applyImport(Project& project, ImportResult result, bool overwrite) {
     }
     for (ImportedItem& item : result.items) {
         auto* stream = std::get_if<Stream>(&item.item);
-        if (!stream || stream->kind() != QLatin1String("gnss"))
-            continue;
+        if (!stream || stream->kind() != QLatin1String("gnss")) continue;
         if (!origin) {
             origin = firstFix(*stream);
             newOrigin = origin.has_value();
         }
-        if (!origin)
-            continue;
+        if (!origin) continue;
         if (auto added = addLocalEnu(*stream, *origin); !added)
             return makeError(QStringLiteral("%1: %2").arg(item.path, added.message()));
     }
     for (const auto& [name, annotations] : result.annotations) {
-        if (annotations.empty())
-            continue;
+        if (annotations.empty()) continue;
         if (!ItemPath::parse(name + QStringLiteral("/x")).isValid())
             return makeError(QStringLiteral("'%1' is not a valid recording name").arg(name));
         const Recording* rec = project.recording(name);
-        if (!rec || overwrite)
-            continue;
+        if (!rec || overwrite) continue;
         for (const Annotation& a : rec->annotations)
             for (const Annotation& b : annotations)
                 if (a.source == b.source && a.annotator == b.annotator)
@@ -253,8 +236,7 @@ Status applyImport(Project& project, ImportResult result, bool overwrite) {
     for (auto& [name, imported] : result.annotations) {
         // A plain reference: clang 14 cannot capture structured bindings in lambdas.
         const Annotations& annotations = imported;
-        if (annotations.empty())
-            continue;
+        if (annotations.empty()) continue;
         Annotations& existing = project.ensureRecording(name).annotations;
         std::erase_if(existing, [&](const Annotation& a) {
             return std::any_of(annotations.begin(), annotations.end(),
@@ -268,8 +250,7 @@ Status applyImport(Project& project, ImportResult result, bool overwrite) {
     }
     for (const auto& [name, metadata] : result.recordingMetadata) {
         QJsonObject& merged = project.ensureRecording(name).metadata;
-        for (auto it = metadata.begin(); it != metadata.end(); ++it)
-            merged.insert(it.key(), it.value());
+        for (auto it = metadata.begin(); it != metadata.end(); ++it) merged.insert(it.key(), it.value());
     }
     return {};
 }

@@ -50,8 +50,10 @@ bool angle(const QByteArray& value, const QByteArray& hemisphere, double& out) {
     if (!ok) return false;
     const double deg = std::floor(v / 100.0);
     out = deg + (v - 100.0 * deg) / 60.0;
-    if (hemisphere == "S" || hemisphere == "W") out = -out;
-    else if (hemisphere != "N" && hemisphere != "E") return false;
+    if (hemisphere == "S" || hemisphere == "W")
+        out = -out;
+    else if (hemisphere != "N" && hemisphere != "E")
+        return false;
     return true;
 }
 
@@ -77,9 +79,11 @@ bool NmeaImporter::canRead(const QString&, const QByteArray& head) const {
     return sentence.match(QString::fromLatin1(head)).hasMatch();
 }
 
-Expected<ImportResult> NmeaImporter::read(const QString& file, const ImportOptions& options, const Progress& progress) const {
+Expected<ImportResult> NmeaImporter::read(const QString& file, const ImportOptions& options,
+                                          const Progress& progress) const {
     QFile f(file);
-    if (!f.open(QIODevice::ReadOnly)) return makeError(QStringLiteral("%1: cannot open: %2").arg(file, f.errorString()));
+    if (!f.open(QIODevice::ReadOnly))
+        return makeError(QStringLiteral("%1: cannot open: %2").arg(file, f.errorString()));
     progress.report(0.0, QStringLiteral("reading NMEA"));
     auto result = parse(f.readAll(), file, options);
     progress.report(1.0);
@@ -96,8 +100,7 @@ Expected<ImportResult> NmeaImporter::parse(const QByteArray& text, const QString
     qsizetype lineStart = 0;
     while (lineStart < text.size()) {
         qsizetype lineEnd = text.indexOf('\n', lineStart);
-        if (lineEnd < 0)
-            lineEnd = text.size();
+        if (lineEnd < 0) lineEnd = text.size();
         const QByteArray raw = text.mid(lineStart, lineEnd - lineStart);
         lineStart = lineEnd + 1;
         ++lineNo;
@@ -112,8 +115,11 @@ Expected<ImportResult> NmeaImporter::parse(const QByteArray& text, const QString
             const int stated = line.mid(star + 1, 2).toInt(&ok, 16);
             const int computed = checksum(body);
             if (!ok || stated != computed) {
-                result.warnings << QStringLiteral("%1:%2:%3: checksum mismatch (stated '%4', computed %5); sentence skipped")
-                                       .arg(file).arg(lineNo).arg(dollar + star + 2)
+                result.warnings << QStringLiteral(
+                                       "%1:%2:%3: checksum mismatch (stated '%4', computed %5); sentence skipped")
+                                       .arg(file)
+                                       .arg(lineNo)
+                                       .arg(dollar + star + 2)
                                        .arg(QString::fromLatin1(line.mid(star + 1, 2)))
                                        .arg(computed, 2, 16, QLatin1Char('0'));
                 continue;
@@ -125,14 +131,18 @@ Expected<ImportResult> NmeaImporter::parse(const QByteArray& text, const QString
         if (type != "RMC" && type != "GGA" && type != "VTG") continue;
         const auto field = [&](int i) { return i < f.size() ? f[i] : QByteArray(); };
         const auto column = [&](int i) {  // 1-based column of field i in the file's line
-            qsizetype at = dollar + 2;      // '$' is column dollar + 1, field 0 starts after it
+            qsizetype at = dollar + 2;    // '$' is column dollar + 1, field 0 starts after it
             for (int k = 0; k < i && k < f.size(); ++k) at += f[k].size() + 1;
             return at;
         };
         const auto fail = [&](const char* what, int i) {
             return makeError(QStringLiteral("%1:%2:%3: %4 sentence: cannot read %5 (field %6: '%7')")
-                                 .arg(file).arg(lineNo).arg(column(i)).arg(QString::fromLatin1(type), QLatin1String(what))
-                                 .arg(i).arg(QString::fromLatin1(field(i))));
+                                 .arg(file)
+                                 .arg(lineNo)
+                                 .arg(column(i))
+                                 .arg(QString::fromLatin1(type), QLatin1String(what))
+                                 .arg(i)
+                                 .arg(QString::fromLatin1(field(i))));
         };
         if (type == "VTG") {  // no time of its own: belongs to the latest epoch
             if (lastKey < 0) continue;
@@ -140,8 +150,10 @@ Expected<ImportResult> NmeaImporter::parse(const QByteArray& text, const QString
             bool ok = true;
             if (!field(1).isEmpty()) e.course = field(1).toDouble(&ok);
             if (!ok) return fail("course", 1);
-            if (!field(7).isEmpty()) e.speed = field(7).toDouble(&ok) / 3.6;
-            else if (!field(5).isEmpty()) e.speed = field(5).toDouble(&ok) * kKnot;
+            if (!field(7).isEmpty())
+                e.speed = field(7).toDouble(&ok) / 3.6;
+            else if (!field(5).isEmpty())
+                e.speed = field(5).toDouble(&ok) * kKnot;
             if (!ok) return fail("speed", 7);
             continue;
         }
@@ -217,9 +229,15 @@ Expected<ImportResult> NmeaImporter::parse(const QByteArray& text, const QString
         data.t.push_back(double(key - firstKey) * 1e-3);
         const double c = e.course * std::numbers::pi / 180.0;
         const bool vel = std::isfinite(e.speed) && std::isfinite(e.course);
-        const double row[kColumns] = {e.lat, e.lon, e.alt, vel ? e.speed * std::cos(c) : kNaN,
-                                      vel ? e.speed * std::sin(c) : kNaN, kNaN, e.quality >= 0 ? double(e.quality) : kNaN,
-                                      e.sats, e.hdop};
+        const double row[kColumns] = {e.lat,
+                                      e.lon,
+                                      e.alt,
+                                      vel ? e.speed * std::cos(c) : kNaN,
+                                      vel ? e.speed * std::sin(c) : kNaN,
+                                      kNaN,
+                                      e.quality >= 0 ? double(e.quality) : kNaN,
+                                      e.sats,
+                                      e.hdop};
         data.values.insert(data.values.end(), row, row + kColumns);
     }
     if (data.t.empty()) return makeError(QStringLiteral("%1: no RMC/GGA sentence with a valid fix").arg(file));
@@ -238,8 +256,9 @@ Expected<ImportResult> NmeaImporter::parse(const QByteArray& text, const QString
     } else {
         base.timeOfDayOnly = true;
         base.t0Ns = (firstKey % kDayMs) * 1000000LL;
-        result.warnings << QStringLiteral("%1: no RMC sentence with a date; the start is known as a time of day (%2 UTC) "
-                                          "only (give the date: --date YYYY-MM-DD)")
+        result.warnings << QStringLiteral(
+                               "%1: no RMC sentence with a date; the start is known as a time of day (%2 UTC) "
+                               "only (give the date: --date YYYY-MM-DD)")
                                .arg(file, formatTimeOfDay(base.t0Ns));
     }
     StreamInfo info;

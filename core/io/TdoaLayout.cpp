@@ -14,8 +14,7 @@ const LongLayout* longLayoutOf(const QString& kind) {
         {QStringLiteral("lps-range"), QStringLiteral("range"), QStringLiteral("m")},
     };
     for (const LongLayout& l : kLayouts)
-        if (l.kind == kind)
-            return &l;
+        if (l.kind == kind) return &l;
     return nullptr;
 }
 
@@ -24,9 +23,7 @@ QString LongLayout::beaconId(const QString& column) const {
     return column.startsWith(prefix) ? column.mid(prefix.size()) : QString();
 }
 
-QString tdoaBeaconId(const QString& column) {
-    return longLayoutOf(QStringLiteral("lps-tdoa"))->beaconId(column);
-}
+QString tdoaBeaconId(const QString& column) { return longLayoutOf(QStringLiteral("lps-tdoa"))->beaconId(column); }
 
 Expected<Stream> tdoaStreamFromSamples(const std::vector<TdoaSample>& samples, const QString& file) {
     return longStreamFromSamples(samples, file, *longLayoutOf(QStringLiteral("lps-tdoa")));

@@ -28,9 +28,9 @@ struct TdoaSample {
 
 // A per-beacon measurement stored wide: kind, the long-form value column and its unit.
 struct LongLayout {
-    QString kind;    // "lps-tdoa", "lps-range"
-    QString value;   // "dt", "range": the long column; wide columns are "<value>_<id>"
-    QString unit;    // "s", "m"
+    QString kind;   // "lps-tdoa", "lps-range"
+    QString value;  // "dt", "range": the long column; wide columns are "<value>_<id>"
+    QString unit;   // "s", "m"
     QString columnName(const QString& beaconId) const { return value + QLatin1Char('_') + beaconId; }
     QString beaconId(const QString& column) const;  // empty for other columns
 };

@@ -30,15 +30,16 @@ enum class TimeKind { Duration, Uptime, Unix, Iso, Clock, Excel };
 
 struct TimeFormat {
     TimeKind kind = TimeKind::Duration;
-    double scale = 1.0;   // Duration, Uptime, Unix: seconds per unit of the cells
-    QString name;         // canonical spelling: "ms", "unix_ns", "iso", "hh:mm:ss", ...
+    double scale = 1.0;  // Duration, Uptime, Unix: seconds per unit of the cells
+    QString name;        // canonical spelling: "ms", "unix_ns", "iso", "hh:mm:ss", ...
 
     // Cells hold text (not numbers).
     bool textual() const { return kind == TimeKind::Iso || kind == TimeKind::Clock; }
     // Cells are instants (t is measured from the first sample and t0_utc is known, or for clock
     // times without a date, t0 is a time of day).
-    bool absolute() const { return kind == TimeKind::Unix || kind == TimeKind::Iso || kind == TimeKind::Clock ||
-                                   kind == TimeKind::Excel; }
+    bool absolute() const {
+        return kind == TimeKind::Unix || kind == TimeKind::Iso || kind == TimeKind::Clock || kind == TimeKind::Excel;
+    }
 };
 
 // The format of spec (case-insensitive for the names; "" = seconds). The error lists the accepted ones.

@@ -19,7 +19,8 @@ void keepRows(StreamData& data, std::vector<long long>& lines, const std::vector
     for (size_t i = 0; i < rows.size(); ++i) {
         kept.t[i] = data.t[rows[i]];
         keptLines[i] = lines[rows[i]];
-        std::copy_n(data.values.begin() + ptrdiff_t(rows[i] * width), width, kept.values.begin() + ptrdiff_t(i * width));
+        std::copy_n(data.values.begin() + ptrdiff_t(rows[i] * width), width,
+                    kept.values.begin() + ptrdiff_t(i * width));
     }
     data = std::move(kept);
     lines = std::move(keptLines);
@@ -40,12 +41,13 @@ Status repairTimeOrder(StreamData& data, TimeOrigin& origin, const QString& mode
     };
     const size_t n = data.rows();
     if (origin.lines.size() != n)
-        return makeError(QStringLiteral("%1: internal error: %2 line numbers for %3 samples").arg(origin.file).arg(origin.lines.size()).arg(n));
+        return makeError(QStringLiteral("%1: internal error: %2 line numbers for %3 samples")
+                             .arg(origin.file)
+                             .arg(origin.lines.size())
+                             .arg(n));
     size_t first = 1;
-    while (first < n && inOrder(data.t[first - 1], data.t[first]))
-        ++first;
-    if (first >= n)
-        return {};
+    while (first < n && inOrder(data.t[first - 1], data.t[first])) ++first;
+    if (first >= n) return {};
 
     const QString at = where(origin.file, origin.lines[first], origin.column, origin.columnName);
     if (mode == QLatin1String("reject")) {
@@ -58,10 +60,12 @@ Status repairTimeOrder(StreamData& data, TimeOrigin& origin, const QString& mode
     rows.reserve(n);
     if (mode == QLatin1String("drop")) {
         for (size_t i = 0; i < n; ++i)
-            if (rows.empty() || inOrder(data.t[rows.back()], data.t[i]))
-                rows.push_back(i);
-        warnings << QStringLiteral("%1: dropped %2 samples whose time was not after the previous sample's (first on line %3)")
-                        .arg(origin.file).arg(n - rows.size()).arg(origin.lines[first]);
+            if (rows.empty() || inOrder(data.t[rows.back()], data.t[i])) rows.push_back(i);
+        warnings << QStringLiteral(
+                        "%1: dropped %2 samples whose time was not after the previous sample's (first on line %3)")
+                        .arg(origin.file)
+                        .arg(n - rows.size())
+                        .arg(origin.lines[first]);
         keepRows(data, origin.lines, rows);
         return {};
     }
@@ -69,8 +73,7 @@ Status repairTimeOrder(StreamData& data, TimeOrigin& origin, const QString& mode
         return makeError(QStringLiteral("unknown time repair '%1' (reject, sort or drop)").arg(mode));
 
     size_t outOfOrder = 0;
-    for (size_t i = 1; i < n; ++i)
-        outOfOrder += data.t[i] < data.t[i - 1];
+    for (size_t i = 1; i < n; ++i) outOfOrder += data.t[i] < data.t[i - 1];
     std::vector<size_t> order(n);
     std::iota(order.begin(), order.end(), size_t(0));
     std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return data.t[a] < data.t[b]; });
@@ -83,8 +86,7 @@ Status repairTimeOrder(StreamData& data, TimeOrigin& origin, const QString& mode
             continue;
         }
         bool duplicate = false;
-        for (size_t k = group; k < rows.size() && !duplicate; ++k)
-            duplicate = sameSample(data, rows[k], i);
+        for (size_t k = group; k < rows.size() && !duplicate; ++k) duplicate = sameSample(data, rows[k], i);
         if (duplicate) {
             ++duplicates;
         } else if (allowEqualTimes) {
@@ -92,12 +94,17 @@ Status repairTimeOrder(StreamData& data, TimeOrigin& origin, const QString& mode
         } else {
             return makeError(QStringLiteral("%1: lines %2 and %3 have the same time %4 but different values; "
                                             "time repair 'drop' keeps the first")
-                                 .arg(origin.file).arg(origin.lines[rows.back()]).arg(origin.lines[i]).arg(shortest(data.t[i])));
+                                 .arg(origin.file)
+                                 .arg(origin.lines[rows.back()])
+                                 .arg(origin.lines[i])
+                                 .arg(shortest(data.t[i])));
         }
     }
     if (outOfOrder > 0)
         warnings << QStringLiteral("%1: sorted by time (%2 samples were out of order, the first on line %3)")
-                        .arg(origin.file).arg(outOfOrder).arg(origin.lines[first]);
+                        .arg(origin.file)
+                        .arg(outOfOrder)
+                        .arg(origin.lines[first]);
     if (duplicates > 0)
         warnings << QStringLiteral("%1: dropped %2 exact duplicate samples").arg(origin.file).arg(duplicates);
     keepRows(data, origin.lines, rows);

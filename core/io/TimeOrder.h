@@ -13,9 +13,9 @@ namespace athlos {
 // Where the time stamps of parsed samples came from, for messages.
 struct TimeOrigin {
     QString file;
-    int column = 1;                 // 1-based column of t
+    int column = 1;  // 1-based column of t
     QString columnName = QStringLiteral("t");
-    std::vector<long long> lines;   // line of each sample
+    std::vector<long long> lines;  // line of each sample
 };
 
 // Makes times increasing according to mode (ImportOptions::timeRepair):

@@ -22,9 +22,9 @@
 namespace athlos {
 
 struct VendorColumn {
-    const char* source;   // header name without its unit, compared case-insensitively
+    const char* source;  // header name without its unit, compared case-insensitively
     const char* channel;
-    const char* unit;     // unit of the values ("" = the header's, or the kind's)
+    const char* unit;  // unit of the values ("" = the header's, or the kind's)
 };
 
 struct VendorProfile {
@@ -33,11 +33,10 @@ struct VendorProfile {
     const char* kind;
     std::vector<std::vector<const char*>> signatures;  // any complete set of header names identifies the format
     std::vector<const char*> timeColumns;              // the first present one is t
-    const char* timeFormat;                            // a TimeFormats name, or "" = ISO, clock or s from the first cell
+    const char* timeFormat;  // a TimeFormats name, or "" = ISO, clock or s from the first cell
     std::vector<VendorColumn> columns;
-    std::vector<const char*> athleteColumns;           // the first present one names the athlete (one stream each)
+    std::vector<const char*> athleteColumns;  // the first present one names the athlete (one stream each)
 };
-
 
 class VendorCsvImporter final : public Importer {
 public:

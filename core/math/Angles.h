@@ -20,8 +20,10 @@ double wrapAngleFar(double angle);  // the rare path of wrapAngle(), out of line
 }
 inline double wrapAngle(double angle) {
     constexpr double pi = std::numbers::pi;
-    if (angle > pi) angle -= 2.0 * pi;
-    else if (angle <= -pi) angle += 2.0 * pi;
+    if (angle > pi)
+        angle -= 2.0 * pi;
+    else if (angle <= -pi)
+        angle += 2.0 * pi;
     return angle > pi || angle <= -pi ? detail::wrapAngleFar(angle) : angle;
 }
 

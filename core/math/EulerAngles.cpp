@@ -66,7 +66,8 @@ Expected<EulerSequence> EulerSequence::parse(const QString& name) {
     const auto fail = [&] {
         return makeError(QStringLiteral("invalid Euler sequence '%1': use three axis letters with no axis twice in a "
                                         "row, upper case for intrinsic (ZYX, XYZ, ZXZ, ...) or lower case for "
-                                        "extrinsic (zyx, xyz, zxz, ...)").arg(name));
+                                        "extrinsic (zyx, xyz, zxz, ...)")
+                             .arg(name));
     };
     if (name.size() != 3) return fail();
     EulerSequence s;

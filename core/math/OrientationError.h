@@ -20,10 +20,10 @@ struct OrientationErrors {
 OrientationErrors orientationError(const Quat& estimate, const Quat& reference);
 
 struct ErrorRms {
-    double total = 0.0;        // deg, RMS over the counted samples
+    double total = 0.0;  // deg, RMS over the counted samples
     double heading = 0.0;
     double inclination = 0.0;
-    long long count = 0;       // samples counted (mask true, both quaternions finite)
+    long long count = 0;  // samples counted (mask true, both quaternions finite)
 };
 
 // RMS in degrees over samples where mask is true (empty mask = all); samples with a non-finite

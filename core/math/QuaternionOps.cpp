@@ -23,9 +23,7 @@ Vec3 quatLog(const Quat& q) {
 Quat quatFromRotationVector(const Vec3& r) { return quatExp(0.5 * r); }
 Vec3 rotationVectorFromQuat(const Quat& q) { return 2.0 * quatLog(q); }
 
-Quat quatFromAxisAngle(const Vec3& axis, double angle) {
-    return quatFromRotationVector(axis.normalized() * angle);
-}
+Quat quatFromAxisAngle(const Vec3& axis, double angle) { return quatFromRotationVector(axis.normalized() * angle); }
 
 Quat integrateBodyRate(const Quat& q, const Vec3& omega, double dt) {
     return (q * quatExp(0.5 * dt * omega)).normalized();

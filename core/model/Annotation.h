@@ -10,7 +10,7 @@ struct Annotation {
     double tStart = 0.0;  // s
     double tEnd = 0.0;    // s
     QString annotator;
-    double confidence = 1.0;  // [0, 1]
+    double confidence = 1.0;                    // [0, 1]
     QString source = QStringLiteral("manual");  // "manual" or a processor id
     bool operator==(const Annotation&) const = default;
 };

@@ -7,28 +7,33 @@
 namespace athlos {
 
 namespace {
-const char* kindName(AnnotationEdit::Kind kind)
-{
+const char* kindName(AnnotationEdit::Kind kind) {
     switch (kind) {
-    case AnnotationEdit::Kind::Insert: return "insert";
-    case AnnotationEdit::Kind::Remove: return "remove";
-    case AnnotationEdit::Kind::Replace: return "replace";
-    case AnnotationEdit::Kind::AddClass: return "add-class";
-    case AnnotationEdit::Kind::ReplaceAll: return "replace-all";
+        case AnnotationEdit::Kind::Insert:
+            return "insert";
+        case AnnotationEdit::Kind::Remove:
+            return "remove";
+        case AnnotationEdit::Kind::Replace:
+            return "replace";
+        case AnnotationEdit::Kind::AddClass:
+            return "add-class";
+        case AnnotationEdit::Kind::ReplaceAll:
+            return "replace-all";
     }
     return "";
 }
 }  // namespace
 
-QJsonObject annotationToJson(const Annotation& a)
-{
-    return {{QStringLiteral("label"), a.label},         {QStringLiteral("t_start"), a.tStart},
-            {QStringLiteral("t_end"), a.tEnd},           {QStringLiteral("annotator"), a.annotator},
-            {QStringLiteral("confidence"), a.confidence}, {QStringLiteral("source"), a.source}};
+QJsonObject annotationToJson(const Annotation& a) {
+    return {{QStringLiteral("label"), a.label},
+            {QStringLiteral("t_start"), a.tStart},
+            {QStringLiteral("t_end"), a.tEnd},
+            {QStringLiteral("annotator"), a.annotator},
+            {QStringLiteral("confidence"), a.confidence},
+            {QStringLiteral("source"), a.source}};
 }
 
-Annotation annotationFromJson(const QJsonObject& json)
-{
+Annotation annotationFromJson(const QJsonObject& json) {
     Annotation a;
     a.label = json.value(QStringLiteral("label")).toString();
     a.tStart = json.value(QStringLiteral("t_start")).toDouble();
@@ -39,8 +44,7 @@ Annotation annotationFromJson(const QJsonObject& json)
     return a;
 }
 
-AnnotationEdit AnnotationEdit::insert(QString recording, int index, Annotation annotation)
-{
+AnnotationEdit AnnotationEdit::insert(QString recording, int index, Annotation annotation) {
     AnnotationEdit e;
     e.kind = Kind::Insert;
     e.recording = std::move(recording);
@@ -49,8 +53,7 @@ AnnotationEdit AnnotationEdit::insert(QString recording, int index, Annotation a
     return e;
 }
 
-AnnotationEdit AnnotationEdit::remove(QString recording, int index, Annotation annotation)
-{
+AnnotationEdit AnnotationEdit::remove(QString recording, int index, Annotation annotation) {
     AnnotationEdit e;
     e.kind = Kind::Remove;
     e.recording = std::move(recording);
@@ -59,8 +62,7 @@ AnnotationEdit AnnotationEdit::remove(QString recording, int index, Annotation a
     return e;
 }
 
-AnnotationEdit AnnotationEdit::replace(QString recording, int index, Annotation before, Annotation after)
-{
+AnnotationEdit AnnotationEdit::replace(QString recording, int index, Annotation before, Annotation after) {
     AnnotationEdit e;
     e.kind = Kind::Replace;
     e.recording = std::move(recording);
@@ -70,16 +72,14 @@ AnnotationEdit AnnotationEdit::replace(QString recording, int index, Annotation 
     return e;
 }
 
-AnnotationEdit AnnotationEdit::addClass(QString name)
-{
+AnnotationEdit AnnotationEdit::addClass(QString name) {
     AnnotationEdit e;
     e.kind = Kind::AddClass;
     e.className = std::move(name);
     return e;
 }
 
-AnnotationEdit AnnotationEdit::replaceAll(QString recording, Annotations before, Annotations after)
-{
+AnnotationEdit AnnotationEdit::replaceAll(QString recording, Annotations before, Annotations after) {
     AnnotationEdit e;
     e.kind = Kind::ReplaceAll;
     e.recording = std::move(recording);
@@ -88,34 +88,32 @@ AnnotationEdit AnnotationEdit::replaceAll(QString recording, Annotations before,
     return e;
 }
 
-AnnotationEdit AnnotationEdit::inverse() const
-{
+AnnotationEdit AnnotationEdit::inverse() const {
     AnnotationEdit e = *this;
     switch (kind) {
-    case Kind::Insert:
-        e.kind = Kind::Remove;
-        e.before = after;
-        e.after = {};
-        break;
-    case Kind::Remove:
-        e.kind = Kind::Insert;
-        e.after = before;
-        e.before = {};
-        break;
-    case Kind::Replace:
-        std::swap(e.before, e.after);
-        break;
-    case Kind::ReplaceAll:
-        std::swap(e.beforeAll, e.afterAll);
-        break;
-    case Kind::AddClass:
-        break;
+        case Kind::Insert:
+            e.kind = Kind::Remove;
+            e.before = after;
+            e.after = {};
+            break;
+        case Kind::Remove:
+            e.kind = Kind::Insert;
+            e.after = before;
+            e.before = {};
+            break;
+        case Kind::Replace:
+            std::swap(e.before, e.after);
+            break;
+        case Kind::ReplaceAll:
+            std::swap(e.beforeAll, e.afterAll);
+            break;
+        case Kind::AddClass:
+            break;
     }
     return e;
 }
 
-Status AnnotationEdit::apply(Project& project) const
-{
+Status AnnotationEdit::apply(Project& project) const {
     if (kind == Kind::AddClass) {
         if (className.isEmpty()) return makeError(QStringLiteral("annotation class without a name"));
         if (!project.annotationClasses().contains(className)) project.annotationClasses() << className;
@@ -127,31 +125,37 @@ Status AnnotationEdit::apply(Project& project) const
     Annotations& list = rec->annotations;
     const int size = int(list.size());
     switch (kind) {
-    case Kind::Insert:
-        if (index < 0 || index > size)
-            return makeError(QStringLiteral("annotation insert at %1 outside 0..%2 in '%3'").arg(index).arg(size).arg(recording));
-        list.insert(list.begin() + index, after);
-        break;
-    case Kind::Remove:
-    case Kind::Replace:
-        if (index < 0 || index >= size || !(list[std::size_t(index)] == before))
-            return makeError(QStringLiteral("annotation %1 of '%2' does not match the edit").arg(index).arg(recording));
-        if (kind == Kind::Remove) list.erase(list.begin() + index);
-        else list[std::size_t(index)] = after;
-        break;
-    case Kind::ReplaceAll:
-        if (list != beforeAll) return makeError(QStringLiteral("the annotations of '%1' do not match the edit").arg(recording));
-        list = afterAll;
-        break;
-    case Kind::AddClass:
-        break;
+        case Kind::Insert:
+            if (index < 0 || index > size)
+                return makeError(QStringLiteral("annotation insert at %1 outside 0..%2 in '%3'")
+                                     .arg(index)
+                                     .arg(size)
+                                     .arg(recording));
+            list.insert(list.begin() + index, after);
+            break;
+        case Kind::Remove:
+        case Kind::Replace:
+            if (index < 0 || index >= size || !(list[std::size_t(index)] == before))
+                return makeError(
+                    QStringLiteral("annotation %1 of '%2' does not match the edit").arg(index).arg(recording));
+            if (kind == Kind::Remove)
+                list.erase(list.begin() + index);
+            else
+                list[std::size_t(index)] = after;
+            break;
+        case Kind::ReplaceAll:
+            if (list != beforeAll)
+                return makeError(QStringLiteral("the annotations of '%1' do not match the edit").arg(recording));
+            list = afterAll;
+            break;
+        case Kind::AddClass:
+            break;
     }
     project.setModified(true);
     return {};
 }
 
-QJsonObject AnnotationEdit::toJson() const
-{
+QJsonObject AnnotationEdit::toJson() const {
     QJsonObject json{{QStringLiteral("op"), QString::fromLatin1(kindName(kind))}};
     if (kind == Kind::AddClass) {
         json[QStringLiteral("class")] = className;
@@ -174,26 +178,35 @@ QJsonObject AnnotationEdit::toJson() const
     return json;
 }
 
-Expected<AnnotationEdit> AnnotationEdit::fromJson(const QJsonObject& json)
-{
+Expected<AnnotationEdit> AnnotationEdit::fromJson(const QJsonObject& json) {
     const QString op = json.value(QStringLiteral("op")).toString();
     AnnotationEdit e;
-    if (op == QLatin1String("insert")) e.kind = Kind::Insert;
-    else if (op == QLatin1String("remove")) e.kind = Kind::Remove;
-    else if (op == QLatin1String("replace")) e.kind = Kind::Replace;
-    else if (op == QLatin1String("add-class")) e.kind = Kind::AddClass;
-    else if (op == QLatin1String("replace-all")) e.kind = Kind::ReplaceAll;
-    else return makeError(QStringLiteral("unknown annotation edit '%1'").arg(op));
+    if (op == QLatin1String("insert"))
+        e.kind = Kind::Insert;
+    else if (op == QLatin1String("remove"))
+        e.kind = Kind::Remove;
+    else if (op == QLatin1String("replace"))
+        e.kind = Kind::Replace;
+    else if (op == QLatin1String("add-class"))
+        e.kind = Kind::AddClass;
+    else if (op == QLatin1String("replace-all"))
+        e.kind = Kind::ReplaceAll;
+    else
+        return makeError(QStringLiteral("unknown annotation edit '%1'").arg(op));
     e.className = json.value(QStringLiteral("class")).toString();
     e.recording = json.value(QStringLiteral("rec")).toString();
     e.index = json.value(QStringLiteral("index")).toInt(-1);
     if (e.kind == Kind::ReplaceAll) {
-        for (const auto& value : json.value(QStringLiteral("before")).toArray()) e.beforeAll.push_back(annotationFromJson(value.toObject()));
-        for (const auto& value : json.value(QStringLiteral("after")).toArray()) e.afterAll.push_back(annotationFromJson(value.toObject()));
+        for (const auto& value : json.value(QStringLiteral("before")).toArray())
+            e.beforeAll.push_back(annotationFromJson(value.toObject()));
+        for (const auto& value : json.value(QStringLiteral("after")).toArray())
+            e.afterAll.push_back(annotationFromJson(value.toObject()));
         return e;
     }
-    if (json.contains(QStringLiteral("before"))) e.before = annotationFromJson(json.value(QStringLiteral("before")).toObject());
-    if (json.contains(QStringLiteral("after"))) e.after = annotationFromJson(json.value(QStringLiteral("after")).toObject());
+    if (json.contains(QStringLiteral("before")))
+        e.before = annotationFromJson(json.value(QStringLiteral("before")).toObject());
+    if (json.contains(QStringLiteral("after")))
+        e.after = annotationFromJson(json.value(QStringLiteral("after")).toObject());
     return e;
 }
 

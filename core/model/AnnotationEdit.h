@@ -18,10 +18,10 @@ struct AnnotationEdit {
 
     Kind kind = Kind::Insert;
     QString recording;
-    int index = -1;       // position in Recording::annotations
-    Annotation before;    // Remove, Replace
-    Annotation after;     // Insert, Replace
-    QString className;    // AddClass
+    int index = -1;                   // position in Recording::annotations
+    Annotation before;                // Remove, Replace
+    Annotation after;                 // Insert, Replace
+    QString className;                // AddClass
     Annotations beforeAll, afterAll;  // ReplaceAll
 
     static AnnotationEdit insert(QString recording, int index, Annotation annotation);

@@ -14,8 +14,7 @@
 
 namespace athlos {
 
-bool AnnotationJournal::hasPendingEdits(const QString& projectPath)
-{
+bool AnnotationJournal::hasPendingEdits(const QString& projectPath) {
     const QFileInfo journal(pathFor(projectPath));
     if (!journal.exists() || journal.size() == 0) return false;
     const QFileInfo project(projectPath);
@@ -28,8 +27,7 @@ const QLatin1String kHeaderKey("journal");
 
 }  // namespace
 
-QByteArray AnnotationJournal::stateDigest(const Project& project)
-{
+QByteArray AnnotationJournal::stateDigest(const Project& project) {
     // Canonical: recordings in name order (std::map), annotations in list order, compact JSON.
     QCryptographicHash hash(QCryptographicHash::Sha256);
     hash.addData(project.annotationClasses().join(QLatin1Char('\n')).toUtf8());
@@ -42,8 +40,7 @@ QByteArray AnnotationJournal::stateDigest(const Project& project)
     return hash.result().toHex();
 }
 
-bool AnnotationJournal::belongsTo(const Project& project)
-{
+bool AnnotationJournal::belongsTo(const Project& project) {
     QFile file(pathFor(project.path()));
     if (!file.open(QIODevice::ReadOnly)) return true;
     const QJsonDocument first = QJsonDocument::fromJson(file.readLine());
@@ -51,10 +48,10 @@ bool AnnotationJournal::belongsTo(const Project& project)
     return first.object().value(QStringLiteral("base")).toString().toLatin1() == stateDigest(project);
 }
 
-Expected<std::vector<AnnotationEdit>> AnnotationJournal::read(const QString& journalPath)
-{
+Expected<std::vector<AnnotationEdit>> AnnotationJournal::read(const QString& journalPath) {
     QFile file(journalPath);
-    if (!file.open(QIODevice::ReadOnly)) return makeError(QStringLiteral("%1: %2").arg(journalPath, file.errorString()));
+    if (!file.open(QIODevice::ReadOnly))
+        return makeError(QStringLiteral("%1: %2").arg(journalPath, file.errorString()));
     std::vector<AnnotationEdit> edits;
     int lineNumber = 0;
     while (!file.atEnd()) {
@@ -76,40 +73,36 @@ Expected<std::vector<AnnotationEdit>> AnnotationJournal::read(const QString& jou
     return edits;
 }
 
-Expected<int> AnnotationJournal::replay(Project& project)
-{
+Expected<int> AnnotationJournal::replay(Project& project) {
     const QString path = pathFor(project.path());
     auto edits = read(path);
     if (!edits) return edits.error();
     int applied = 0;
     for (const AnnotationEdit& edit : *edits) {
         const Status status = edit.apply(project);
-        if (!status) return makeError(QStringLiteral("%1: edit %2: %3").arg(path).arg(applied + 1).arg(status.message()));
+        if (!status)
+            return makeError(QStringLiteral("%1: edit %2: %3").arg(path).arg(applied + 1).arg(status.message()));
         ++applied;
     }
     return applied;
 }
 
-AnnotationJournal::AnnotationJournal(QString projectPath)
-{
+AnnotationJournal::AnnotationJournal(QString projectPath) {
     if (!projectPath.isEmpty()) setProjectPath(projectPath);
 }
 
 AnnotationJournal::~AnnotationJournal() = default;
 
-void AnnotationJournal::setProjectPath(const QString& projectPath)
-{
+void AnnotationJournal::setProjectPath(const QString& projectPath) {
     file_.close();
     file_.setFileName(pathFor(projectPath));
 }
 
-Status AnnotationJournal::append(const AnnotationEdit& edit, const Project* base)
-{
+Status AnnotationJournal::append(const AnnotationEdit& edit, const Project* base) {
     return append(edit, base ? stateDigest(*base) : QByteArray());
 }
 
-Status AnnotationJournal::append(const AnnotationEdit& edit, const QByteArray& baseDigest)
-{
+Status AnnotationJournal::append(const AnnotationEdit& edit, const QByteArray& baseDigest) {
     if (file_.fileName().isEmpty()) return makeError(QStringLiteral("the annotation journal has no file"));
     if (!file_.isOpen() && !file_.open(QIODevice::WriteOnly | QIODevice::Append))
         return makeError(QStringLiteral("%1: %2").arg(file_.fileName(), file_.errorString()));
@@ -124,14 +117,12 @@ Status AnnotationJournal::append(const AnnotationEdit& edit, const QByteArray& b
         return makeError(QStringLiteral("%1: %2").arg(file_.fileName(), file_.errorString()));
 #ifdef Q_OS_UNIX
     // flush() only reaches the OS; a power cut needs the bytes on the disk. One line is tiny.
-    if (::fsync(file_.handle()) != 0)
-        return makeError(QStringLiteral("%1: cannot sync to disk").arg(file_.fileName()));
+    if (::fsync(file_.handle()) != 0) return makeError(QStringLiteral("%1: cannot sync to disk").arg(file_.fileName()));
 #endif
     return {};
 }
 
-void AnnotationJournal::discard()
-{
+void AnnotationJournal::discard() {
     file_.close();
     if (!file_.fileName().isEmpty()) QFile::remove(file_.fileName());
 }

@@ -74,7 +74,8 @@ Expected<std::unique_ptr<Project>> Project::openForChange(const QString& path) {
     if (!project) {
         // What the lock did about stale saves stays worth knowing even when the project is refused.
         if (!(*lock)->notes().isEmpty())
-            return makeError(project.message() + QStringLiteral(" (") + (*lock)->notes().join(QStringLiteral("; ")) + QLatin1Char(')'));
+            return makeError(project.message() + QStringLiteral(" (") + (*lock)->notes().join(QStringLiteral("; ")) +
+                             QLatin1Char(')'));
         return project.error();
     }
     (*project)->notes_ = (*lock)->notes();
@@ -129,7 +130,8 @@ Status Project::saveAs(const QString& path, const Progress& progress) {
         written = makeError(QStringLiteral("cannot save '%1': flushing '%2' failed: %3")
                                 .arg(path, tmp, QString::fromLocal8Bit(std::strerror(errno))));
     if (written && ::rename(QFile::encodeName(tmp).constData(), QFile::encodeName(absolute).constData()) != 0)
-        written = makeError(QStringLiteral("cannot save '%1': %2").arg(path, QString::fromLocal8Bit(std::strerror(errno))));
+        written =
+            makeError(QStringLiteral("cannot save '%1': %2").arg(path, QString::fromLocal8Bit(std::strerror(errno))));
     if (!written) {
         QFile::remove(tmp);
         meta_ = previous;
@@ -137,7 +139,7 @@ Status Project::saveAs(const QString& path, const Progress& progress) {
     }
     syncPath(dir.absolutePath());
     path_ = given.isSymLink() ? given.absoluteFilePath() : absolute;
-    meta_.formatVersion = kFormatVersion;  // a version-1 project is upgraded by its first save
+    meta_.formatVersion = kFormatVersion;                // a version-1 project is upgraded by its first save
     if (lock_ && saveLock) lock_ = std::move(saveLock);  // Save As: the held lock moves to the new file
     ProjectFile::rebind(*this, absolute);
     modified_ = false;
@@ -183,9 +185,7 @@ const Stream* Project::stream(const QString& path) const {
     return it == rec->streams.end() ? nullptr : &it->second;
 }
 
-Stream* Project::stream(const QString& path) {
-    return const_cast<Stream*>(std::as_const(*this).stream(path));
-}
+Stream* Project::stream(const QString& path) { return const_cast<Stream*>(std::as_const(*this).stream(path)); }
 
 const Table* Project::table(const QString& path) const {
     const auto p = ItemPath::parse(path);

@@ -22,11 +22,11 @@ class ProjectLock;
 
 struct ProjectMeta {
     int formatVersion = 1;
-    QString appVersion;       // app that last wrote the file
-    QString created;          // ISO 8601 UTC
+    QString appVersion;  // app that last wrote the file
+    QString created;     // ISO 8601 UTC
     QString modified;
     QString sport;
-    QJsonObject extra;        // free metadata
+    QJsonObject extra;  // free metadata
 };
 
 // "rec/stream" split into its parts; a name without '/' has an empty item.

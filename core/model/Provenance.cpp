@@ -12,7 +12,8 @@ QJsonObject Provenance::toJson() const {
     json[QStringLiteral("parameters")] = parameters;
     QJsonArray in;
     for (const auto& input : inputs)
-        in.append(QJsonObject{{QStringLiteral("name"), input.name}, {QStringLiteral("hash"), QString::fromLatin1(input.hash)}});
+        in.append(QJsonObject{{QStringLiteral("name"), input.name},
+                              {QStringLiteral("hash"), QString::fromLatin1(input.hash)}});
     json[QStringLiteral("inputs")] = in;
     if (!sourceFile.isEmpty()) json[QStringLiteral("source_file")] = sourceFile;
     json[QStringLiteral("app_version")] = appVersion;
@@ -27,7 +28,8 @@ Provenance Provenance::fromJson(const QJsonObject& json) {
     p.parameters = json.value(QStringLiteral("parameters")).toObject();
     for (const auto& value : json.value(QStringLiteral("inputs")).toArray()) {
         const auto o = value.toObject();
-        p.inputs.push_back({o.value(QStringLiteral("name")).toString(), o.value(QStringLiteral("hash")).toString().toLatin1()});
+        p.inputs.push_back(
+            {o.value(QStringLiteral("name")).toString(), o.value(QStringLiteral("hash")).toString().toLatin1()});
     }
     p.sourceFile = json.value(QStringLiteral("source_file")).toString();
     p.appVersion = json.value(QStringLiteral("app_version")).toString();

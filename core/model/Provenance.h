@@ -9,18 +9,18 @@
 namespace athlos {
 
 struct ProvenanceInput {
-    QString name;      // "rec/stream"
-    QByteArray hash;   // content hash at run time
+    QString name;     // "rec/stream"
+    QByteArray hash;  // content hash at run time
 };
 
 struct Provenance {
-    QString processorId;       // processor id, or "import:<format>"
+    QString processorId;  // processor id, or "import:<format>"
     QString processorVersion;
-    QJsonObject parameters;    // validated parameters, including defaults
+    QJsonObject parameters;  // validated parameters, including defaults
     std::vector<ProvenanceInput> inputs;
-    QString sourceFile;        // for imports
+    QString sourceFile;  // for imports
     QString appVersion;
-    QDateTime time;            // UTC
+    QDateTime time;  // UTC
 
     bool isEmpty() const { return processorId.isEmpty(); }
     QJsonObject toJson() const;

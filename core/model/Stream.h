@@ -16,14 +16,14 @@
 namespace athlos {
 
 struct StreamInfo {
-    QString name;           // stream name inside its recording
-    QString kind;           // "imu", "lps-position", "lps-tdoa", "gnss", "orientation", "reference", ...
-    QString frame;          // "sensor", "ENU", "lps", "track", ...
+    QString name;   // stream name inside its recording
+    QString kind;   // "imu", "lps-position", "lps-tdoa", "gnss", "orientation", "reference", ...
+    QString frame;  // "sensor", "ENU", "lps", "track", ...
     Columns columns;
-    QJsonObject attributes; // free metadata, e.g. {"sampling_rate": 285.71, "device": "..."}
+    QJsonObject attributes;  // free metadata, e.g. {"sampling_rate": 285.71, "device": "..."}
     Provenance provenance;
     long long rows = 0;
-    double tBegin = 0.0;    // first and last time stamp (s), known without reading samples
+    double tBegin = 0.0;  // first and last time stamp (s), known without reading samples
     double tEnd = 0.0;
     QByteArray contentHash;
 

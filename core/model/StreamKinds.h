@@ -11,15 +11,15 @@
 namespace athlos {
 
 struct KindColumnRule {
-    QString prefix;   // column name or prefix, e.g. "acc_" or "x"
-    QString unit;     // SI unit, e.g. "m/s^2"
+    QString prefix;  // column name or prefix, e.g. "acc_" or "x"
+    QString unit;    // SI unit, e.g. "m/s^2"
 };
 
 struct StreamKind {
-    QString kind;               // "imu"
-    QString defaultName;        // "imu" → stored as <rec>/imu
-    QString defaultFrame;       // "sensor"
-    bool table = false;         // beacons: a table, not a time series
+    QString kind;          // "imu"
+    QString defaultName;   // "imu" → stored as <rec>/imu
+    QString defaultFrame;  // "sensor"
+    bool table = false;    // beacons: a table, not a time series
     std::vector<KindColumnRule> rules;
     QStringList requiredColumns;  // besides t
     QString help;

@@ -12,7 +12,7 @@ namespace athlos {
 
 struct TableColumn {
     QString name;
-    QString unit;                 // empty for text columns
+    QString unit;  // empty for text columns
     bool isText = false;
     std::vector<double> numbers;  // when !isText
     QStringList texts;            // when isText
@@ -22,7 +22,7 @@ struct TableColumn {
 
 struct Table {
     QString name;
-    QString kind;                 // "beacons", "calibration", "report", ...
+    QString kind;  // "beacons", "calibration", "report", ...
     QJsonObject attributes;
     Provenance provenance;
     std::vector<TableColumn> columns;

@@ -16,7 +16,8 @@ Stream derivedStream(const Stream& input, StreamData data) {
     return Stream(std::move(info), std::move(data));
 }
 
-Stream outputStream(const QString& kind, const QString& frame, Columns columns, StreamData data, QJsonObject attributes) {
+Stream outputStream(const QString& kind, const QString& frame, Columns columns, StreamData data,
+                    QJsonObject attributes) {
     StreamInfo info;
     info.kind = kind;
     info.frame = frame;

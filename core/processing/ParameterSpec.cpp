@@ -58,17 +58,23 @@ ParameterSpec ParameterSpec::text(QString name, QString def, QString help) {
 
 QString ParameterSpec::typeName() const {
     switch (type) {
-    case Type::Double: return QStringLiteral("number");
-    case Type::Int: return QStringLiteral("integer");
-    case Type::Bool: return QStringLiteral("boolean");
-    case Type::String: return QStringLiteral("string");
-    case Type::Choice: return QStringLiteral("choice");
+        case Type::Double:
+            return QStringLiteral("number");
+        case Type::Int:
+            return QStringLiteral("integer");
+        case Type::Bool:
+            return QStringLiteral("boolean");
+        case Type::String:
+            return QStringLiteral("string");
+        case Type::Choice:
+            return QStringLiteral("choice");
     }
     return {};
 }
 
 QJsonObject ParameterSpec::toJson() const {
-    QJsonObject json{{QStringLiteral("name"), name}, {QStringLiteral("type"), typeName()}, {QStringLiteral("help"), help}};
+    QJsonObject json{
+        {QStringLiteral("name"), name}, {QStringLiteral("type"), typeName()}, {QStringLiteral("help"), help}};
     if (defaultValue.isValid()) json[QStringLiteral("default")] = QJsonValue::fromVariant(defaultValue);
     json[QStringLiteral("required")] = !defaultValue.isValid() && !optional;
     if (type == Type::Double || type == Type::Int) {
@@ -92,39 +98,37 @@ QString rangeText(const ParameterSpec& s) {
 
 Expected<QVariant> ParameterSpec::convert(const QVariant& value) const {
     const QString text = value.toString().trimmed();
-    auto bad = [&](const QString& why) {
-        return makeError(QStringLiteral("parameter '%1': %2").arg(name, why));
-    };
+    auto bad = [&](const QString& why) { return makeError(QStringLiteral("parameter '%1': %2").arg(name, why)); };
     switch (type) {
-    case Type::Double: {
-        bool ok = false;
-        const double v = value.typeId() == QMetaType::QString ? text.toDouble(&ok) : value.toDouble(&ok);
-        if (!ok || !std::isfinite(v)) return bad(QStringLiteral("'%1' is not a number").arg(text));
-        if (v < minimum || v > maximum)
-            return bad(QStringLiteral("%1 is outside the allowed range %2").arg(text, rangeText(*this)));
-        return QVariant(v);
-    }
-    case Type::Int: {
-        bool ok = false;
-        const qlonglong v = value.typeId() == QMetaType::QString ? text.toLongLong(&ok) : value.toLongLong(&ok);
-        if (!ok) return bad(QStringLiteral("'%1' is not an integer").arg(text));
-        if (double(v) < minimum || double(v) > maximum)
-            return bad(QStringLiteral("%1 is outside the allowed range %2").arg(text, rangeText(*this)));
-        return QVariant(int(v));
-    }
-    case Type::Bool: {
-        if (value.typeId() == QMetaType::Bool) return value;
-        const QString t = text.toLower();
-        if (t == u"true" || t == u"1" || t == u"yes" || t == u"on") return QVariant(true);
-        if (t == u"false" || t == u"0" || t == u"no" || t == u"off") return QVariant(false);
-        return bad(QStringLiteral("'%1' is not a boolean (use true or false)").arg(text));
-    }
-    case Type::Choice:
-        if (!choices.contains(text))
-            return bad(QStringLiteral("'%1' is not one of %2").arg(text, choices.join(QStringLiteral("|"))));
-        return QVariant(text);
-    case Type::String:
-        return QVariant(value.toString());
+        case Type::Double: {
+            bool ok = false;
+            const double v = value.typeId() == QMetaType::QString ? text.toDouble(&ok) : value.toDouble(&ok);
+            if (!ok || !std::isfinite(v)) return bad(QStringLiteral("'%1' is not a number").arg(text));
+            if (v < minimum || v > maximum)
+                return bad(QStringLiteral("%1 is outside the allowed range %2").arg(text, rangeText(*this)));
+            return QVariant(v);
+        }
+        case Type::Int: {
+            bool ok = false;
+            const qlonglong v = value.typeId() == QMetaType::QString ? text.toLongLong(&ok) : value.toLongLong(&ok);
+            if (!ok) return bad(QStringLiteral("'%1' is not an integer").arg(text));
+            if (double(v) < minimum || double(v) > maximum)
+                return bad(QStringLiteral("%1 is outside the allowed range %2").arg(text, rangeText(*this)));
+            return QVariant(int(v));
+        }
+        case Type::Bool: {
+            if (value.typeId() == QMetaType::Bool) return value;
+            const QString t = text.toLower();
+            if (t == u"true" || t == u"1" || t == u"yes" || t == u"on") return QVariant(true);
+            if (t == u"false" || t == u"0" || t == u"no" || t == u"off") return QVariant(false);
+            return bad(QStringLiteral("'%1' is not a boolean (use true or false)").arg(text));
+        }
+        case Type::Choice:
+            if (!choices.contains(text))
+                return bad(QStringLiteral("'%1' is not one of %2").arg(text, choices.join(QStringLiteral("|"))));
+            return QVariant(text);
+        case Type::String:
+            return QVariant(value.toString());
     }
     return bad(QStringLiteral("unsupported type"));
 }
@@ -132,12 +136,14 @@ Expected<QVariant> ParameterSpec::convert(const QVariant& value) const {
 Expected<QVariantMap> validateParameters(const ParameterSpecs& specs, const QVariantMap& given) {
     QVariantMap result;
     for (auto it = given.begin(); it != given.end(); ++it) {
-        const auto spec = std::find_if(specs.begin(), specs.end(), [&](const ParameterSpec& s) { return s.name == it.key(); });
+        const auto spec =
+            std::find_if(specs.begin(), specs.end(), [&](const ParameterSpec& s) { return s.name == it.key(); });
         if (spec == specs.end()) {
             QStringList names;
             for (const auto& s : specs) names << s.name;
-            return makeError(QStringLiteral("unknown parameter '%1' (known: %2)")
-                                 .arg(it.key(), names.isEmpty() ? QStringLiteral("none") : names.join(QStringLiteral(", "))));
+            return makeError(
+                QStringLiteral("unknown parameter '%1' (known: %2)")
+                    .arg(it.key(), names.isEmpty() ? QStringLiteral("none") : names.join(QStringLiteral(", "))));
         }
         auto converted = spec->convert(it.value());
         if (!converted) return converted.error();

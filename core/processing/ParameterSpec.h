@@ -17,13 +17,13 @@ struct ParameterSpec {
 
     QString name;
     Type type = Type::Double;
-    QVariant defaultValue;   // invalid QVariant = required
+    QVariant defaultValue;                                      // invalid QVariant = required
     double minimum = -std::numeric_limits<double>::infinity();  // inclusive, numbers only
     double maximum = std::numeric_limits<double>::infinity();
-    QStringList choices;     // Choice only
-    QString unit;            // SI unit of the value ("Hz", "s", "m", ...)
+    QStringList choices;  // Choice only
+    QString unit;         // SI unit of the value ("Hz", "s", "m", ...)
     QString help;
-    bool optional = false;   // may be absent (no default), e.g. output_rate
+    bool optional = false;  // may be absent (no default), e.g. output_rate
 
     // def = NaN makes the parameter required (no default).
     static ParameterSpec number(QString name, double def, double min, double max, QString unit, QString help);

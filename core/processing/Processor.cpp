@@ -9,8 +9,7 @@ Error InputSamples::error(const QString& message) const {
 }
 
 Expected<double> InputSamples::samplingInterval() const {
-    if (data->rows() < 2)
-        return error(QStringLiteral("%1 sample(s); at least 2 are needed").arg(data->rows()));
+    if (data->rows() < 2) return error(QStringLiteral("%1 sample(s); at least 2 are needed").arg(data->rows()));
     const double ts = data->medianInterval();
     if (!(ts > 0.0)) return error(QStringLiteral("no positive sampling interval"));
     return ts;

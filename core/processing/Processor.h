@@ -21,17 +21,17 @@
 namespace athlos {
 
 struct InputSpec {
-    QString name;          // role, e.g. "signal", "tdoa", "beacons"
-    QStringList kinds;     // accepted kinds; empty = any stream
-    bool table = false;    // a table instead of a stream
+    QString name;        // role, e.g. "signal", "tdoa", "beacons"
+    QStringList kinds;   // accepted kinds; empty = any stream
+    bool table = false;  // a table instead of a stream
     bool optional = false;
     QString help;
 };
 
 struct OutputSpec {
-    QString kind;          // kind of the produced stream/table; empty = the kind of the first input
+    QString kind;  // kind of the produced stream/table; empty = the kind of the first input
     bool table = false;
-    QString suffix;        // empty for the main output; else stored as "<output>-<suffix>"
+    QString suffix;  // empty for the main output; else stored as "<output>-<suffix>"
     QString help;
     // Predicted annotations (intervals/instants with label and confidence) added to the
     // recording of --output instead of an item; kind and table are then ignored.
@@ -116,10 +116,10 @@ class Processor {
 public:
     virtual ~Processor() = default;
 
-    virtual QString id() const = 0;           // stable, used on the CLI: "resample"
-    virtual QString name() const = 0;         // translated display name
+    virtual QString id() const = 0;    // stable, used on the CLI: "resample"
+    virtual QString name() const = 0;  // translated display name
     virtual QString description() const = 0;
-    virtual QString version() const = 0;      // bump when results change
+    virtual QString version() const = 0;  // bump when results change
     virtual ParameterSpecs parameters() const = 0;
     virtual QList<InputSpec> inputs() const = 0;
     virtual QList<OutputSpec> outputs() const = 0;

@@ -24,7 +24,8 @@ QString executableDir() {
 
 QStringList declaredProcessors(const QJsonObject& metaData) {
     QStringList ids;
-    for (const auto& value : metaData.value(QStringLiteral("MetaData")).toObject().value(QStringLiteral("processors")).toArray())
+    for (const auto& value :
+         metaData.value(QStringLiteral("MetaData")).toObject().value(QStringLiteral("processors")).toArray())
         ids << value.toString();
     return ids;
 }
@@ -64,15 +65,17 @@ void ProcessorRegistry::loadFrom(const QStringList& folders) {
             // is not an Athlos processor plugin before loading it.
             const QJsonObject metaData = loader.metaData();
             if (metaData.value(QStringLiteral("IID")).toString() != QLatin1String(AthlosProcessorPlugin_iid)) {
-                errors_ << QStringLiteral("%1: not an Athlos processor plugin (interface '%2', expected '%3'); not loaded")
-                               .arg(path, metaData.value(QStringLiteral("IID")).toString(), QStringLiteral(AthlosProcessorPlugin_iid));
+                errors_ << QStringLiteral(
+                               "%1: not an Athlos processor plugin (interface '%2', expected '%3'); not loaded")
+                               .arg(path, metaData.value(QStringLiteral("IID")).toString(),
+                                    QStringLiteral(AthlosProcessorPlugin_iid));
                 continue;
             }
             QObject* instance = loader.instance();
             auto* plugin = qobject_cast<ProcessorPlugin*>(instance);
             if (!plugin) {
-                errors_ << QStringLiteral("%1: %2").arg(path, instance ? QStringLiteral("not an Athlos processor plugin")
-                                                                      : loader.errorString());
+                errors_ << QStringLiteral("%1: %2").arg(
+                    path, instance ? QStringLiteral("not an Athlos processor plugin") : loader.errorString());
                 continue;
             }
             seen.insert(file);

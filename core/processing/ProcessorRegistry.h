@@ -23,7 +23,8 @@ public:
     void add(std::shared_ptr<const Processor> processor);  // for tests and built-ins
     // A loaded plugin's processors: refused whole when they differ from the ids its metadata
     // declares; an id another plugin registered already is refused (each with a loadErrors() entry).
-    void addPlugin(const QString& file, const QStringList& declared, std::vector<std::shared_ptr<const Processor>> processors);
+    void addPlugin(const QString& file, const QStringList& declared,
+                   std::vector<std::shared_ptr<const Processor>> processors);
 
     std::shared_ptr<const Processor> find(const QString& id) const;
     QStringList ids() const;

@@ -91,7 +91,8 @@ Expected<RunOutcome> runProcessor(Project& project, const Processor& processor, 
         if (spec.table) {
             const Table* t = project.table(path);
             if (!t)
-                return makeError(QStringLiteral("input '%1' (%2): no table of that name in the project").arg(path, spec.name));
+                return makeError(
+                    QStringLiteral("input '%1' (%2): no table of that name in the project").arg(path, spec.name));
             if (!spec.kinds.isEmpty() && !spec.kinds.contains(t->kind))
                 return makeError(QStringLiteral("input '%1' (%2) is a '%3' table; %4 expects %5")
                                      .arg(path, spec.name, t->kind, pid, spec.kinds.join(QStringLiteral(" or "))));
@@ -100,7 +101,8 @@ Expected<RunOutcome> runProcessor(Project& project, const Processor& processor, 
         } else {
             const Stream* s = project.stream(path);
             if (!s)
-                return makeError(QStringLiteral("input '%1' (%2): no stream of that name in the project").arg(path, spec.name));
+                return makeError(
+                    QStringLiteral("input '%1' (%2): no stream of that name in the project").arg(path, spec.name));
             if (!spec.kinds.isEmpty() && !spec.kinds.contains(s->kind()))
                 return makeError(QStringLiteral("input '%1' (%2) is a '%3' stream; %4 expects %5")
                                      .arg(path, spec.name, s->kind(), pid, spec.kinds.join(QStringLiteral(" or "))));
@@ -118,14 +120,16 @@ Expected<RunOutcome> runProcessor(Project& project, const Processor& processor, 
         const Stream* s = project.stream(path);
         const Table* t = project.table(path);
         if ((s && isImported(s->info().provenance)) || (t && isImported(t->provenance)))
-            return makeError(QStringLiteral("output '%1' would replace imported data; choose another --output name").arg(path));
+            return makeError(
+                QStringLiteral("output '%1' would replace imported data; choose another --output name").arg(path));
     }
 
     auto params = validateParameters(processor.parameters(), request.parameters);
     if (!params) return makeError(QStringLiteral("%1: %2").arg(pid, params.message()));
 
     RunContext context(project, specs, streams, tables, inputPaths, *params, request.output, progress);
-    if (Status valid = processor.validate(context); !valid) return makeError(QStringLiteral("%1: %2").arg(pid, valid.message()));
+    if (Status valid = processor.validate(context); !valid)
+        return makeError(QStringLiteral("%1: %2").arg(pid, valid.message()));
 
     auto produced = processor.run(context);
     if (progress.isCancelled()) return cancelledError();

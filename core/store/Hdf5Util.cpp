@@ -13,8 +13,8 @@ namespace {
 // Speed matters more than the last percent: after shuffle, level 1 stores noisy sensor data within
 // ~1 % of the size level 6 gives (measured: 39.1 % vs 38.5 % of raw); higher levels only cost time.
 constexpr unsigned kDeflateLevel = 1;
-constexpr hsize_t kChunkBytes = hsize_t(1) << 20;   // ~1 MiB chunks: fits HDF5's default chunk cache
-constexpr hsize_t kBlockBytes = hsize_t(8) << 20;   // rows per write call: progress/cancel granularity
+constexpr hsize_t kChunkBytes = hsize_t(1) << 20;  // ~1 MiB chunks: fits HDF5's default chunk cache
+constexpr hsize_t kBlockBytes = hsize_t(8) << 20;  // rows per write call: progress/cancel granularity
 
 QByteArray utf8(const QString& s) { return s.toUtf8(); }
 
@@ -70,7 +70,9 @@ std::size_t checkedBytes(hid_t object, hsize_t count, std::size_t width, bool co
     const long double limit = static_cast<long double>(fileSize) * (compressed ? 1100.0L : 1.0L) + 4096.0L;
     if (width == 0 || bytes > limit || bytes > static_cast<long double>(std::numeric_limits<std::ptrdiff_t>::max() / 2))
         throw Failure{QStringLiteral("%1 claims %2 bytes in a file of %3 bytes (damaged sizes)")
-                          .arg(what).arg(double(bytes), 0, 'g', 6).arg(fileSize)};
+                          .arg(what)
+                          .arg(double(bytes), 0, 'g', 6)
+                          .arg(fileSize)};
     return static_cast<std::size_t>(bytes);
 }
 
@@ -150,9 +152,9 @@ QJsonDocument readJsonDocument(hid_t object, const char* name) {
     QJsonParseError error;
     QJsonDocument doc = QJsonDocument::fromJson(text.toUtf8(), &error);
     if (error.error != QJsonParseError::NoError)
-        throw Failure{attributeName(object, name) + QStringLiteral(" is not valid JSON (%1 at offset %2)")
-                                                        .arg(error.errorString())
-                                                        .arg(error.offset)};
+        throw Failure{
+            attributeName(object, name) +
+            QStringLiteral(" is not valid JSON (%1 at offset %2)").arg(error.errorString()).arg(error.offset)};
     return doc;
 }
 
@@ -208,10 +210,13 @@ SampleSets openSamples(hid_t group, int columns) {
     if (te.size() != 1) throw Failure{where + QStringLiteral("/t is not one-dimensional")};
     if (de.size() != 2) throw Failure{where + QStringLiteral("/data is not two-dimensional")};
     if (de[0] != te[0])
-        throw Failure{QStringLiteral("%1 is inconsistent: data has %2 rows but t has %3").arg(where).arg(de[0]).arg(te[0])};
+        throw Failure{
+            QStringLiteral("%1 is inconsistent: data has %2 rows but t has %3").arg(where).arg(de[0]).arg(te[0])};
     if (columns >= 0 && de[1] != hsize_t(columns))
         throw Failure{QStringLiteral("%1 is inconsistent: data has %2 columns but the stream names %3")
-                          .arg(where).arg(de[1]).arg(columns)};
+                          .arg(where)
+                          .arg(de[1])
+                          .arg(columns)};
     s.rows = te[0];
     s.columns = de[1];
     return s;
@@ -326,11 +331,13 @@ void copyObject(hid_t sourceParent, const QString& sourceName, hid_t targetParen
     requireValidName(targetParent, targetName);
     check(H5Ocopy(sourceParent, utf8(sourceName).constData(), targetParent, utf8(targetName).constData(), H5P_DEFAULT,
                   utf8Links()),
-          QStringLiteral("cannot copy %1 to %2").arg(childPath(sourceParent, sourceName), childPath(targetParent, targetName)));
+          QStringLiteral("cannot copy %1 to %2")
+              .arg(childPath(sourceParent, sourceName), childPath(targetParent, targetName)));
 }
 
 std::vector<hsize_t> extent(hid_t dataset) {
-    Handle space = checked(H5Dget_space(dataset), H5Sclose, QStringLiteral("cannot read the shape of ") + objectPath(dataset));
+    Handle space =
+        checked(H5Dget_space(dataset), H5Sclose, QStringLiteral("cannot read the shape of ") + objectPath(dataset));
     const int rank = H5Sget_simple_extent_ndims(space);
     if (rank < 0) fail(QStringLiteral("cannot read the shape of ") + objectPath(dataset));
     std::vector<hsize_t> dims(std::size_t(rank), 0);
@@ -511,9 +518,13 @@ void writeSamples(hid_t group, const StreamData& data, const std::function<void(
     const hsize_t columns = hsize_t(std::max(data.columns, 0));
     if (data.columns < 0 || data.values.size() != rows * columns)
         throw Failure{QStringLiteral("%1: %2 values do not fill %3 rows × %4 columns")
-                          .arg(objectPath(group)).arg(data.values.size()).arg(rows).arg(data.columns)};
+                          .arg(objectPath(group))
+                          .arg(data.values.size())
+                          .arg(rows)
+                          .arg(data.columns)};
     // t and data share the chunk row count so that each block below covers whole chunks of both.
-    const hsize_t chunkRows = std::clamp<hsize_t>(kChunkBytes / (8 * std::max<hsize_t>(columns, 1)), 1, std::max<hsize_t>(rows, 1));
+    const hsize_t chunkRows =
+        std::clamp<hsize_t>(kChunkBytes / (8 * std::max<hsize_t>(columns, 1)), 1, std::max<hsize_t>(rows, 1));
     const hsize_t blockRows = chunkRows * std::max<hsize_t>(1, kBlockBytes / (chunkRows * 8 * (columns + 1)));
     const hsize_t tDims[1] = {rows}, tChunk[1] = {chunkRows};
     const hsize_t dDims[2] = {rows, columns}, dChunk[2] = {chunkRows, std::max<hsize_t>(columns, 1)};
@@ -548,7 +559,9 @@ void checkSampleExtents(hid_t group, long long rows, int columns) {
     const SampleSets sets = openSamples(group, columns);
     if (static_cast<long long>(sets.rows) != rows)
         throw Failure{QStringLiteral("%1 is inconsistent: it has %2 rows but its 'rows' attribute says %3")
-                          .arg(objectPath(group)).arg(sets.rows).arg(rows)};
+                          .arg(objectPath(group))
+                          .arg(sets.rows)
+                          .arg(rows)};
 }
 
 void writeTableColumns(hid_t group, const Table& table) {
@@ -558,18 +571,23 @@ void writeTableColumns(hid_t group, const Table& table) {
         const TableColumn& column = table.columns[i];
         if (column.size() != table.rows())
             throw Failure{QStringLiteral("%1: column '%2' has %3 rows, the first column %4")
-                              .arg(objectPath(group), column.name).arg(column.size()).arg(table.rows())};
+                              .arg(objectPath(group), column.name)
+                              .arg(column.size())
+                              .arg(table.rows())};
         // Column names are free text; the dataset falls back to a safe unique name.
         QString dataset = column.name;
         if (!isValidName(dataset) || used.contains(dataset)) dataset = QStringLiteral("column_%1").arg(i);
         while (used.contains(dataset)) dataset += QLatin1Char('_');
         used.insert(dataset);
-        if (column.isText) writeTextColumn(group, dataset, column.texts);
-        else writeNumberColumn(group, dataset, column.numbers);
-        described.append(QJsonObject{{QStringLiteral("name"), column.name},
-                                     {QStringLiteral("unit"), column.unit},
-                                     {QStringLiteral("type"), column.isText ? QStringLiteral("text") : QStringLiteral("number")},
-                                     {QStringLiteral("dataset"), dataset}});
+        if (column.isText)
+            writeTextColumn(group, dataset, column.texts);
+        else
+            writeNumberColumn(group, dataset, column.numbers);
+        described.append(
+            QJsonObject{{QStringLiteral("name"), column.name},
+                        {QStringLiteral("unit"), column.unit},
+                        {QStringLiteral("type"), column.isText ? QStringLiteral("text") : QStringLiteral("number")},
+                        {QStringLiteral("dataset"), dataset}});
     }
     writeJson(group, "columns", described);
 }
@@ -583,11 +601,15 @@ std::vector<TableColumn> readTableColumns(hid_t group) {
         column.unit = o.value(QStringLiteral("unit")).toString();
         column.isText = o.value(QStringLiteral("type")).toString() == QLatin1String("text");
         const QString dataset = o.value(QStringLiteral("dataset")).toString(column.name);
-        if (column.isText) column.texts = readTextColumn(group, dataset);
-        else column.numbers = readNumberColumn(group, dataset);
+        if (column.isText)
+            column.texts = readTextColumn(group, dataset);
+        else
+            column.numbers = readNumberColumn(group, dataset);
         if (!columns.empty() && column.size() != columns.front().size())
             throw Failure{QStringLiteral("%1 is inconsistent: column '%2' has %3 rows, the first column %4")
-                              .arg(objectPath(group), column.name).arg(column.size()).arg(columns.front().size())};
+                              .arg(objectPath(group), column.name)
+                              .arg(column.size())
+                              .arg(columns.front().size())};
         columns.push_back(std::move(column));
     }
     return columns;

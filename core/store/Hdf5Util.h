@@ -68,7 +68,7 @@ private:
 QString objectPath(hid_t object);
 QString childPath(hid_t parent, const QString& name);
 
-Handle createFile(const QString& path);  // truncates; file format of HDF5 1.8 or later
+Handle createFile(const QString& path);           // truncates; file format of HDF5 1.8 or later
 Handle tryOpenFileReadOnly(const QString& path);  // invalid on failure; see libraryMessage()
 Handle openFileReadOnly(const QString& path);
 Handle createGroup(hid_t parent, const QString& name);

@@ -43,7 +43,8 @@ StreamInfo readStreamInfo(hid_t group, const QString& name) {
     info.frame = optionalString(group, "frame");
     for (const auto& value : h5::readJsonArray(group, "columns")) {
         const QJsonObject column = value.toObject();
-        info.columns.push_back({column.value(QStringLiteral("name")).toString(), column.value(QStringLiteral("unit")).toString()});
+        info.columns.push_back(
+            {column.value(QStringLiteral("name")).toString(), column.value(QStringLiteral("unit")).toString()});
     }
     info.attributes = h5::readJsonObject(group, "attributes");
     info.provenance = Provenance::fromJson(h5::readJsonObject(group, "provenance"));
@@ -79,7 +80,8 @@ Annotations readAnnotations(hid_t group) {
         throw Failure{h5::objectPath(group) + QStringLiteral(" is inconsistent: its columns differ in length")};
     Annotations annotations(n);
     for (std::size_t i = 0; i < n; ++i)
-        annotations[i] = {labels[qsizetype(i)], starts[i], ends[i], annotators[qsizetype(i)], confidences[i], sources[qsizetype(i)]};
+        annotations[i] = {labels[qsizetype(i)],     starts[i],      ends[i],
+                          annotators[qsizetype(i)], confidences[i], sources[qsizetype(i)]};
     return annotations;
 }
 
@@ -121,7 +123,8 @@ Contents readContents(hid_t file, const QString& path, int formatVersion) {
                     StreamInfo info = readStreamInfo(group, item);
                     const QString where = streamGroup(recName, item);
                     const int columns = static_cast<int>(info.columns.size());
-                    rec.streams.emplace(item, Stream(std::move(info), FileSource{path, where}, loaderFor(path, where, columns)));
+                    rec.streams.emplace(
+                        item, Stream(std::move(info), FileSource{path, where}, loaderFor(path, where, columns)));
                 } else if (type == QLatin1String("table")) {
                     rec.tables.emplace(item, readTable(group, item));
                 } else {
@@ -157,13 +160,15 @@ Contents readProject(const QString& file, bool allSamples) {
     const long long version = h5::readInt(handle, "format_version");
     if (version > Project::kFormatVersion)
         throw Failure{QStringLiteral("it was written by a newer Athlos (format version %1; this build reads up to %2)")
-                          .arg(version).arg(Project::kFormatVersion)};
+                          .arg(version)
+                          .arg(Project::kFormatVersion)};
     if (version < 1) throw Failure{QStringLiteral("invalid format version %1").arg(version)};
     Contents c = readContents(handle, file, static_cast<int>(version));
     if (allSamples) {
         for (const auto& [recName, rec] : c.recordings)
             for (const auto& [name, stream] : rec.streams)
-                h5::readSamples(h5::openGroup(handle, streamGroup(recName, name)), static_cast<int>(stream.info().columns.size()));
+                h5::readSamples(h5::openGroup(handle, streamGroup(recName, name)),
+                                static_cast<int>(stream.info().columns.size()));
     }
     return c;
 }
@@ -268,7 +273,8 @@ public:
         auto it = files_.find(file);
         if (it == files_.end()) {
             if (Status checked = checkInIsolation(file); !checked)
-                throw Failure{QStringLiteral("cannot read unloaded streams from '%1': %2").arg(file, checked.message())};
+                throw Failure{
+                    QStringLiteral("cannot read unloaded streams from '%1': %2").arg(file, checked.message())};
             try {
                 it = files_.emplace(file, h5::openFileReadOnly(file)).first;
             } catch (const Failure& f) {
@@ -291,7 +297,9 @@ void writeStream(hid_t recGroup, const StreamPlan& plan, SourceFiles& sources, T
         const StreamData& d = *plan.data;
         if (d.columns != columns)
             throw Failure{QStringLiteral("stream %1/%2 has %3 columns of samples but names %4")
-                              .arg(plan.recording, plan.name).arg(d.columns).arg(columns)};
+                              .arg(plan.recording, plan.name)
+                              .arg(d.columns)
+                              .arg(columns)};
         info.rows = static_cast<long long>(d.rows());
         info.tBegin = d.t.empty() ? 0.0 : d.t.front();
         info.tEnd = d.t.empty() ? 0.0 : d.t.back();
@@ -328,7 +336,8 @@ void writeFile(hid_t file, const Project& project, const std::vector<StreamPlan>
     writeRoot(file, project);
     {
         Handle geometry = h5::createGroup(file, QStringLiteral("geometry"));
-        for (const auto& [name, json] : project.geometry()) h5::writeJson(h5::createGroup(geometry, name), "json", json);
+        for (const auto& [name, json] : project.geometry())
+            h5::writeJson(h5::createGroup(geometry, name), "json", json);
     }
     Handle recordings = h5::createGroup(file, QStringLiteral("recordings"));
     Handle annotations = h5::createGroup(file, QStringLiteral("annotations"));
@@ -441,7 +450,8 @@ void ProjectFile::rebind(Project& project, const QString& path) {
     for (auto& [recName, rec] : project.recordings()) {
         for (auto& [name, stream] : rec.streams) {
             const QString group = streamGroup(recName, name);
-            stream.rebind(FileSource{file, group}, loaderFor(file, group, static_cast<int>(stream.info().columns.size())));
+            stream.rebind(FileSource{file, group},
+                          loaderFor(file, group, static_cast<int>(stream.info().columns.size())));
         }
     }
 }
@@ -449,15 +459,18 @@ void ProjectFile::rebind(Project& project, const QString& path) {
 Expected<StreamData> ProjectFile::loadStream(const QString& file, const QString& group, int columns) {
     auto guard = h5::lock();
     if (Status checked = checkInIsolation(file); !checked)
-        return makeError(QStringLiteral("cannot load %1 from '%2': %3").arg(group, QDir::toNativeSeparators(file), checked.message()));
+        return makeError(QStringLiteral("cannot load %1 from '%2': %3")
+                             .arg(group, QDir::toNativeSeparators(file), checked.message()));
     try {
         Handle handle = h5::openFileReadOnly(file);
         Handle streamGroup = h5::openGroup(handle, group);
         return h5::readSamples(streamGroup, columns);
     } catch (const Failure& failure) {
-        return makeError(QStringLiteral("cannot load %1 from '%2': %3").arg(group, QDir::toNativeSeparators(file), failure.message));
+        return makeError(
+            QStringLiteral("cannot load %1 from '%2': %3").arg(group, QDir::toNativeSeparators(file), failure.message));
     } catch (const std::bad_alloc&) {
-        return makeError(QStringLiteral("cannot load %1 from '%2': out of memory").arg(group, QDir::toNativeSeparators(file)));
+        return makeError(
+            QStringLiteral("cannot load %1 from '%2': out of memory").arg(group, QDir::toNativeSeparators(file)));
     }
 }
 

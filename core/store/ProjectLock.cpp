@@ -42,11 +42,12 @@ Expected<std::unique_ptr<ProjectLock>> ProjectLock::acquire(const QString& proje
             qint64 pid = 0;
             QString host, program;
             file->getLockInfo(&pid, &host, &program);
-            return makeError(QStringLiteral("project '%1' is being changed by another Athlos process (%2, pid %3%4); "
-                                            "nothing was changed here: try again when it has finished, or close the project there")
-                                 .arg(QDir::toNativeSeparators(projectPath), program.isEmpty() ? QStringLiteral("athlos") : program)
-                                 .arg(pid)
-                                 .arg(host.isEmpty() ? QString() : QStringLiteral(" on ") + host));
+            return makeError(
+                QStringLiteral("project '%1' is being changed by another Athlos process (%2, pid %3%4); "
+                               "nothing was changed here: try again when it has finished, or close the project there")
+                    .arg(QDir::toNativeSeparators(projectPath), program.isEmpty() ? QStringLiteral("athlos") : program)
+                    .arg(pid)
+                    .arg(host.isEmpty() ? QString() : QStringLiteral(" on ") + host));
         }
         return makeError(QStringLiteral("cannot lock project '%1': cannot create '%2' (is the folder writable?)")
                              .arg(QDir::toNativeSeparators(projectPath), QDir::toNativeSeparators(lockPathFor(path))));
@@ -66,21 +67,28 @@ void ProjectLock::handleStaleSaves() {
             QString target = project.absoluteDir().filePath(
                 QStringLiteral("%1.recovered-%2.%3").arg(project.completeBaseName(), stamp, project.suffix()));
             for (int i = 2; QFileInfo::exists(target); ++i)
-                target = project.absoluteDir().filePath(
-                    QStringLiteral("%1.recovered-%2-%3.%4").arg(project.completeBaseName(), stamp).arg(i).arg(project.suffix()));
+                target = project.absoluteDir().filePath(QStringLiteral("%1.recovered-%2-%3.%4")
+                                                            .arg(project.completeBaseName(), stamp)
+                                                            .arg(i)
+                                                            .arg(project.suffix()));
             if (QFile::rename(tmp, target))
-                notes_ << QStringLiteral("a save of '%1' was interrupted after it had written a complete file; it was kept as '%2' "
-                                         "(the project itself is as it was last saved)")
-                              .arg(project.fileName(), QFileInfo(target).fileName());
+                notes_
+                    << QStringLiteral(
+                           "a save of '%1' was interrupted after it had written a complete file; it was kept as '%2' "
+                           "(the project itself is as it was last saved)")
+                           .arg(project.fileName(), QFileInfo(target).fileName());
             else
-                notes_ << QStringLiteral("a save of '%1' was interrupted; its complete temporary file '%2' could not be renamed")
+                notes_ << QStringLiteral(
+                              "a save of '%1' was interrupted; its complete temporary file '%2' could not be renamed")
                               .arg(project.fileName(), shown);
         } else if (QFile::remove(tmp)) {
-            notes_ << QStringLiteral("removed '%1', an unfinished save of '%2' by a process that was stopped while saving "
-                                     "(the project is as it was last saved)")
+            notes_ << QStringLiteral(
+                          "removed '%1', an unfinished save of '%2' by a process that was stopped while saving "
+                          "(the project is as it was last saved)")
                           .arg(shown, project.fileName());
         } else {
-            notes_ << QStringLiteral("'%1' is an unfinished save of '%2' and could not be removed").arg(shown, project.fileName());
+            notes_ << QStringLiteral("'%1' is an unfinished save of '%2' and could not be removed")
+                          .arg(shown, project.fileName());
         }
     }
 }

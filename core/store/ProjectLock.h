@@ -27,7 +27,8 @@ public:
 
     enum class StaleSaves { Handle, Leave };
     // Takes the lock of the project file at path (which need not exist yet).
-    static Expected<std::unique_ptr<ProjectLock>> acquire(const QString& projectPath, StaleSaves staleSaves = StaleSaves::Handle);
+    static Expected<std::unique_ptr<ProjectLock>> acquire(const QString& projectPath,
+                                                          StaleSaves staleSaves = StaleSaves::Handle);
 
     const QString& projectPath() const { return projectPath_; }
     // What was done about stale temporary files, one sentence each.

@@ -17,9 +17,10 @@ struct Identity {
 };
 
 bool identify(const QString& path, Identity& out) {
-    struct stat st{};
+    struct stat st {};
     if (::stat(QFile::encodeName(path).constData(), &st) != 0) return false;
-    out = {st.st_dev, st.st_ino, st.st_size, static_cast<long long>(st.st_mtim.tv_sec) * 1'000'000'000LL + st.st_mtim.tv_nsec};
+    out = {st.st_dev, st.st_ino, st.st_size,
+           static_cast<long long>(st.st_mtim.tv_sec) * 1'000'000'000LL + st.st_mtim.tv_nsec};
     return true;
 }
 

@@ -67,7 +67,9 @@ constexpr int kExitError = 86;  // work() returned an error; its message is in t
 
 QString describeSignal(int signal) {
     const char* name = ::strsignal(signal);
-    return QStringLiteral("signal %1%2").arg(signal).arg(name ? QStringLiteral(", ") + QString::fromLocal8Bit(name) : QString());
+    return QStringLiteral("signal %1%2")
+        .arg(signal)
+        .arg(name ? QStringLiteral(", ") + QString::fromLocal8Bit(name) : QString());
 }
 
 }  // namespace
@@ -101,7 +103,8 @@ Status runIsolated(const QString& what, const std::function<Status()>& work, con
     const auto deadline = std::chrono::steady_clock::now() + params.timeout;
     bool timedOut = false;
     for (;;) {
-        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+        const auto left =
+            std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
         if (left.count() <= 0) {
             timedOut = true;
             break;
@@ -119,8 +122,7 @@ Status runIsolated(const QString& what, const std::function<Status()>& work, con
     ::close(fds[0]);
     if (timedOut) ::kill(pid, SIGKILL);
     int status = 0;
-    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-    }
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
 
     if (timedOut)
         return makeError(QStringLiteral("%1 is damaged: reading it did not finish within %2 s")
@@ -133,9 +135,10 @@ Status runIsolated(const QString& what, const std::function<Status()>& work, con
     const int code = WEXITSTATUS(status);
     if (code == kExitOk) return {};
     if (code == kExitError && !message.isEmpty()) return makeError(QString::fromUtf8(message));
-    return makeError(QStringLiteral("%1 is damaged: reading it failed inside the file library (exit code %2); nothing was changed")
-                         .arg(what)
-                         .arg(code));
+    return makeError(
+        QStringLiteral("%1 is damaged: reading it failed inside the file library (exit code %2); nothing was changed")
+            .arg(what)
+            .arg(code));
 }
 
 }  // namespace athlos

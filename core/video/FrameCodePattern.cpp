@@ -13,17 +13,19 @@ constexpr int kGrid = 4;  // 4×4 blocks = 16 bits
 
 }  // namespace
 
-Status writeFrameCodeVideo(const QString& path, const FrameCodeVideo& spec)
-{
+Status writeFrameCodeVideo(const QString& path, const FrameCodeVideo& spec) {
     const QByteArray f = spec.fourcc.toLatin1();
-    if (f.size() != 4) return makeError(QCoreApplication::translate("athlos::VideoReader", "FourCC '%1' is not 4 characters").arg(spec.fourcc));
+    if (f.size() != 4)
+        return makeError(
+            QCoreApplication::translate("athlos::VideoReader", "FourCC '%1' is not 4 characters").arg(spec.fourcc));
     quietFfmpeg();
     const auto previousLevel = cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT);
-    cv::VideoWriter writer(path.toStdString(), cv::CAP_FFMPEG, cv::VideoWriter::fourcc(f[0], f[1], f[2], f[3]), spec.fps,
-                           cv::Size(spec.width, spec.height));
+    cv::VideoWriter writer(path.toStdString(), cv::CAP_FFMPEG, cv::VideoWriter::fourcc(f[0], f[1], f[2], f[3]),
+                           spec.fps, cv::Size(spec.width, spec.height));
     cv::utils::logging::setLogLevel(previousLevel);
     if (!writer.isOpened())
-        return makeError(QCoreApplication::translate("athlos::VideoReader", "'%1': no FFmpeg encoder for FourCC '%2'").arg(path, spec.fourcc));
+        return makeError(QCoreApplication::translate("athlos::VideoReader", "'%1': no FFmpeg encoder for FourCC '%2'")
+                             .arg(path, spec.fourcc));
     const int bw = spec.width / kGrid, bh = spec.height / kGrid;
     for (long long i = 0; i < spec.frames; ++i) {
         cv::Mat image(spec.height, spec.width, CV_8UC3);
@@ -39,8 +41,7 @@ Status writeFrameCodeVideo(const QString& path, const FrameCodeVideo& spec)
     return {};
 }
 
-long long decodeFrameCode(const unsigned char* pixels, int width, int height, int channels, int bytesPerLine)
-{
+long long decodeFrameCode(const unsigned char* pixels, int width, int height, int channels, int bytesPerLine) {
     if (!pixels || width < kGrid * 4 || height < kGrid * 4 || (channels != 1 && channels != 3)) return -1;
     const int bw = width / kGrid, bh = height / kGrid;
     long long index = 0;
@@ -62,8 +63,7 @@ long long decodeFrameCode(const unsigned char* pixels, int width, int height, in
     return index;
 }
 
-long long decodeFrameCode(const VideoFrame& frame)
-{
+long long decodeFrameCode(const VideoFrame& frame) {
     return decodeFrameCode(frame.bgr.get(), frame.width, frame.height, 3, frame.width * 3);
 }
 

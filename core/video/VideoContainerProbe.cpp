@@ -10,8 +10,7 @@ namespace {
 
 constexpr qint64 kWindow = 4 << 20;  // head and tail of the file: where headers and 'moov' live
 
-QString printable(const QByteArray& bytes)
-{
+QString printable(const QByteArray& bytes) {
     QString s;
     for (char c : bytes)
         if (c >= 32 && c < 127) s += QLatin1Char(c);
@@ -19,8 +18,7 @@ QString printable(const QByteArray& bytes)
 }
 
 // AVI: the BITMAPINFOHEADER in 'strf' after a 'vids' stream header holds biCompression.
-QString aviCodec(const QByteArray& head)
-{
+QString aviCodec(const QByteArray& head) {
     const qsizetype vids = head.indexOf("vids");
     if (vids < 0) return {};
     const qsizetype strf = head.indexOf("strf", vids);
@@ -33,9 +31,9 @@ QString aviCodec(const QByteArray& head)
 
 // ISO BMFF / QuickTime: each 'stsd' box lists sample entries; the first entry's format is the
 // codec. Audio tracks have their own 'stsd'; skip the audio formats.
-QString mp4Codec(const QByteArray& bytes)
-{
-    static const QStringList audio = {"mp4a", "ac-3", "ec-3", "Opus", "alac", "twos", "sowt", "lpcm", "fLaC", "samr", ".mp3"};
+QString mp4Codec(const QByteArray& bytes) {
+    static const QStringList audio = {"mp4a", "ac-3", "ec-3", "Opus", "alac", "twos",
+                                      "sowt", "lpcm", "fLaC", "samr", ".mp3"};
     for (qsizetype at = bytes.indexOf("stsd"); at >= 0; at = bytes.indexOf("stsd", at + 4)) {
         if (at + 20 > bytes.size()) break;
         const QString format = printable(bytes.mid(at + 16, 4));
@@ -45,8 +43,7 @@ QString mp4Codec(const QByteArray& bytes)
 }
 
 // Matroska: the CodecID element of a video track is a string "V_…".
-QString matroskaCodec(const QByteArray& bytes)
-{
+QString matroskaCodec(const QByteArray& bytes) {
     const qsizetype at = bytes.indexOf("V_");
     if (at < 0) return {};
     qsizetype end = at;
@@ -56,14 +53,15 @@ QString matroskaCodec(const QByteArray& bytes)
 
 }  // namespace
 
-ContainerProbe probeContainer(const QString& path)
-{
+ContainerProbe probeContainer(const QString& path) {
     ContainerProbe probe;
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) return probe;
     QByteArray bytes = file.read(kWindow);
-    if (file.size() > 2 * kWindow && file.seek(file.size() - kWindow)) bytes += file.read(kWindow);
-    else if (file.size() > kWindow) bytes += file.readAll();
+    if (file.size() > 2 * kWindow && file.seek(file.size() - kWindow))
+        bytes += file.read(kWindow);
+    else if (file.size() > kWindow)
+        bytes += file.readAll();
     if (bytes.size() < 12) return probe;
 
     if (bytes.startsWith("RIFF") && bytes.mid(8, 4) == "AVI ") {

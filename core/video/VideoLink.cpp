@@ -20,11 +20,9 @@ const QString kAbsolute = QStringLiteral("absolute_path");
 const QString kOffset = QStringLiteral("offset_s");
 const QString kFps = QStringLiteral("fps_override");
 
-
 QDir projectFolder(const Project& project) { return QFileInfo(project.path()).absoluteDir(); }
 
-void store(Recording& recording, const VideoLink& link)
-{
+void store(Recording& recording, const VideoLink& link) {
     QJsonObject json{{kPath, link.storedPath}, {kAbsolute, link.absolutePath}, {kOffset, link.offset}};
     if (link.fpsOverride > 0) json[kFps] = link.fpsOverride;
     recording.metadata[kKey] = json;
@@ -32,8 +30,7 @@ void store(Recording& recording, const VideoLink& link)
 
 }  // namespace
 
-std::optional<VideoLink> VideoLink::of(const Recording& recording)
-{
+std::optional<VideoLink> VideoLink::of(const Recording& recording) {
     const QJsonObject json = recording.metadata.value(kKey).toObject();
     if (json.value(kPath).toString().isEmpty()) return std::nullopt;
     VideoLink link;
@@ -44,27 +41,29 @@ std::optional<VideoLink> VideoLink::of(const Recording& recording)
     return link;
 }
 
-std::optional<VideoLink> VideoLink::of(const Project& project, const QString& recording)
-{
+std::optional<VideoLink> VideoLink::of(const Project& project, const QString& recording) {
     const Recording* rec = project.recording(recording);
     return rec ? of(*rec) : std::nullopt;
 }
 
-QString VideoLink::firstLinkedRecording(const Project& project)
-{
+QString VideoLink::firstLinkedRecording(const Project& project) {
     for (const auto& [name, recording] : project.recordings())
         if (of(recording)) return name;
     return {};
 }
 
 Expected<VideoLink> VideoLink::attach(Project& project, const QString& recording, const QString& file, double offset,
-                                      double fpsOverride)
-{
+                                      double fpsOverride) {
     Recording* rec = project.recording(recording);
-    if (!rec) return makeError(QCoreApplication::translate("athlos::VideoLink", "no recording '%1' in the project").arg(recording));
-    if (!std::isfinite(offset)) return makeError(QCoreApplication::translate("athlos::VideoLink", "video offset must be a finite number of seconds"));
+    if (!rec)
+        return makeError(
+            QCoreApplication::translate("athlos::VideoLink", "no recording '%1' in the project").arg(recording));
+    if (!std::isfinite(offset))
+        return makeError(
+            QCoreApplication::translate("athlos::VideoLink", "video offset must be a finite number of seconds"));
     if (!(fpsOverride >= 0) || !std::isfinite(fpsOverride))
-        return makeError(QCoreApplication::translate("athlos::VideoLink", "video fps override must be positive (or 0 for the file's rate)"));
+        return makeError(QCoreApplication::translate("athlos::VideoLink",
+                                                     "video fps override must be positive (or 0 for the file's rate)"));
     VideoReader::Params params;
     params.fpsOverride = fpsOverride;
     auto reader = VideoReader::open(file, params);
@@ -83,8 +82,7 @@ Expected<VideoLink> VideoLink::attach(Project& project, const QString& recording
     return link;
 }
 
-bool VideoLink::detach(Project& project, const QString& recording)
-{
+bool VideoLink::detach(Project& project, const QString& recording) {
     Recording* rec = project.recording(recording);
     if (!rec || !rec->metadata.contains(kKey)) return false;
     rec->metadata.remove(kKey);
@@ -92,32 +90,40 @@ bool VideoLink::detach(Project& project, const QString& recording)
     return true;
 }
 
-Status VideoLink::setOffset(Project& project, const QString& recording, double offset)
-{
+Status VideoLink::setOffset(Project& project, const QString& recording, double offset) {
     Recording* rec = project.recording(recording);
     auto link = rec ? of(*rec) : std::nullopt;
-    if (!link) return makeError(QCoreApplication::translate("athlos::VideoLink", "recording '%1' has no video").arg(recording));
-    if (!std::isfinite(offset)) return makeError(QCoreApplication::translate("athlos::VideoLink", "video offset must be a finite number of seconds"));
+    if (!link)
+        return makeError(
+            QCoreApplication::translate("athlos::VideoLink", "recording '%1' has no video").arg(recording));
+    if (!std::isfinite(offset))
+        return makeError(
+            QCoreApplication::translate("athlos::VideoLink", "video offset must be a finite number of seconds"));
     link->offset = offset;
     store(*rec, *link);
     project.setModified();
     return {};
 }
 
-Expected<QString> VideoLink::resolve(const Project& project, const QString& recording)
-{
+Expected<QString> VideoLink::resolve(const Project& project, const QString& recording) {
     const auto link = of(project, recording);
-    if (!link) return makeError(QCoreApplication::translate("athlos::VideoLink", "recording '%1' has no video").arg(recording));
+    if (!link)
+        return makeError(
+            QCoreApplication::translate("athlos::VideoLink", "recording '%1' has no video").arg(recording));
     const QString fromProject = QDir::isAbsolutePath(link->storedPath)
                                     ? link->storedPath
                                     : QDir::cleanPath(projectFolder(project).absoluteFilePath(link->storedPath));
     if (QFileInfo(fromProject).isFile()) return fromProject;
     if (!link->absolutePath.isEmpty() && QFileInfo(link->absolutePath).isFile()) return link->absolutePath;
     if (link->absolutePath.isEmpty() || link->absolutePath == fromProject)
-        return makeError(QCoreApplication::translate("athlos::VideoLink", "the video of recording '%1' is missing: '%2' (moved or deleted? attach it again)")
-                             .arg(recording, fromProject));
-    return makeError(QCoreApplication::translate("athlos::VideoLink", "the video of recording '%1' is missing: neither '%2' nor '%3' exists (moved or deleted? "
-                        "attach it again)")
+        return makeError(
+            QCoreApplication::translate(
+                "athlos::VideoLink", "the video of recording '%1' is missing: '%2' (moved or deleted? attach it again)")
+                .arg(recording, fromProject));
+    return makeError(QCoreApplication::translate(
+                         "athlos::VideoLink",
+                         "the video of recording '%1' is missing: neither '%2' nor '%3' exists (moved or deleted? "
+                         "attach it again)")
                          .arg(recording, fromProject, link->absolutePath));
 }
 

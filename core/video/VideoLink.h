@@ -19,9 +19,9 @@ class Project;
 struct Recording;
 
 struct VideoLink {
-    QString storedPath;    // as stored (relative to the project folder when possible)
-    QString absolutePath;  // where it was when attached
-    double offset = 0;     // s, t_recording = t_video + offset
+    QString storedPath;      // as stored (relative to the project folder when possible)
+    QString absolutePath;    // where it was when attached
+    double offset = 0;       // s, t_recording = t_video + offset
     double fpsOverride = 0;  // > 0: use instead of the file's frame rate
 
     double recordingTime(double videoTime) const { return videoTime + offset; }
@@ -39,8 +39,8 @@ struct VideoLink {
 
     // Opens the file (the link is only made for a readable video) and stores the link in the
     // recording's metadata, replacing an earlier one. Marks the project modified.
-    static Expected<VideoLink> attach(Project& project, const QString& recording, const QString& file, double offset = 0,
-                                      double fpsOverride = 0);
+    static Expected<VideoLink> attach(Project& project, const QString& recording, const QString& file,
+                                      double offset = 0, double fpsOverride = 0);
     // Removes the link; false if there was none.
     static bool detach(Project& project, const QString& recording);
     // Changes the offset of an existing link; error if the recording has no video.

@@ -18,9 +18,7 @@ namespace athlos {
 
 namespace {
 
-
-QString fourccText(double value)
-{
+QString fourccText(double value) {
     const auto f = static_cast<unsigned>(static_cast<long long>(value));
     QString s;
     for (int k = 0; k < 4; ++k) {
@@ -32,8 +30,7 @@ QString fourccText(double value)
 
 }  // namespace
 
-void quietFfmpeg()
-{
+void quietFfmpeg() {
     // OpenCV sets FFmpeg's log level from this variable when it first loads FFmpeg (default:
     // errors, e.g. "moov atom not found" for a damaged file). Our errors already say what went
     // wrong in one line, so FFmpeg stays quiet unless the user asked for its messages.
@@ -43,11 +40,13 @@ void quietFfmpeg()
 
 VideoReader::~VideoReader() = default;
 
-Expected<std::unique_ptr<VideoReader>> VideoReader::open(const QString& path, const Params& params)
-{
+Expected<std::unique_ptr<VideoReader>> VideoReader::open(const QString& path, const Params& params) {
     const QFileInfo fileInfo(path);
-    if (!fileInfo.exists()) return makeError(QCoreApplication::translate("athlos::VideoReader", "video '%1' does not exist").arg(path));
-    if (!fileInfo.isFile() || !fileInfo.isReadable()) return makeError(QCoreApplication::translate("athlos::VideoReader", "video '%1' is not a readable file").arg(path));
+    if (!fileInfo.exists())
+        return makeError(QCoreApplication::translate("athlos::VideoReader", "video '%1' does not exist").arg(path));
+    if (!fileInfo.isFile() || !fileInfo.isReadable())
+        return makeError(
+            QCoreApplication::translate("athlos::VideoReader", "video '%1' is not a readable file").arg(path));
     // FFmpeg's demuxers and decoders parse untrusted bytes: a damaged file is first opened, and its
     // first, middle and last frames decoded, in a child process, so a crash or hang there is a
     // refusal here. Then the same open runs in this process.
@@ -67,8 +66,7 @@ Expected<std::unique_ptr<VideoReader>> VideoReader::open(const QString& path, co
     return openUnchecked(path, params);
 }
 
-Expected<std::unique_ptr<VideoReader>> VideoReader::openUnchecked(const QString& path, const Params& params)
-{
+Expected<std::unique_ptr<VideoReader>> VideoReader::openUnchecked(const QString& path, const Params& params) {
     const QFileInfo fileInfo(path);
 
     quietFfmpeg();
@@ -88,13 +86,20 @@ Expected<std::unique_ptr<VideoReader>> VideoReader::openUnchecked(const QString&
     const ContainerProbe probe = probeContainer(path);
     if (!opened) {
         if (!probe.isVideoContainer)
-            return makeError(QCoreApplication::translate("athlos::VideoReader", "'%1' is not a video file (no known container format; FFmpeg cannot open it)").arg(path));
+            return makeError(QCoreApplication::translate(
+                                 "athlos::VideoReader",
+                                 "'%1' is not a video file (no known container format; FFmpeg cannot open it)")
+                                 .arg(path));
         if (!probe.codec.isEmpty())
-            return makeError(QCoreApplication::translate("athlos::VideoReader", "'%1': this FFmpeg build has no decoder for the video codec '%2' (%3); convert the "
-                                "video, e.g. to H.264 or MJPEG")
+            return makeError(QCoreApplication::translate(
+                                 "athlos::VideoReader",
+                                 "'%1': this FFmpeg build has no decoder for the video codec '%2' (%3); convert the "
+                                 "video, e.g. to H.264 or MJPEG")
                                  .arg(path, probe.codec, probe.container));
-        return makeError(QCoreApplication::translate("athlos::VideoReader", "'%1': FFmpeg cannot open this %2 file (damaged, or no decoder for its codec)")
-                             .arg(path, probe.container));
+        return makeError(
+            QCoreApplication::translate("athlos::VideoReader",
+                                        "'%1': FFmpeg cannot open this %2 file (damaged, or no decoder for its codec)")
+                .arg(path, probe.container));
     }
 
     VideoInfo& info = reader->info_;
@@ -107,33 +112,42 @@ Expected<std::unique_ptr<VideoReader>> VideoReader::openUnchecked(const QString&
     info.width = int(reader->capture_->get(cv::CAP_PROP_FRAME_WIDTH));
     info.height = int(reader->capture_->get(cv::CAP_PROP_FRAME_HEIGHT));
     if (!(reader->streamFps_ > 0) || !std::isfinite(reader->streamFps_))
-        return makeError(QCoreApplication::translate("athlos::VideoReader", "'%1': the video stream has no frame rate").arg(path));
-    if (info.frames <= 0) return makeError(QCoreApplication::translate("athlos::VideoReader", "'%1': the video has no frames").arg(path));
+        return makeError(
+            QCoreApplication::translate("athlos::VideoReader", "'%1': the video stream has no frame rate").arg(path));
+    if (info.frames <= 0)
+        return makeError(QCoreApplication::translate("athlos::VideoReader", "'%1': the video has no frames").arg(path));
     if (info.width <= 0 || info.height <= 0 || info.width > kMaxFrameSide || info.height > kMaxFrameSide)
-        return makeError(QCoreApplication::translate("athlos::VideoReader", "'%1': frame size %2×%3 is outside 1…%4 pixels per side")
-                             .arg(path).arg(info.width).arg(info.height).arg(kMaxFrameSide));
+        return makeError(
+            QCoreApplication::translate("athlos::VideoReader", "'%1': frame size %2×%3 is outside 1…%4 pixels per side")
+                .arg(path)
+                .arg(info.width)
+                .arg(info.height)
+                .arg(kMaxFrameSide));
     if (info.frames > kMaxFrames)
-        return makeError(QCoreApplication::translate("athlos::VideoReader", "'%1': %2 frames is more than a recording can have (limit %3)")
-                             .arg(path).arg(info.frames).arg(kMaxFrames));
+        return makeError(QCoreApplication::translate("athlos::VideoReader",
+                                                     "'%1': %2 frames is more than a recording can have (limit %3)")
+                             .arg(path)
+                             .arg(info.frames)
+                             .arg(kMaxFrames));
     // The first frame must decode: a stream FFmpeg can open but not decode fails here.
     if (!reader->grab())
-        return makeError(QCoreApplication::translate("athlos::VideoReader", "'%1': the first frame of the '%2' video stream cannot be decoded (no working decoder in "
-                            "this FFmpeg build, or a damaged file)")
+        return makeError(QCoreApplication::translate(
+                             "athlos::VideoReader",
+                             "'%1': the first frame of the '%2' video stream cannot be decoded (no working decoder in "
+                             "this FFmpeg build, or a damaged file)")
                              .arg(path, info.codec));
     reader->current_ = 0;
     return reader;
 }
 
-long long VideoReader::indexAtTime(double seconds) const
-{
+long long VideoReader::indexAtTime(double seconds) const {
     if (!std::isfinite(seconds) || seconds < 0) return -1;
     // A tolerance of 1e-6 frame: a time computed as index / fps maps back to that index.
     const auto index = static_cast<long long>(std::floor(seconds * info_.fps + 1e-6));
     return index < info_.frames ? index : -1;
 }
 
-bool VideoReader::grab()
-{
+bool VideoReader::grab() {
     try {
         if (!capture_->grab()) return false;
     } catch (const cv::Exception&) {
@@ -143,16 +157,14 @@ bool VideoReader::grab()
     return true;
 }
 
-long long VideoReader::grabbedIndex() const
-{
+long long VideoReader::grabbedIndex() const {
     // The presentation time of the grabbed frame (FFmpeg's best-effort timestamp relative to the
     // stream start), which is independent of OpenCV's own frame counter.
     const double ms = capture_->get(cv::CAP_PROP_POS_MSEC);
     return static_cast<long long>(std::llround(ms * 1e-3 * streamFps_));
 }
 
-Status VideoReader::seekTo(long long index)
-{
+Status VideoReader::seekTo(long long index) {
     // OpenCV seeks to the keyframe before the target and decodes forward, but with B-frames,
     // edit lists or inexact index tables it may stop a frame early or late. So: seek, check the
     // decoded frame's timestamp, decode forward to the target; if the seek overshot, start again
@@ -191,22 +203,30 @@ Status VideoReader::seekTo(long long index)
     // Last resort: reopen and decode from the first frame, counting frames.
     capture_ = std::make_unique<cv::VideoCapture>();
     if (!capture_->open(info_.file.toStdString(), cv::CAP_FFMPEG))
-        return makeError(QCoreApplication::translate("athlos::VideoReader", "'%1': cannot reopen the video").arg(info_.file));
+        return makeError(
+            QCoreApplication::translate("athlos::VideoReader", "'%1': cannot reopen the video").arg(info_.file));
     ++seeks_;
     for (long long k = 0; k <= index; ++k)
-        if (!grab()) return makeError(QCoreApplication::translate("athlos::VideoReader", "'%1': frame %2 cannot be decoded").arg(info_.file).arg(index));
+        if (!grab())
+            return makeError(QCoreApplication::translate("athlos::VideoReader", "'%1': frame %2 cannot be decoded")
+                                 .arg(info_.file)
+                                 .arg(index));
     current_ = index;
     return {};
 }
 
-Expected<VideoFrame> VideoReader::retrieve(long long index)
-{
+Expected<VideoFrame> VideoReader::retrieve(long long index) {
     cv::Mat mat;
     try {
         if (!capture_->retrieve(mat) || mat.empty() || mat.type() != CV_8UC3)
-            return makeError(QCoreApplication::translate("athlos::VideoReader", "'%1': frame %2 cannot be decoded").arg(info_.file).arg(index));
+            return makeError(QCoreApplication::translate("athlos::VideoReader", "'%1': frame %2 cannot be decoded")
+                                 .arg(info_.file)
+                                 .arg(index));
     } catch (const cv::Exception& e) {
-        return makeError(QCoreApplication::translate("athlos::VideoReader", "'%1': frame %2 cannot be decoded: %3").arg(info_.file).arg(index).arg(QString::fromStdString(e.what())));
+        return makeError(QCoreApplication::translate("athlos::VideoReader", "'%1': frame %2 cannot be decoded: %3")
+                             .arg(info_.file)
+                             .arg(index)
+                             .arg(QString::fromStdString(e.what())));
     }
     VideoFrame frame;
     frame.index = index;
@@ -220,18 +240,24 @@ Expected<VideoFrame> VideoReader::retrieve(long long index)
     return frame;
 }
 
-Expected<VideoFrame> VideoReader::frameAt(long long index)
-{
+Expected<VideoFrame> VideoReader::frameAt(long long index) {
     std::lock_guard lock(mutex_);
     if (index < 0 || index >= info_.frames)
-        return makeError(QCoreApplication::translate("athlos::VideoReader", "'%1': frame %2 is outside the video (0..%3)").arg(info_.file).arg(index).arg(info_.frames - 1));
+        return makeError(
+            QCoreApplication::translate("athlos::VideoReader", "'%1': frame %2 is outside the video (0..%3)")
+                .arg(info_.file)
+                .arg(index)
+                .arg(info_.frames - 1));
     if (index == current_) return retrieve(index);
     if (current_ >= 0 && index > current_ && index - current_ <= params_.maxForwardDecode) {
         // Playback and short skips: decode on, no seek.
         while (current_ < index) {
             if (!grab()) {
                 current_ = -1;
-                return makeError(QCoreApplication::translate("athlos::VideoReader", "'%1': frame %2 cannot be decoded (the file ends early)").arg(info_.file).arg(index));
+                return makeError(QCoreApplication::translate("athlos::VideoReader",
+                                                             "'%1': frame %2 cannot be decoded (the file ends early)")
+                                     .arg(info_.file)
+                                     .arg(index));
             }
             ++current_;
         }
@@ -244,11 +270,14 @@ Expected<VideoFrame> VideoReader::frameAt(long long index)
     return retrieve(index);
 }
 
-Expected<VideoFrame> VideoReader::frameAtTime(double seconds)
-{
+Expected<VideoFrame> VideoReader::frameAtTime(double seconds) {
     const long long index = indexAtTime(seconds);
     if (index < 0)
-        return makeError(QCoreApplication::translate("athlos::VideoReader", "'%1': time %2 s is outside the video (0..%3 s)").arg(info_.file).arg(seconds).arg(info_.duration()));
+        return makeError(
+            QCoreApplication::translate("athlos::VideoReader", "'%1': time %2 s is outside the video (0..%3 s)")
+                .arg(info_.file)
+                .arg(seconds)
+                .arg(info_.duration()));
     return frameAt(index);
 }
 

@@ -23,7 +23,7 @@ namespace athlos {
 
 struct VideoFrame {
     long long index = -1;
-    double time = 0;      // s, presentation time of the frame (index / fps)
+    double time = 0;  // s, presentation time of the frame (index / fps)
     int width = 0, height = 0;
     std::shared_ptr<const unsigned char[]> bgr;  // width*height*3 bytes, BGR, rows packed
     const unsigned char* pixel(int x, int y) const { return bgr.get() + (std::size_t(y) * width + x) * 3; }
@@ -31,8 +31,8 @@ struct VideoFrame {
 
 struct VideoInfo {
     QString file;
-    QString codec;        // FourCC as text, e.g. "avc1", "MJPG"
-    double fps = 0;       // frames per second (the stream's, or the override)
+    QString codec;   // FourCC as text, e.g. "avc1", "MJPG"
+    double fps = 0;  // frames per second (the stream's, or the override)
     long long frames = 0;
     int width = 0, height = 0;
     double duration() const { return fps > 0 ? double(frames) / fps : 0.0; }
@@ -41,13 +41,13 @@ struct VideoInfo {
 class VideoReader {
 public:
     struct Params {
-        double fpsOverride = 0;          // > 0: use instead of the container's frame rate
-        int maxForwardDecode = 48;       // decode on instead of seeking when at most this far ahead
+        double fpsOverride = 0;     // > 0: use instead of the container's frame rate
+        int maxForwardDecode = 48;  // decode on instead of seeking when at most this far ahead
     };
 
     // Limits of what is accepted as a video (a damaged header must not allocate gigabytes).
-    static constexpr int kMaxFrameSide = 8192;                   // pixels
-    static constexpr long long kMaxFrames = 24LL * 3600 * 240;   // a day at 240 fps
+    static constexpr int kMaxFrameSide = 8192;                  // pixels
+    static constexpr long long kMaxFrames = 24LL * 3600 * 240;  // a day at 240 fps
 
     // Opens path. Errors name the file: missing, not a video, no decoder for the codec (naming the
     // FourCC), zero frames, implausible sizes; a file that crashes or hangs FFmpeg (checked in a
@@ -82,8 +82,8 @@ private:
     std::unique_ptr<cv::VideoCapture> capture_;
     Params params_;
     VideoInfo info_;
-    double streamFps_ = 0;      // the container's rate: timestamps are converted with it
-    long long current_ = -1;    // index of the frame last grabbed (-1: none yet)
+    double streamFps_ = 0;    // the container's rate: timestamps are converted with it
+    long long current_ = -1;  // index of the frame last grabbed (-1: none yet)
     long long seeks_ = 0, decoded_ = 0;
 };
 

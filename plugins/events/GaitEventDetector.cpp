@@ -8,9 +8,12 @@ namespace athlos::events {
 
 const char* gaitEventName(GaitEventType type) {
     switch (type) {
-    case GaitEventType::TerminalContact: return "tc";
-    case GaitEventType::InitialContact: return "ic";
-    case GaitEventType::MinimumVelocity: return "min_vel";
+        case GaitEventType::TerminalContact:
+            return "tc";
+        case GaitEventType::InitialContact:
+            return "ic";
+        case GaitEventType::MinimumVelocity:
+            return "min_vel";
     }
     return "";
 }
@@ -62,7 +65,10 @@ void GaitEventDetector::evaluate(bool flushing) {
         if (sc.w < params_.swingThreshold || sc.t - s.lastPeakT < params_.minStrideTime) continue;
         bool peak = true;
         for (std::size_t j = c; j-- > 0 && s.buffer[j].t >= sc.t - half;)
-            if (s.buffer[j].w >= sc.w) { peak = false; break; }
+            if (s.buffer[j].w >= sc.w) {
+                peak = false;
+                break;
+            }
         for (std::size_t j = c + 1; peak && j < s.buffer.size() && s.buffer[j].t <= sc.t + half; ++j)
             if (s.buffer[j].w > sc.w) peak = false;
         if (peak) confirmPeak(c);

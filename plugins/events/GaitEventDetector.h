@@ -27,25 +27,25 @@ struct GaitEvent {
 };
 
 struct GaitStride {
-    double tStart = 0.0;    // IC (s)
-    double tEnd = 0.0;      // next IC (s)
-    double tMinVel = 0.0;   // mid-stance after tStart (s)
-    double tTc = 0.0;       // toe-off within the stride (s)
-    double swingPeak = 0.0; // ω_ml at mid-swing (rad/s)
-    double restGyr = 0.0;   // smoothed gyroscope norm at mid-stance (rad/s)
+    double tStart = 0.0;     // IC (s)
+    double tEnd = 0.0;       // next IC (s)
+    double tMinVel = 0.0;    // mid-stance after tStart (s)
+    double tTc = 0.0;        // toe-off within the stride (s)
+    double swingPeak = 0.0;  // ω_ml at mid-swing (rad/s)
+    double restGyr = 0.0;    // smoothed gyroscope norm at mid-stance (rad/s)
     double confidence = 0.0;
 };
 
 // Parameters of GaitEventDetector (outside the class so that `Params params = {}` works as a
 // default argument).
 struct GaitEventParams {
-    double swingThreshold = 1.5;  // rad/s: minimum mid-swing ω_ml (walking ≈ 4–7, slow gait ≈ 2)
-    double minStrideTime = 0.5;   // s: swing peaks closer than this are one swing
-    double maxStrideTime = 2.5;   // s: longer IC-to-IC intervals are gaps (stops, turns), no stride
-    double tcWindow = 0.4;        // s before the swing peak searched for TC
-    double icWindow = 0.35;       // s after the swing peak searched for IC
-    double restWindow = 0.1;      // s: moving average of the gyroscope norm for mid-stance
-    double restScale = 1.0;       // rad/s: mid-stance norm at which the rest quality is 1/e
+    double swingThreshold = 1.5;        // rad/s: minimum mid-swing ω_ml (walking ≈ 4–7, slow gait ≈ 2)
+    double minStrideTime = 0.5;         // s: swing peaks closer than this are one swing
+    double maxStrideTime = 2.5;         // s: longer IC-to-IC intervals are gaps (stops, turns), no stride
+    double tcWindow = 0.4;              // s before the swing peak searched for TC
+    double icWindow = 0.35;             // s after the swing peak searched for IC
+    double restWindow = 0.1;            // s: moving average of the gyroscope norm for mid-stance
+    double restScale = 1.0;             // rad/s: mid-stance norm at which the rest quality is 1/e
     double regularityTolerance = 0.15;  // relative change of stride time that costs 1 σ of quality
 };
 
@@ -57,7 +57,7 @@ public:
         struct Sample {
             double t, w, norm;
         };
-        std::deque<Sample> buffer;     // recent samples (w = signed ω_ml, norm = smoothed |ω|)
+        std::deque<Sample> buffer;                         // recent samples (w = signed ω_ml, norm = smoothed |ω|)
         std::deque<std::pair<double, double>> normWindow;  // (t, raw norm) of the last restWindow
         double normSum = 0.0;
         double lastPeakT = -1e300;

@@ -48,7 +48,9 @@ Expected<Plan> makePlan(const RunContext& c) {
     p.tcWindow = c.number(QStringLiteral("tc_window"));
     p.icWindow = c.number(QStringLiteral("ic_window"));
     if (p.maxStrideTime <= p.minStrideTime)
-        return makeError(QStringLiteral("max_stride: %1 s must be longer than min_stride (%2 s)").arg(p.maxStrideTime).arg(p.minStrideTime));
+        return makeError(QStringLiteral("max_stride: %1 s must be longer than min_stride (%2 s)")
+                             .arg(p.maxStrideTime)
+                             .arg(p.minStrideTime));
     auto input = c.samples(0);
     if (!input) return input.error();
     plan.data = input->data;
@@ -57,10 +59,13 @@ Expected<Plan> makePlan(const RunContext& c) {
     const double ts = *interval;
     if (4.0 * ts > p.icWindow)
         return makeError(QStringLiteral("ic_window: %1 s spans fewer than 4 samples of '%2' (interval %3 s)")
-                             .arg(p.icWindow).arg(input->path).arg(ts));
+                             .arg(p.icWindow)
+                             .arg(input->path)
+                             .arg(ts));
     plan.foot = GaitEventsProcessor::footOf(info);
     plan.label = c.text(QStringLiteral("label"));
-    if (plan.label.isEmpty()) plan.label = plan.foot.isEmpty() ? QStringLiteral("stride") : QStringLiteral("stride ") + plan.foot;
+    if (plan.label.isEmpty())
+        plan.label = plan.foot.isEmpty() ? QStringLiteral("stride") : QStringLiteral("stride ") + plan.foot;
     return plan;
 }
 }  // namespace
@@ -77,20 +82,24 @@ QString GaitEventsProcessor::footOf(const StreamInfo& info) {
 QString GaitEventsProcessor::name() const { return tr("Gait events (foot IMU)"); }
 
 QString GaitEventsProcessor::description() const {
-    return tr("Initial contact, toe-off and mid-stance from the medio-lateral gyroscope of a foot-mounted IMU "
-              "(negative peaks of the swing-positive signal after and before each mid-swing peak; minimum of the "
-              "gyroscope norm in stance). Writes the strides (IC to next IC) as predicted annotations with a "
-              "confidence, and a table of the events.");
+    return tr(
+        "Initial contact, toe-off and mid-stance from the medio-lateral gyroscope of a foot-mounted IMU "
+        "(negative peaks of the swing-positive signal after and before each mid-swing peak; minimum of the "
+        "gyroscope norm in stance). Writes the strides (IC to next IC) as predicted annotations with a "
+        "confidence, and a table of the events.");
 }
 
 ParameterSpecs GaitEventsProcessor::parameters() const {
     const GaitEventDetector::Params d;
     return {
-        ParameterSpec::choice(QStringLiteral("ml_axis"), {QStringLiteral("x"), QStringLiteral("y"), QStringLiteral("z")},
-                              QStringLiteral("y"), tr("Sensor axis along the medio-lateral direction (y when x points forward and z up).")),
-        ParameterSpec::choice(QStringLiteral("swing_sign"), {QStringLiteral("auto"), QStringLiteral("positive"), QStringLiteral("negative")},
-                              QStringLiteral("auto"), tr("Sign of the medio-lateral angular velocity during swing; auto: the sign of "
-                                                         "the longest sustained rotation.")),
+        ParameterSpec::choice(QStringLiteral("ml_axis"),
+                              {QStringLiteral("x"), QStringLiteral("y"), QStringLiteral("z")}, QStringLiteral("y"),
+                              tr("Sensor axis along the medio-lateral direction (y when x points forward and z up).")),
+        ParameterSpec::choice(QStringLiteral("swing_sign"),
+                              {QStringLiteral("auto"), QStringLiteral("positive"), QStringLiteral("negative")},
+                              QStringLiteral("auto"),
+                              tr("Sign of the medio-lateral angular velocity during swing; auto: the sign of "
+                                 "the longest sustained rotation.")),
         ParameterSpec::number(QStringLiteral("swing_threshold"), d.swingThreshold, 0.0, kInf, QStringLiteral("rad/s"),
                               tr("Minimum mid-swing angular velocity of a stride.")),
         ParameterSpec::number(QStringLiteral("min_stride"), d.minStrideTime, 0.05, kInf, QStringLiteral("s"),
@@ -101,19 +110,25 @@ ParameterSpecs GaitEventsProcessor::parameters() const {
                               tr("Search window for toe-off before the swing peak.")),
         ParameterSpec::number(QStringLiteral("ic_window"), d.icWindow, 0.01, kInf, QStringLiteral("s"),
                               tr("Search window for initial contact after the swing peak.")),
-        ParameterSpec::text(QStringLiteral("label"), QString(),
-                            tr("Annotation label of the strides; empty: \"stride left\" / \"stride right\" from the stream name.")),
+        ParameterSpec::text(
+            QStringLiteral("label"), QString(),
+            tr("Annotation label of the strides; empty: \"stride left\" / \"stride right\" from the stream name.")),
     };
 }
 
 QList<InputSpec> GaitEventsProcessor::inputs() const {
-    return {InputSpec{QStringLiteral("imu"), {QStringLiteral("imu")}, false, false,
+    return {InputSpec{QStringLiteral("imu"),
+                      {QStringLiteral("imu")},
+                      false,
+                      false,
                       tr("Foot-mounted IMU: gyr_x..z (rad/s) in the sensor frame.")}};
 }
 
 QList<OutputSpec> GaitEventsProcessor::outputs() const {
-    return {OutputSpec{QStringLiteral("gait-events"), true, QString(), tr("Events: t (s), type (ic, tc, min_vel), foot.")},
-            OutputSpec{QString(), false, QString(), tr("Strides (IC to next IC) as predicted annotations with confidence."), true}};
+    return {
+        OutputSpec{QStringLiteral("gait-events"), true, QString(), tr("Events: t (s), type (ic, tc, min_vel), foot.")},
+        OutputSpec{QString(), false, QString(), tr("Strides (IC to next IC) as predicted annotations with confidence."),
+                   true}};
 }
 
 Status GaitEventsProcessor::prepare(const RunContext& context) const { return statusOf(makePlan(context)); }
@@ -124,7 +139,8 @@ Expected<std::vector<ProcessorOutput>> GaitEventsProcessor::run(const RunContext
     const StreamData& d = *plan->data;
     const double* gyr = d.values.data() + plan->gyr;
     const auto stride = std::size_t(d.columns);
-    const int sign = plan->sign ? plan->sign : GaitEventDetector::swingSign(d.t.data(), gyr, d.rows(), stride, plan->axis);
+    const int sign =
+        plan->sign ? plan->sign : GaitEventDetector::swingSign(d.t.data(), gyr, d.rows(), stride, plan->axis);
     GaitEventDetector detector(plan->params, sign);
     const std::size_t chunk = 20000;
     for (std::size_t k = 0; k < d.rows(); ++k) {
@@ -138,16 +154,18 @@ Expected<std::vector<ProcessorOutput>> GaitEventsProcessor::run(const RunContext
     detector.finish();
     // Nothing found is refused with the likely causes, not stored as an empty table (issue #13 item 8).
     if (detector.events().empty())
-        return context.inputError(0, QStringLiteral("no gait event found in %1 s of data (ml_axis = %2, swing_threshold = "
-                                                    "%3 rad/s): is it a foot-mounted IMU during walking or running, "
-                                                    "with the medio-lateral axis as ml_axis?")
-                                         .arg(d.rows() ? d.t.back() - d.t.front() : 0.0, 0, 'g', 4)
-                                         .arg(context.text(QStringLiteral("ml_axis")))
-                                         .arg(plan->params.swingThreshold));
+        return context.inputError(0,
+                                  QStringLiteral("no gait event found in %1 s of data (ml_axis = %2, swing_threshold = "
+                                                 "%3 rad/s): is it a foot-mounted IMU during walking or running, "
+                                                 "with the medio-lateral axis as ml_axis?")
+                                      .arg(d.rows() ? d.t.back() - d.t.front() : 0.0, 0, 'g', 4)
+                                      .arg(context.text(QStringLiteral("ml_axis")))
+                                      .arg(plan->params.swingThreshold));
 
     Table table;
     table.kind = QStringLiteral("gait-events");
-    table.attributes = QJsonObject{{QStringLiteral("swing_sign"), sign}, {QStringLiteral("foot"), plan->foot},
+    table.attributes = QJsonObject{{QStringLiteral("swing_sign"), sign},
+                                   {QStringLiteral("foot"), plan->foot},
                                    {QStringLiteral("strides"), int(detector.strides().size())}};
     TableColumn t{QStringLiteral("t"), QStringLiteral("s"), false, {}, {}};
     TableColumn type{QStringLiteral("type"), QString(), true, {}, {}};

@@ -69,10 +69,7 @@ void QuaternionKalman::update(const Vec3& gyr, const Vec3& acc, const Vec3* mag)
     // Prediction (eqs. 50–51): x = A x, A = I + T_s/2 Ω(p, q, r) (eq. 6).
     const double p = gyr.x(), q = gyr.y(), r = gyr.z();
     Eigen::Matrix4d omega;
-    omega << 0, -p, -q, -r,
-             p, 0, r, -q,
-             q, -r, 0, p,
-             r, q, -p, 0;
+    omega << 0, -p, -q, -r, p, 0, r, -q, q, -r, 0, p, r, q, -p, 0;
     const Eigen::Matrix4d a = Eigen::Matrix4d::Identity() + 0.5 * ts_ * omega;
     x_ = a * x_;
     x_.normalize();

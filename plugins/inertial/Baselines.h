@@ -93,8 +93,8 @@ private:
 class QuaternionKalman {
 public:
     struct Params {
-        double gyrNoise = 0.005;    // rad/s/√Hz: process noise Q = σ² T_s / 4 · I
-        double angleNoise = 0.2;    // rad: measurement noise R = (σ/2)² · I
+        double gyrNoise = 0.005;  // rad/s/√Hz: process noise Q = σ² T_s / 4 · I
+        double angleNoise = 0.2;  // rad: measurement noise R = (σ/2)² · I
     };
     QuaternionKalman(double ts, const Params& params) : ts_(ts), p_(params) {}
     void update(const Vec3& gyr, const Vec3& acc, const Vec3* mag);

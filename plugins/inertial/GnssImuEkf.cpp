@@ -14,10 +14,7 @@ Mat3 skew(const Vec3& v) {
 }
 Eigen::Matrix4d omegaMatrix(const Vec3& w) {  // q̇ = ½ Ω(ω) q, eq. 6
     Eigen::Matrix4d o;
-    o << 0, -w.x(), -w.y(), -w.z(),
-         w.x(), 0, w.z(), -w.y(),
-         w.y(), -w.z(), 0, w.x(),
-         w.z(), w.y(), -w.x(), 0;
+    o << 0, -w.x(), -w.y(), -w.z(), w.x(), 0, w.z(), -w.y(), w.y(), -w.z(), 0, w.x(), w.z(), w.y(), -w.x(), 0;
     return o;
 }
 // C(q) f for a (not necessarily unit) quaternion, eq. 12.
@@ -48,8 +45,8 @@ GnssImuEkf::Matrix GnssImuEkf::jacobian(const State& x, const Vec3& f, const Vec
     const double q0 = x[6];
     const Vec3 qv = x.segment<3>(7);
     F.block<3, 1>(3, 6) = ts * (2.0 * q0 * f + 2.0 * qv.cross(f));
-    F.block<3, 3>(3, 7) = ts * (2.0 * qv.dot(f) * Mat3::Identity() + 2.0 * qv * f.transpose() - 2.0 * f * qv.transpose() -
-                                2.0 * q0 * skew(f));
+    F.block<3, 3>(3, 7) = ts * (2.0 * qv.dot(f) * Mat3::Identity() + 2.0 * qv * f.transpose() -
+                                2.0 * f * qv.transpose() - 2.0 * q0 * skew(f));
     F.block<4, 4>(6, 6) += 0.5 * ts * omegaMatrix(w);
     return F;
 }
@@ -146,13 +143,14 @@ void GnssImuEkf::updateGnss(const Vec3& pos, const Vec3* vel) {
     Eigen::Matrix<double, 6, 1> r;
     r << p_.gnssSigmaHorizontal, p_.gnssSigmaHorizontal, p_.gnssSigmaVertical, Vec3::Constant(p_.gnssVelocitySigma);
     const auto Hm = H.topRows(m);
-    const Eigen::MatrixXd S = Hm * P_ * Hm.transpose() + Eigen::MatrixXd(r.head(m).array().square().matrix().asDiagonal());
+    const Eigen::MatrixXd S =
+        Hm * P_ * Hm.transpose() + Eigen::MatrixXd(r.head(m).array().square().matrix().asDiagonal());
     Eigen::MatrixXd K = P_ * Hm.transpose() * S.inverse();  // eq. 16
-    if (!aligned_) K.bottomRows<4>().setZero();              // the heading is not yet meaningful
+    if (!aligned_) K.bottomRows<4>().setZero();             // the heading is not yet meaningful
     const Eigen::VectorXd innovation = z.head(m) - Hm * x_;
-    x_ += K * innovation;                                   // eq. 17
+    x_ += K * innovation;  // eq. 17
     x_.segment<4>(6).normalize();
-    P_ = (Matrix::Identity() - K * Hm) * P_;                 // eq. 18
+    P_ = (Matrix::Identity() - K * Hm) * P_;  // eq. 18
     P_ = 0.5 * (P_ + P_.transpose()).eval();
     // Without GNSS velocity, the filter's velocity (smoothed from the positions) stands in for it.
     if (!aligned_) tryAlign(vel ? *vel : velocity(), vel ? 1 : 10);

@@ -36,7 +36,8 @@ FusedTrack fuseGnssImu(const GnssImuEkf::Params& params, double ts, const std::v
         out.velocity[k] = ekf.velocity();
         out.orientation[k] = ekf.quaternion();
         out.speed[k] = ekf.velocity().head<2>().norm();
-        if (k > 0 && std::isfinite(out.speed[k - 1])) distance += 0.5 * (out.speed[k] + out.speed[k - 1]) * (imuT[k] - imuT[k - 1]);
+        if (k > 0 && std::isfinite(out.speed[k - 1]))
+            distance += 0.5 * (out.speed[k] + out.speed[k - 1]) * (imuT[k] - imuT[k - 1]);
         out.distance[k] = distance;
     }
     return out;

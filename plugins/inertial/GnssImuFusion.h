@@ -18,12 +18,11 @@ struct GnssSeries {
 struct FusedTrack {
     std::vector<Vec3> position, velocity;  // NaN before the first GNSS fix
     std::vector<Quat> orientation;
-    std::vector<double> speed, distance;   // horizontal speed (m/s), path length (m)
+    std::vector<double> speed, distance;  // horizontal speed (m/s), path length (m)
     bool cancelled = false;
 };
 
 FusedTrack fuseGnssImu(const GnssImuEkf::Params& params, double ts, const std::vector<double>& imuT,
-                       const ImuBatch& imu, const GnssSeries& gnss,
-                       const std::function<bool(double)>& keepGoing = {});
+                       const ImuBatch& imu, const GnssSeries& gnss, const std::function<bool(double)>& keepGoing = {});
 
 }  // namespace athlos::inertial

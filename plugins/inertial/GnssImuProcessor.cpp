@@ -40,7 +40,8 @@ Expected<GnssSeries> gnssSeries(const StreamInfo& info, const StreamData& data, 
     const auto value = [&](std::size_t r, int c) { return c >= 0 ? data.at(r, c) : 0.0; };
     if (lat >= 0 && lon >= 0) {
         std::size_t first = 0;
-        while (first < data.rows() && !(std::isfinite(data.at(first, lat)) && std::isfinite(data.at(first, lon)))) ++first;
+        while (first < data.rows() && !(std::isfinite(data.at(first, lat)) && std::isfinite(data.at(first, lon))))
+            ++first;
         if (first == data.rows()) return makeError(QStringLiteral("GNSS stream '%1' has no valid fix").arg(path));
         const LocalTangentPlane ltp(data.at(first, lat), data.at(first, lon), value(first, alt));
         origin = {{"lat", data.at(first, lat)}, {"lon", data.at(first, lon)}, {"alt", value(first, alt)}};
@@ -49,16 +50,17 @@ Expected<GnssSeries> gnssSeries(const StreamInfo& info, const StreamData& data, 
             s.position.push_back(ok ? ltp.toEnu(data.at(r, lat), data.at(r, lon), value(r, alt)) : Vec3::Constant(nan));
         }
         if (useVelocity && vn >= 0 && ve >= 0)
-            for (std::size_t r = 0; r < data.rows(); ++r)
-            {
+            for (std::size_t r = 0; r < data.rows(); ++r) {
                 // NMEA has no vertical speed (vd NaN): a runner's is ~0, so 0 keeps the horizontal update usable.
                 const double down = vd >= 0 && std::isfinite(value(r, vd)) ? value(r, vd) : 0.0;
                 s.velocity.push_back(LocalTangentPlane::nedToEnu(value(r, vn), value(r, ve), down));
             }
     } else if (x >= 0 && y >= 0) {
-        for (std::size_t r = 0; r < data.rows(); ++r) s.position.push_back(Vec3(data.at(r, x), data.at(r, y), value(r, z)));
+        for (std::size_t r = 0; r < data.rows(); ++r)
+            s.position.push_back(Vec3(data.at(r, x), data.at(r, y), value(r, z)));
         if (useVelocity && vx >= 0 && vy >= 0)
-            for (std::size_t r = 0; r < data.rows(); ++r) s.velocity.push_back(Vec3(value(r, vx), value(r, vy), value(r, vz)));
+            for (std::size_t r = 0; r < data.rows(); ++r)
+                s.velocity.push_back(Vec3(value(r, vx), value(r, vy), value(r, vz)));
     } else {
         return makeError(QStringLiteral("GNSS stream '%1' needs lat, lon[, alt] or x, y[, z] columns (it has: %2)")
                              .arg(path, info.columnNames().join(QStringLiteral(", "))));
@@ -85,9 +87,12 @@ Expected<Plan> makePlan(const RunContext& c) {
         return c.has(n) ? c.number(n) : def;
     };
     GnssImuEkf::Params& p = plan.params;
-    const QString attitude = c.has(QStringLiteral("attitude")) ? c.text(QStringLiteral("attitude")) : QStringLiteral("ekf");
-    if (attitude == QLatin1String("kalman")) p.attitude = AttitudeSource::Kalman;
-    else if (attitude == QLatin1String("ekf")) p.attitude = AttitudeSource::Ekf;
+    const QString attitude =
+        c.has(QStringLiteral("attitude")) ? c.text(QStringLiteral("attitude")) : QStringLiteral("ekf");
+    if (attitude == QLatin1String("kalman"))
+        p.attitude = AttitudeSource::Kalman;
+    else if (attitude == QLatin1String("ekf"))
+        p.attitude = AttitudeSource::Ekf;
     else if (attitude != QLatin1String("orientation"))
         return makeError(QStringLiteral("attitude: unknown '%1' (use orientation, kalman or ekf)").arg(attitude));
     p.accNoise = num("acc_noise", p.accNoise);
@@ -99,9 +104,11 @@ Expected<Plan> makePlan(const RunContext& c) {
     auto series = gnssSeries(plan.gnss.stream->info(), *plan.gnss.data, c.inputPath(1), useVelocity, plan.origin);
     if (!series) return series.error();
     plan.series = std::move(*series);
-    if (plan.series.t.empty() || plan.series.t.back() < plan.imu.data->t.front() || plan.series.t.front() > plan.imu.data->t.back())
-        return makeError(QStringLiteral("GNSS stream '%1' does not overlap the IMU stream '%2' in time (same clock expected)")
-                             .arg(c.inputPath(1), c.inputPath(0)));
+    if (plan.series.t.empty() || plan.series.t.back() < plan.imu.data->t.front() ||
+        plan.series.t.front() > plan.imu.data->t.back())
+        return makeError(
+            QStringLiteral("GNSS stream '%1' does not overlap the IMU stream '%2' in time (same clock expected)")
+                .arg(c.inputPath(1), c.inputPath(0)));
     return plan;
 }
 }  // namespace
@@ -109,37 +116,50 @@ Expected<Plan> makePlan(const RunContext& c) {
 QString GnssImuProcessor::name() const { return tr("GNSS/IMU fusion"); }
 
 QString GnssImuProcessor::description() const {
-    return tr("Loosely-coupled GNSS/IMU extended Kalman filter (Kim et al., Sensors 2023): position, velocity and "
-              "attitude in a local ENU frame from the first fix, driven by the IMU at its rate and corrected by GNSS "
-              "position (and velocity) at theirs; output at the IMU rate with horizontal speed and distance.");
+    return tr(
+        "Loosely-coupled GNSS/IMU extended Kalman filter (Kim et al., Sensors 2023): position, velocity and "
+        "attitude in a local ENU frame from the first fix, driven by the IMU at its rate and corrected by GNSS "
+        "position (and velocity) at theirs; output at the IMU rate with horizontal speed and distance.");
 }
 
 ParameterSpecs GnssImuProcessor::parameters() const {
     return {
-        ParameterSpec::choice(QStringLiteral("attitude"), {QStringLiteral("orientation"), QStringLiteral("kalman"), QStringLiteral("ekf")},
-                              QStringLiteral("ekf"),
-                              tr("Inclination source: ekf (the EKF's own quaternion, corrected through the GNSS velocity; "
-                                 "best on sprints), orientation (the VQF-class filter) or kalman (the seed's quaternion "
-                                 "Kalman filter). Heading always comes from the EKF.")),
+        ParameterSpec::choice(
+            QStringLiteral("attitude"),
+            {QStringLiteral("orientation"), QStringLiteral("kalman"), QStringLiteral("ekf")}, QStringLiteral("ekf"),
+            tr("Inclination source: ekf (the EKF's own quaternion, corrected through the GNSS velocity; "
+               "best on sprints), orientation (the VQF-class filter) or kalman (the seed's quaternion "
+               "Kalman filter). Heading always comes from the EKF.")),
         ParameterSpec::number(QStringLiteral("acc_noise"), 0.3, 1e-6, kInf, QStringLiteral("m/s^2"),
                               tr("Process noise of the specific force (includes attitude errors).")),
-        ParameterSpec::number(QStringLiteral("gnss_sigma"), 1.8, 1e-6, kInf, QStringLiteral("m"), tr("GNSS horizontal position noise per axis.")),
-        ParameterSpec::number(QStringLiteral("gnss_vertical_sigma"), 4.0, 1e-6, kInf, QStringLiteral("m"), tr("GNSS vertical position noise.")),
-        ParameterSpec::number(QStringLiteral("gnss_velocity_sigma"), 0.1, 1e-6, kInf, QStringLiteral("m/s"), tr("GNSS velocity noise per axis.")),
+        ParameterSpec::number(QStringLiteral("gnss_sigma"), 1.8, 1e-6, kInf, QStringLiteral("m"),
+                              tr("GNSS horizontal position noise per axis.")),
+        ParameterSpec::number(QStringLiteral("gnss_vertical_sigma"), 4.0, 1e-6, kInf, QStringLiteral("m"),
+                              tr("GNSS vertical position noise.")),
+        ParameterSpec::number(QStringLiteral("gnss_velocity_sigma"), 0.1, 1e-6, kInf, QStringLiteral("m/s"),
+                              tr("GNSS velocity noise per axis.")),
         ParameterSpec::boolean(QStringLiteral("use_velocity"), true, tr("Use GNSS velocity columns when present.")),
         ParameterSpec::number(QStringLiteral("gravity"), 9.81, 9.7, 9.9, QStringLiteral("m/s^2"), tr("Local gravity.")),
     };
 }
 
 QList<InputSpec> GnssImuProcessor::inputs() const {
-    return {InputSpec{QStringLiteral("imu"), {QStringLiteral("imu")}, false, false, tr("IMU: acc_x..z (m/s^2), gyr_x..z (rad/s).")},
-            InputSpec{QStringLiteral("gnss"), {QStringLiteral("gnss")}, false, false,
+    return {InputSpec{QStringLiteral("imu"),
+                      {QStringLiteral("imu")},
+                      false,
+                      false,
+                      tr("IMU: acc_x..z (m/s^2), gyr_x..z (rad/s).")},
+            InputSpec{QStringLiteral("gnss"),
+                      {QStringLiteral("gnss")},
+                      false,
+                      false,
                       tr("GNSS: lat, lon, alt[, vn, ve, vd] or x, y, z[, vx, vy, vz] (ENU), same clock as the IMU.")}};
 }
 
 QList<OutputSpec> GnssImuProcessor::outputs() const {
-    return {OutputSpec{QStringLiteral("trajectory"), false, QString(),
-                       tr("x, y, z, vx, vy, vz (ENU from the first fix), qw..qz, speed (m/s, horizontal), distance (m).")}};
+    return {
+        OutputSpec{QStringLiteral("trajectory"), false, QString(),
+                   tr("x, y, z, vx, vy, vz (ENU from the first fix), qw..qz, speed (m/s, horizontal), distance (m).")}};
 }
 
 Status GnssImuProcessor::prepare(const RunContext& context) const { return statusOf(makePlan(context)); }
@@ -164,17 +184,22 @@ Expected<std::vector<ProcessorOutput>> GnssImuProcessor::run(const RunContext& c
             row[3 + i] = track.velocity[r][i];
         }
         const Quat& q = track.orientation[r];
-        row[6] = q.w(); row[7] = q.x(); row[8] = q.y(); row[9] = q.z();
+        row[6] = q.w();
+        row[7] = q.x();
+        row[8] = q.y();
+        row[9] = q.z();
         row[10] = track.speed[r];
         row[11] = track.distance[r];
     }
     context.report(1.0);
     QJsonObject attributes{{"origin", plan->origin}, {"sampling_rate", 1.0 / plan->ts}};
     std::vector<ProcessorOutput> outputs;
-    outputs.push_back({QString(), outputStream(QStringLiteral("trajectory"), QStringLiteral("ENU"),
-                                               columnsOf({"x", "y", "z", "vx", "vy", "vz", "qw", "qx", "qy", "qz", "speed", "distance"},
-                                                         {"m", "m", "m", "m/s", "m/s", "m/s", "1", "1", "1", "1", "m/s", "m"}),
-                                               std::move(out), attributes)});
+    outputs.push_back(
+        {QString(),
+         outputStream(QStringLiteral("trajectory"), QStringLiteral("ENU"),
+                      columnsOf({"x", "y", "z", "vx", "vy", "vz", "qw", "qx", "qy", "qz", "speed", "distance"},
+                                {"m", "m", "m", "m/s", "m/s", "m/s", "1", "1", "1", "1", "m/s", "m"}),
+                      std::move(out), attributes)});
     return outputs;
 }
 

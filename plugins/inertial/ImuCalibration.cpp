@@ -61,8 +61,8 @@ std::optional<AccCalibration> calibrateAccelerometer(const std::vector<Vec3>& me
     double offset[3] = {0, 0, 0}, scale[3] = {1, 1, 1};
     ceres::Problem problem;
     for (const Vec3& m : means)
-        problem.AddResidualBlock(new ceres::AutoDiffCostFunction<AccResidual, 1, 3, 3>(new AccResidual{m, gravity}), nullptr,
-                                 offset, scale);
+        problem.AddResidualBlock(new ceres::AutoDiffCostFunction<AccResidual, 1, 3, 3>(new AccResidual{m, gravity}),
+                                 nullptr, offset, scale);
     ceres::Solver::Summary summary;
     ceres::Solve(solverOptions(), &problem, &summary);
     if (!summary.IsSolutionUsable()) return std::nullopt;
@@ -97,7 +97,8 @@ std::optional<MagCalibration> calibrateMagnetometer(const std::vector<Vec3>& sam
     double a[6] = {1 / radius0, 0, 0, 1 / radius0, 0, 1 / radius0};
     ceres::Problem problem;
     for (const Vec3& m : samples)
-        problem.AddResidualBlock(new ceres::AutoDiffCostFunction<MagResidual, 1, 3, 6>(new MagResidual{m}), nullptr, b, a);
+        problem.AddResidualBlock(new ceres::AutoDiffCostFunction<MagResidual, 1, 3, 6>(new MagResidual{m}), nullptr, b,
+                                 a);
     ceres::Solver::Summary summary;
     ceres::Solve(solverOptions(), &problem, &summary);
     if (!summary.IsSolutionUsable()) return std::nullopt;

@@ -21,10 +21,10 @@ struct AccCalibration {
 };
 
 struct MagCalibration {
-    Vec3 hardIron = Vec3::Zero();          // µT
-    Mat3 softIron = Mat3::Identity();      // A, symmetric
-    double radius = 0.0;                   // µT, field magnitude after calibration
-    double rms = 0.0;                      // µT, residual of |m_cal| − radius
+    Vec3 hardIron = Vec3::Zero();      // µT
+    Mat3 softIron = Mat3::Identity();  // A, symmetric
+    double radius = 0.0;               // µT, field magnitude after calibration
+    double rms = 0.0;                  // µT, residual of |m_cal| − radius
     Vec3 apply(const Vec3& m) const { return softIron * (m - hardIron); }
 };
 

@@ -18,8 +18,8 @@ struct Calibration {
     MagCalibration mag;
 };
 
-const QStringList kRows{"gyr_offset", "acc_offset", "acc_scale", "mag_hard_iron", "mag_soft_iron_0", "mag_soft_iron_1",
-                        "mag_soft_iron_2"};
+const QStringList kRows{"gyr_offset",      "acc_offset",      "acc_scale",      "mag_hard_iron",
+                        "mag_soft_iron_0", "mag_soft_iron_1", "mag_soft_iron_2"};
 
 Table toTable(const Calibration& c, QJsonObject attributes) {
     Table t;
@@ -29,8 +29,13 @@ Table toTable(const Calibration& c, QJsonObject attributes) {
     TableColumn x{QStringLiteral("x"), QString(), false, {}, {}}, y = x, z = x;
     y.name = QStringLiteral("y");
     z.name = QStringLiteral("z");
-    const std::vector<Vec3> rows{c.gyrOffset, c.acc.offset, c.acc.scale, c.mag.hardIron, c.mag.softIron.row(0).transpose(),
-                                 c.mag.softIron.row(1).transpose(), c.mag.softIron.row(2).transpose()};
+    const std::vector<Vec3> rows{c.gyrOffset,
+                                 c.acc.offset,
+                                 c.acc.scale,
+                                 c.mag.hardIron,
+                                 c.mag.softIron.row(0).transpose(),
+                                 c.mag.softIron.row(1).transpose(),
+                                 c.mag.softIron.row(2).transpose()};
     for (const Vec3& v : rows) {
         x.numbers.push_back(v.x());
         y.numbers.push_back(v.y());
@@ -66,10 +71,11 @@ Expected<Calibration> fromTable(const Table& t, const QString& path) {
 QString ImuCalibrationProcessor::name() const { return tr("IMU calibration"); }
 
 QString ImuCalibrationProcessor::description() const {
-    return tr("Gyroscope offset from rest periods, accelerometer offset and scale from at least six static positions "
-              "(each axis up and down), magnetometer hard/soft iron from an ellipsoid fit, and a saturation check. "
-              "Writes the calibrated stream and the calibration table (<output>-calibration); given a calibration "
-              "table as second input it applies that instead of estimating.");
+    return tr(
+        "Gyroscope offset from rest periods, accelerometer offset and scale from at least six static positions "
+        "(each axis up and down), magnetometer hard/soft iron from an ellipsoid fit, and a saturation check. "
+        "Writes the calibrated stream and the calibration table (<output>-calibration); given a calibration "
+        "table as second input it applies that instead of estimating.");
 }
 
 ParameterSpecs ImuCalibrationProcessor::parameters() const {
@@ -111,14 +117,19 @@ ParameterSpecs ImuCalibrationProcessor::parameters() const {
 
 QList<InputSpec> ImuCalibrationProcessor::inputs() const {
     return {InputSpec{QStringLiteral("imu"), {QStringLiteral("imu")}, false, false, tr("IMU stream to calibrate.")},
-            InputSpec{QStringLiteral("calibration"), {QStringLiteral("calibration")}, true, true,
+            InputSpec{QStringLiteral("calibration"),
+                      {QStringLiteral("calibration")},
+                      true,
+                      true,
                       tr("Optional calibration table to apply instead of estimating one.")}};
 }
 
 QList<OutputSpec> ImuCalibrationProcessor::outputs() const {
-    return {OutputSpec{QStringLiteral("imu"), false, QString(), tr("Calibrated IMU stream.")},
-            OutputSpec{QStringLiteral("calibration"), true, QStringLiteral("calibration"),
-                       tr("Calibration parameters: rows gyr_offset, acc_offset, acc_scale, mag_hard_iron, mag_soft_iron_0..2.")}};
+    return {
+        OutputSpec{QStringLiteral("imu"), false, QString(), tr("Calibrated IMU stream.")},
+        OutputSpec{
+            QStringLiteral("calibration"), true, QStringLiteral("calibration"),
+            tr("Calibration parameters: rows gyr_offset, acc_offset, acc_scale, mag_hard_iron, mag_soft_iron_0..2.")}};
 }
 
 Expected<std::vector<ProcessorOutput>> ImuCalibrationProcessor::run(const RunContext& c) const {
@@ -132,7 +143,9 @@ Expected<std::vector<ProcessorOutput>> ImuCalibrationProcessor::run(const RunCon
     const auto stride = static_cast<std::size_t>(in.columns);
     const ImuBatch batch{in.values.data() + columns->gyr, in.values.data() + columns->acc,
                          columns->mag >= 0 ? in.values.data() + columns->mag : nullptr, in.rows(), stride};
-    const auto mode = [&](const char* n) { return c.has(QLatin1String(n)) ? c.text(QLatin1String(n)) : QStringLiteral("auto"); };
+    const auto mode = [&](const char* n) {
+        return c.has(QLatin1String(n)) ? c.text(QLatin1String(n)) : QStringLiteral("auto");
+    };
     const double gravity = c.has(QStringLiteral("gravity")) ? c.number(QStringLiteral("gravity")) : 9.81;
 
     Calibration cal;
@@ -155,7 +168,8 @@ Expected<std::vector<ProcessorOutput>> ImuCalibrationProcessor::run(const RunCon
         if (c.isCancelled()) return cancelledError();
         if (mode("gyr_offset") != QLatin1String("off")) {
             if (segments.empty() && mode("gyr_offset") == QLatin1String("on"))
-                return makeError(QStringLiteral("gyr_offset: no rest period of at least min_static found in '%1'").arg(c.inputPath(0)));
+                return makeError(QStringLiteral("gyr_offset: no rest period of at least min_static found in '%1'")
+                                     .arg(c.inputPath(0)));
             double n = 0;
             for (const auto& s : segments) {
                 const double w = static_cast<double>(s.end - s.begin);
@@ -178,7 +192,8 @@ Expected<std::vector<ProcessorOutput>> ImuCalibrationProcessor::run(const RunCon
                 attributes.insert(QStringLiteral("acc_rms"), acc->rms);
             } else if (mode("acc_calibration") == QLatin1String("on")) {
                 return makeError(QStringLiteral("acc_calibration: need at least 6 static positions of min_static with "
-                                                "each axis pointing up and down; found %1 static periods").arg(segments.size()));
+                                                "each axis pointing up and down; found %1 static periods")
+                                     .arg(segments.size()));
             }
         }
         if (mode("mag_calibration") != QLatin1String("off") && columns->mag >= 0) {
@@ -194,11 +209,13 @@ Expected<std::vector<ProcessorOutput>> ImuCalibrationProcessor::run(const RunCon
                 attributes.insert(QStringLiteral("mag_rms"), mag->rms);
                 attributes.insert(QStringLiteral("mag_radius"), mag->radius);
             } else if (mode("mag_calibration") == QLatin1String("on")) {
-                return makeError(QStringLiteral("mag_calibration: the ellipsoid fit failed (rotate the sensor through many "
-                                                "directions away from magnetic disturbances)"));
+                return makeError(
+                    QStringLiteral("mag_calibration: the ellipsoid fit failed (rotate the sensor through many "
+                                   "directions away from magnetic disturbances)"));
             }
         } else if (mode("mag_calibration") == QLatin1String("on")) {
-            return makeError(QStringLiteral("mag_calibration: stream '%1' has no mag_x..z columns").arg(c.inputPath(0)));
+            return makeError(
+                QStringLiteral("mag_calibration: stream '%1' has no mag_x..z columns").arg(c.inputPath(0)));
         }
     }
     attributes.insert(QStringLiteral("estimated"), estimated.join(QLatin1Char(',')));

@@ -4,7 +4,8 @@ namespace athlos::inertial {
 
 int tripleIndex(const StreamInfo& info, const QString& prefix) {
     const int x = info.columnIndex(prefix + QStringLiteral("x"));
-    if (x < 0 || info.columnIndex(prefix + QStringLiteral("y")) != x + 1 || info.columnIndex(prefix + QStringLiteral("z")) != x + 2)
+    if (x < 0 || info.columnIndex(prefix + QStringLiteral("y")) != x + 1 ||
+        info.columnIndex(prefix + QStringLiteral("z")) != x + 2)
         return -1;
     return x;
 }
@@ -18,10 +19,12 @@ Expected<ImuColumns> imuColumns(const InputSamples& input, bool requireMag) {
     const QString have = info.columnNames().join(QStringLiteral(", "));
     if (c.acc < 0 || c.gyr < 0)
         return input.error(QStringLiteral("needs adjacent columns acc_x, acc_y, acc_z and gyr_x, gyr_y, gyr_z "
-                                          "(it has: %1)").arg(have));
+                                          "(it has: %1)")
+                               .arg(have));
     if (requireMag && c.mag < 0)
         return input.error(QStringLiteral("mode: 9d needs magnetometer columns mag_x, mag_y, mag_z (it has: %1); "
-                                          "use mode=6d").arg(have));
+                                          "use mode=6d")
+                               .arg(have));
     return c;
 }
 

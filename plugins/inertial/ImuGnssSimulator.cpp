@@ -11,10 +11,10 @@ namespace {
 // One phase of the scripted motion: run towards a target speed with a limited acceleration while
 // turning at a given rate.
 struct Phase {
-    double duration;    // s
-    double speed;       // m/s target
-    double turnRate;    // rad/s
-    bool sprint;        // a 10 m sprint from standstill starts here (for the per-zone tables)
+    double duration;  // s
+    double speed;     // m/s target
+    double turnRate;  // rad/s
+    bool sprint;      // a 10 m sprint from standstill starts here (for the per-zone tables)
 };
 
 std::vector<Phase> script(std::mt19937_64& rng, double duration, double rest) {
@@ -119,8 +119,10 @@ SimulatedData simulateImuGnss(const SimulatorParams& p) {
         // Trunk: leans into the acceleration (smoothly: a body does not tilt in one sample) and the
         // turn, sways with the steps.
         lean += (accel - lean) * std::min(1.0, dt / 0.2);
-        const double pitch = 0.05 + 0.5 * std::atan(lean / p.gravity) + 0.03 * std::sin(stepPhase) * std::min(1.0, speed);
-        const double roll = -0.5 * std::atan(speed * yawRate / p.gravity) + 0.03 * std::cos(0.5 * stepPhase) * std::min(1.0, speed);
+        const double pitch =
+            0.05 + 0.5 * std::atan(lean / p.gravity) + 0.03 * std::sin(stepPhase) * std::min(1.0, speed);
+        const double roll =
+            -0.5 * std::atan(speed * yawRate / p.gravity) + 0.03 * std::cos(0.5 * stepPhase) * std::min(1.0, speed);
         d.orientation[k] = bodyOrientation(heading + p.mountYaw, pitch, roll);
     }
 
@@ -139,7 +141,8 @@ SimulatedData simulateImuGnss(const SimulatorParams& p) {
         const Quat& q = d.orientation[k];
         // Sample k is the constant body rate over [t_k−1, t_k]: a filter that integrates sample k and
         // then reports reproduces q_k exactly from error-free data.
-        const Vec3 omega = k > 0 ? Vec3(math::rotationVectorFromQuat(d.orientation[k - 1].conjugate() * q) / dt) : Vec3::Zero();
+        const Vec3 omega =
+            k > 0 ? Vec3(math::rotationVectorFromQuat(d.orientation[k - 1].conjugate() * q) / dt) : Vec3::Zero();
         const Vec3 f = q.conjugate() * (accE[k] + Vec3(0.0, 0.0, p.gravity));
         Vec3 g, a, m;
         for (int i = 0; i < 3; ++i) {
@@ -160,7 +163,8 @@ SimulatedData simulateImuGnss(const SimulatorParams& p) {
     const double hs = p.gnssHorizontalSigma / std::numbers::sqrt2;
     const auto step = static_cast<std::size_t>(std::llround(p.imuRate / p.gnssRate));
     for (std::size_t k = 0; k < n; k += step) {
-        for (int i = 0; i < 3; ++i) corr[i] = phi * corr[i] + std::sqrt(1.0 - phi * phi) * p.gnssCorrelatedSigma * n01(rng);
+        for (int i = 0; i < 3; ++i)
+            corr[i] = phi * corr[i] + std::sqrt(1.0 - phi * phi) * p.gnssCorrelatedSigma * n01(rng);
         const Vec3 white(hs * n01(rng), hs * n01(rng), p.gnssVerticalSigma * n01(rng));
         d.gnssT.push_back(d.imuT[k]);
         d.gnssPosition.push_back(d.position[k] + corr + white);

@@ -18,32 +18,32 @@ namespace athlos::inertial {
 
 struct SimulatorParams {
     std::uint64_t seed = 1;
-    double duration = 90.0;        // s, including the initial rest
-    double initialRest = 5.0;      // s
-    double imuRate = 100.0;        // Hz
-    double gnssRate = 10.0;        // Hz
-    double mountYaw = 0.3;         // rad, sensor x axis relative to the running direction
+    double duration = 90.0;    // s, including the initial rest
+    double initialRest = 5.0;  // s
+    double imuRate = 100.0;    // Hz
+    double gnssRate = 10.0;    // Hz
+    double mountYaw = 0.3;     // rad, sensor x axis relative to the running direction
     // false: the same rotations (turns, lean, sway) but no translation, so the accelerometer sees
     // gravity only — for orientation tests where a sprint's sustained acceleration (which no
     // IMU-only filter can tell from tilt) would dominate the error.
     bool translation = true;
     // IMU errors
-    double gyrBias = 0.5 * math::kDeg;  // rad/s, per-axis bias drawn in ±this
-    double gyrNoise = 0.003;       // rad/s per sample (σ)
-    double gyrScale = 0.01;        // relative, per axis in ±this
+    double gyrBias = 0.5 * math::kDeg;      // rad/s, per-axis bias drawn in ±this
+    double gyrNoise = 0.003;                // rad/s per sample (σ)
+    double gyrScale = 0.01;                 // relative, per axis in ±this
     double gyrRange = 1000.0 * math::kDeg;  // rad/s, saturation
-    double accBias = 0.1;          // m/s², per axis in ±this
-    double accNoise = 0.05;        // m/s² per sample (σ)
+    double accBias = 0.1;                   // m/s², per axis in ±this
+    double accNoise = 0.05;                 // m/s² per sample (σ)
     double accScale = 0.01;
-    double accRange = 16.0 * 9.81; // m/s²
-    double magNoise = 0.5;         // µT
+    double accRange = 16.0 * 9.81;           // m/s²
+    double magNoise = 0.5;                   // µT
     Vec3 magField = Vec3(0.0, 20.0, -44.0);  // µT, ENU (north, dip ≈ 65°)
     // GNSS errors
-    double gnssHorizontalSigma = 2.5;  // m, horizontal RMS of the white error (per axis 2.5/√2)
-    double gnssVerticalSigma = 4.0;    // m
-    double gnssCorrelatedSigma = 0.5;  // m per axis, slowly varying error
-    double gnssCorrelationTime = 60.0; // s
-    double gnssVelocitySigma = 0.1;    // m/s per axis
+    double gnssHorizontalSigma = 2.5;   // m, horizontal RMS of the white error (per axis 2.5/√2)
+    double gnssVerticalSigma = 4.0;     // m
+    double gnssCorrelatedSigma = 0.5;   // m per axis, slowly varying error
+    double gnssCorrelationTime = 60.0;  // s
+    double gnssVelocitySigma = 0.1;     // m/s per axis
     double gravity = 9.81;
 };
 
@@ -54,9 +54,9 @@ struct SimulatedData {
     // Truth at the IMU times (ENU, origin at the start): position, velocity, orientation, sprint flags.
     std::vector<Vec3> position, velocity;
     std::vector<Quat> orientation;
-    std::vector<double> distance;            // horizontal path length since the start (m)
-    std::vector<int> sprint;                 // index of the 10 m sprint this sample belongs to, or -1
-    std::vector<double> sprintDistance;      // distance since that sprint's start (m), NaN outside
+    std::vector<double> distance;        // horizontal path length since the start (m)
+    std::vector<int> sprint;             // index of the 10 m sprint this sample belongs to, or -1
+    std::vector<double> sprintDistance;  // distance since that sprint's start (m), NaN outside
     // GNSS at gnssRate: t, position and velocity in ENU (m, m/s).
     std::vector<double> gnssT;
     std::vector<Vec3> gnssPosition, gnssVelocity;

@@ -11,9 +11,9 @@
 namespace athlos::inertial {
 
 std::vector<std::shared_ptr<const Processor>> InertialPlugin::processors() const {
-    return {std::make_shared<OrientationProcessor>(), std::make_shared<ImuCalibrationProcessor>(),
-            std::make_shared<GnssImuProcessor>(), std::make_shared<SimulateImuGnssProcessor>(),
-            std::make_shared<JointAnglesProcessor>(), std::make_shared<SimulateLimbProcessor>(),
+    return {std::make_shared<OrientationProcessor>(),       std::make_shared<ImuCalibrationProcessor>(),
+            std::make_shared<GnssImuProcessor>(),           std::make_shared<SimulateImuGnssProcessor>(),
+            std::make_shared<JointAnglesProcessor>(),       std::make_shared<SimulateLimbProcessor>(),
             std::make_shared<SegmentCalibrationProcessor>()};
 }
 

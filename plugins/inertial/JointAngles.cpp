@@ -42,7 +42,8 @@ QStringList jointNames() {
 Expected<Joint> parseJoint(const QString& name) {
     const int i = jointNames().indexOf(name);
     if (i < 0)
-        return makeError(QStringLiteral("joint: '%1' is not one of %2").arg(name, jointNames().join(QStringLiteral(", "))));
+        return makeError(
+            QStringLiteral("joint: '%1' is not one of %2").arg(name, jointNames().join(QStringLiteral(", "))));
     return static_cast<Joint>(i);
 }
 
@@ -58,10 +59,14 @@ QString sideName(Side side) { return side == Side::Right ? QStringLiteral("right
 
 QStringList jointSegments(Joint joint) {
     switch (joint) {
-    case Joint::Knee: return {QStringLiteral("thigh"), QStringLiteral("shank")};
-    case Joint::Hip: return {QStringLiteral("pelvis"), QStringLiteral("thigh")};
-    case Joint::Ankle: return {QStringLiteral("shank"), QStringLiteral("foot")};
-    case Joint::Trunk: return {QStringLiteral("pelvis"), QStringLiteral("thorax")};
+        case Joint::Knee:
+            return {QStringLiteral("thigh"), QStringLiteral("shank")};
+        case Joint::Hip:
+            return {QStringLiteral("pelvis"), QStringLiteral("thigh")};
+        case Joint::Ankle:
+            return {QStringLiteral("shank"), QStringLiteral("foot")};
+        case Joint::Trunk:
+            return {QStringLiteral("pelvis"), QStringLiteral("thorax")};
     }
     return {};
 }
@@ -87,7 +92,8 @@ double longAxisAngle(const Quat& proximalSegment, const Quat& distalSegment) {
 
 JointAngles::Sample JointAngles::update(const Quat& proximalSensor, const Quat& distalSensor) const {
     const Quat proximal = (proximalSensor * params_.proximalMount).normalized();
-    const Quat distal = (math::headingRotation(params_.headingOffset) * distalSensor * params_.distalMount).normalized();
+    const Quat distal =
+        (math::headingRotation(params_.headingOffset) * distalSensor * params_.distalMount).normalized();
     Sample s;
     s.relative = math::canonical((proximal.conjugate() * distal).normalized());
     s.cardan = math::eulerFromQuaternion(s.relative, zxy());
@@ -169,15 +175,21 @@ Expected<Quat> parseQuaternion(const QString& text, const QString& parameter) {
         bool ok = false;
         v[i] = parts[i].toDouble(&ok);
         if (!ok || !std::isfinite(v[i]))
-            return makeError(QStringLiteral("%1: component %2 '%3' is not a number").arg(parameter).arg(i + 1).arg(parts[i]));
+            return makeError(
+                QStringLiteral("%1: component %2 '%3' is not a number").arg(parameter).arg(i + 1).arg(parts[i]));
     }
-    if (v.norm() < 1e-9) return makeError(QStringLiteral("%1: the quaternion '%2' has zero length").arg(parameter, text));
+    if (v.norm() < 1e-9)
+        return makeError(QStringLiteral("%1: the quaternion '%2' has zero length").arg(parameter, text));
     return math::quatFromWxyz(v.normalized());
 }
 
 QString formatQuaternion(const Quat& q) {
     const Quat c = math::canonical(q.normalized());
-    return QStringLiteral("%1,%2,%3,%4").arg(c.w(), 0, 'g', 12).arg(c.x(), 0, 'g', 12).arg(c.y(), 0, 'g', 12).arg(c.z(), 0, 'g', 12);
+    return QStringLiteral("%1,%2,%3,%4")
+        .arg(c.w(), 0, 'g', 12)
+        .arg(c.x(), 0, 'g', 12)
+        .arg(c.y(), 0, 'g', 12)
+        .arg(c.z(), 0, 'g', 12);
 }
 
 }  // namespace athlos::inertial

@@ -77,11 +77,11 @@ public:
 
     struct Sample {
         AnatomicalAngles angles;
-        math::Vec3 cardan = math::Vec3::Zero();  // α, β, γ of the Z-X-Y decomposition (rad)
+        math::Vec3 cardan = math::Vec3::Zero();        // α, β, γ of the Z-X-Y decomposition (rad)
         math::Quat relative = math::Quat::Identity();  // distal segment → proximal segment
-        double longAxisAngle = 0.0;                  // rad, acos(y_d · y_p)
-        double proximalInclination = 0.0;            // rad
-        double distalInclination = 0.0;              // rad
+        double longAxisAngle = 0.0;                    // rad, acos(y_d · y_p)
+        double proximalInclination = 0.0;              // rad
+        double distalInclination = 0.0;                // rad
     };
 
     JointAngles() = default;
@@ -91,13 +91,15 @@ public:
     // One sample from the two sensor→earth orientations.
     Sample update(const math::Quat& proximalSensor, const math::Quat& distalSensor) const;
     // Every sample of two equally long sequences.
-    std::vector<Sample> updateBatch(std::span<const math::Quat> proximalSensor, std::span<const math::Quat> distalSensor) const;
+    std::vector<Sample> updateBatch(std::span<const math::Quat> proximalSensor,
+                                    std::span<const math::Quat> distalSensor) const;
 
     // Heading offset (rad, about earth z) to apply to the distal sensor's earth frame so that both
     // segments' anterior axes point the same way on the horizontal plane over the given samples
     // (circular mean; samples where an anterior axis is nearly vertical are skipped). 0 if none is usable.
-    static double estimateHeadingOffset(std::span<const math::Quat> proximalSensor, std::span<const math::Quat> distalSensor,
-                                        const math::Quat& proximalMount, const math::Quat& distalMount);
+    static double estimateHeadingOffset(std::span<const math::Quat> proximalSensor,
+                                        std::span<const math::Quat> distalSensor, const math::Quat& proximalMount,
+                                        const math::Quat& distalMount);
 
 private:
     Params params_;
@@ -105,7 +107,8 @@ private:
 
 // Sample of a quaternion sequence at times t by SLERP between neighbours (times strictly increasing);
 // outside the sequence's span the result is NaN.
-std::vector<math::Quat> slerpAt(std::span<const double> sourceTime, std::span<const math::Quat> source, std::span<const double> t);
+std::vector<math::Quat> slerpAt(std::span<const double> sourceTime, std::span<const math::Quat> source,
+                                std::span<const double> t);
 
 // "w,x,y,z" (commas or spaces) → normalised quaternion; error names the parameter.
 Expected<math::Quat> parseQuaternion(const QString& text, const QString& parameter);

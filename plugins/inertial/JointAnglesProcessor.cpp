@@ -64,8 +64,9 @@ Expected<Plan> makePlan(const RunContext& c, bool load) {
         // A calibration table replaces the mount parameters; giving both would be ambiguous.
         for (const char* name : {"proximal_mount", "distal_mount"})
             if (c.has(QLatin1String(name)) && c.text(QLatin1String(name)) != kIdentity)
-                return makeError(QStringLiteral("%1: give either the mount parameters or the calibration table '%2', not both")
-                                     .arg(QLatin1String(name), c.inputPath(2)));
+                return makeError(
+                    QStringLiteral("%1: give either the mount parameters or the calibration table '%2', not both")
+                        .arg(QLatin1String(name), c.inputPath(2)));
         const QStringList segments = jointSegments(*joint);
         auto p = segmentMount(*c.table(2), c.inputPath(2), segments[0]);
         if (!p) return p.error();
@@ -74,7 +75,8 @@ Expected<Plan> makePlan(const RunContext& c, bool load) {
         plan.params.proximalMount = *p;
         plan.params.distalMount = *d;
     }
-    plan.alignHeading = !c.has(QStringLiteral("heading")) || c.text(QStringLiteral("heading")) == QLatin1String("align-start");
+    plan.alignHeading =
+        !c.has(QStringLiteral("heading")) || c.text(QStringLiteral("heading")) == QLatin1String("align-start");
     if (c.has(QStringLiteral("align_duration"))) plan.alignDuration = c.number(QStringLiteral("align_duration"));
     if (!load) return plan;
 
@@ -94,7 +96,12 @@ Expected<Plan> makePlan(const RunContext& c, bool load) {
         return makeError(QStringLiteral("stream '%1' is empty").arg(tp.empty() ? c.inputPath(0) : c.inputPath(1)));
     if (tp.back() < td.front() || td.back() < tp.front())
         return makeError(QStringLiteral("streams '%1' (%2–%3 s) and '%4' (%5–%6 s) do not overlap in time")
-                             .arg(c.inputPath(0)).arg(tp.front()).arg(tp.back()).arg(c.inputPath(1)).arg(td.front()).arg(td.back()));
+                             .arg(c.inputPath(0))
+                             .arg(tp.front())
+                             .arg(tp.back())
+                             .arg(c.inputPath(1))
+                             .arg(td.front())
+                             .arg(td.back()));
     plan.qProximal = std::move(*qp);
     plan.qDistal = tp == td ? std::move(*qd) : slerpAt(td, *qd, tp);
     return plan;
@@ -104,46 +111,63 @@ Expected<Plan> makePlan(const RunContext& c, bool load) {
 QString JointAnglesProcessor::name() const { return tr("Joint angles"); }
 
 QString JointAnglesProcessor::description() const {
-    return tr("Knee, hip, ankle or trunk angles from the orientations of a proximal and a distal sensor (ISB recommendations, "
-              "Grood & Suntay joint coordinate system = Z-X-Y Cardan angles of the relative segment rotation): flexion, "
-              "abduction and internal rotation, positive on both sides (the left side is mirrored). The sensors' mounts "
-              "(segment to sensor rotations) come from parameters or a segment-calibration table. Independent 6D headings "
-              "are aligned over the first seconds, where the segments must face the same way (e.g. standing).");
+    return tr(
+        "Knee, hip, ankle or trunk angles from the orientations of a proximal and a distal sensor (ISB "
+        "recommendations, "
+        "Grood & Suntay joint coordinate system = Z-X-Y Cardan angles of the relative segment rotation): flexion, "
+        "abduction and internal rotation, positive on both sides (the left side is mirrored). The sensors' mounts "
+        "(segment to sensor rotations) come from parameters or a segment-calibration table. Independent 6D headings "
+        "are aligned over the first seconds, where the segments must face the same way (e.g. standing).");
 }
 
 ParameterSpecs JointAnglesProcessor::parameters() const {
     return {
-        ParameterSpec::choice(QStringLiteral("joint"), jointNames(), QStringLiteral("knee"),
-                              tr("knee (thigh → shank), hip (pelvis → thigh), ankle (shank → foot) or trunk (pelvis → thorax).")),
-        ParameterSpec::choice(QStringLiteral("side"), {QStringLiteral("right"), QStringLiteral("left")}, QStringLiteral("right"),
-                              tr("Body side; the left side is mirrored so that positive abduction and internal rotation mean "
-                                 "the same on both sides.")),
-        ParameterSpec::text(QStringLiteral("proximal_mount"), kIdentity,
-                            tr("Proximal segment frame in the sensor frame as a quaternion w,x,y,z (maps segment to sensor "
-                               "coordinates; ISB segment axes X anterior, Y superior, Z right).")),
-        ParameterSpec::text(QStringLiteral("distal_mount"), kIdentity, tr("Distal segment frame in the sensor frame (w,x,y,z).")),
-        ParameterSpec::choice(QStringLiteral("heading"), {QStringLiteral("align-start"), QStringLiteral("none")},
-                              QStringLiteral("align-start"),
-                              tr("align-start: rotate the distal sensor's earth frame about the vertical so that both segments "
-                                 "face the same way at the start (needed for 6D orientations); none: use the headings as they "
-                                 "are (9D or optical).")),
+        ParameterSpec::choice(
+            QStringLiteral("joint"), jointNames(), QStringLiteral("knee"),
+            tr("knee (thigh → shank), hip (pelvis → thigh), ankle (shank → foot) or trunk (pelvis → thorax).")),
+        ParameterSpec::choice(
+            QStringLiteral("side"), {QStringLiteral("right"), QStringLiteral("left")}, QStringLiteral("right"),
+            tr("Body side; the left side is mirrored so that positive abduction and internal rotation mean "
+               "the same on both sides.")),
+        ParameterSpec::text(
+            QStringLiteral("proximal_mount"), kIdentity,
+            tr("Proximal segment frame in the sensor frame as a quaternion w,x,y,z (maps segment to sensor "
+               "coordinates; ISB segment axes X anterior, Y superior, Z right).")),
+        ParameterSpec::text(QStringLiteral("distal_mount"), kIdentity,
+                            tr("Distal segment frame in the sensor frame (w,x,y,z).")),
+        ParameterSpec::choice(
+            QStringLiteral("heading"), {QStringLiteral("align-start"), QStringLiteral("none")},
+            QStringLiteral("align-start"),
+            tr("align-start: rotate the distal sensor's earth frame about the vertical so that both segments "
+               "face the same way at the start (needed for 6D orientations); none: use the headings as they "
+               "are (9D or optical).")),
         ParameterSpec::number(QStringLiteral("align_duration"), 2.0, 0.0, 3600.0, QStringLiteral("s"),
                               tr("Length of the start window for heading alignment.")),
     };
 }
 
 QList<InputSpec> JointAnglesProcessor::inputs() const {
-    return {InputSpec{QStringLiteral("proximal"), {QStringLiteral("orientation")}, false, false,
+    return {InputSpec{QStringLiteral("proximal"),
+                      {QStringLiteral("orientation")},
+                      false,
+                      false,
                       tr("Orientation of the proximal segment's sensor (qw, qx, qy, qz).")},
-            InputSpec{QStringLiteral("distal"), {QStringLiteral("orientation")}, false, false,
+            InputSpec{QStringLiteral("distal"),
+                      {QStringLiteral("orientation")},
+                      false,
+                      false,
                       tr("Orientation of the distal segment's sensor (qw, qx, qy, qz).")},
-            InputSpec{QStringLiteral("calibration"), {kSegmentCalibrationKind}, true, true,
+            InputSpec{QStringLiteral("calibration"),
+                      {kSegmentCalibrationKind},
+                      true,
+                      true,
                       tr("Segment-calibration table (segment, qw..qz) with rows for both segments of the joint.")}};
 }
 
 QList<OutputSpec> JointAnglesProcessor::outputs() const {
-    return {OutputSpec{QStringLiteral("joint-angles"), false, QString(),
-                       tr("flexion, abduction, rotation (rad), long_axis_angle, proximal_inclination, distal_inclination (rad).")}};
+    return {OutputSpec{
+        QStringLiteral("joint-angles"), false, QString(),
+        tr("flexion, abduction, rotation (rad), long_axis_angle, proximal_inclination, distal_inclination (rad).")}};
 }
 
 // The checks need no samples: the parameters and the calibration table.
@@ -154,10 +178,11 @@ Expected<std::vector<ProcessorOutput>> JointAnglesProcessor::run(const RunContex
     if (!plan) return plan.error();
     const std::vector<double>& t = plan->proximal.data->t;
     if (plan->alignHeading) {
-        const std::size_t n = std::max<std::size_t>(1, rowsInTimeRange(t, t.front(), t.front() + plan->alignDuration).size());
-        plan->params.headingOffset = JointAngles::estimateHeadingOffset(
-            std::span(plan->qProximal).first(n), std::span(plan->qDistal).first(n), plan->params.proximalMount,
-            plan->params.distalMount);
+        const std::size_t n =
+            std::max<std::size_t>(1, rowsInTimeRange(t, t.front(), t.front() + plan->alignDuration).size());
+        plan->params.headingOffset =
+            JointAngles::estimateHeadingOffset(std::span(plan->qProximal).first(n), std::span(plan->qDistal).first(n),
+                                               plan->params.proximalMount, plan->params.distalMount);
     }
     if (context.isCancelled()) return cancelledError();
     const JointAngles joint(plan->params);

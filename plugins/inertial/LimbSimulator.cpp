@@ -15,7 +15,6 @@ using math::Vec3;
 
 namespace {
 
-
 // Quintic smoothstep on [0, 1] (zero first and second derivative at both ends, so accelerations
 // stay continuous when a phase starts or stops) and its derivative.
 double smooth(double x) {
@@ -68,7 +67,8 @@ public:
     // Walking envelope: ramps in and out over 1 s so the gait starts and stops smoothly.
     double envelope(double t) const { return smooth(t - walkBegin) * smooth(walkEnd - t); }
     double envelopeDerivative(double t) const {
-        return smoothDerivative(t - walkBegin) * smooth(walkEnd - t) - smooth(t - walkBegin) * smoothDerivative(walkEnd - t);
+        return smoothDerivative(t - walkBegin) * smooth(walkEnd - t) -
+               smooth(t - walkBegin) * smoothDerivative(walkEnd - t);
     }
     double heading(double t) const {
         return p_.initialHeading + p_.walkTurn * smooth((t - walkBegin) / (walkEnd - walkBegin));
@@ -113,8 +113,9 @@ public:
             back = 0.15 * d;
         }
         // ISB pelvis frame in ENU facing ψ: X → (cos ψ, sin ψ, 0), Y → up, Z → right.
-        pose.pelvis = (math::headingRotation(psi) * axisRotation(0, std::numbers::pi / 2) * axisRotation(1, pelvisRotation) *
-                       axisRotation(2, pelvisTilt) * axisRotation(0, pelvisObliquity)).normalized();
+        pose.pelvis = (math::headingRotation(psi) * axisRotation(0, std::numbers::pi / 2) *
+                       axisRotation(1, pelvisRotation) * axisRotation(2, pelvisTilt) * axisRotation(0, pelvisObliquity))
+                          .normalized();
         pose.thigh = (pose.pelvis * relativeFromAnatomical(pose.hip, Joint::Hip, p_.side)).normalized();
         pose.shank = (pose.thigh * relativeFromAnatomical(pose.knee, Joint::Knee, p_.side)).normalized();
         pose.pelvisOrigin = Vec3(0.0, 0.0, 0.95 - drop + bounce) - back * Vec3(std::cos(psi), std::sin(psi), 0.0);
@@ -149,12 +150,12 @@ private:
 Quat simulatedMount(LimbSegment segment, Side side) {
     const double lat = side == Side::Right ? 1.0 : -1.0;
     switch (segment) {
-    case LimbSegment::Pelvis:  // on the sacrum: x to the right, y up, z out of the back
-        return mountFromAxes(Vec3::UnitZ(), -Vec3::UnitX(), Vec3(0.05, 0.06, -0.04));
-    case LimbSegment::Thigh:   // lateral thigh: x down the thigh, z out of the skin (lateral)
-        return mountFromAxes(-Vec3::UnitY(), lat * Vec3::UnitZ(), Vec3(0.12, -0.08, 0.15));
-    case LimbSegment::Shank:   // anterolateral shank: x up, z out of the skin at 45° between front and side
-        return mountFromAxes(Vec3::UnitY(), Vec3::UnitX() + lat * Vec3::UnitZ(), Vec3(-0.10, 0.14, 0.09));
+        case LimbSegment::Pelvis:  // on the sacrum: x to the right, y up, z out of the back
+            return mountFromAxes(Vec3::UnitZ(), -Vec3::UnitX(), Vec3(0.05, 0.06, -0.04));
+        case LimbSegment::Thigh:  // lateral thigh: x down the thigh, z out of the skin (lateral)
+            return mountFromAxes(-Vec3::UnitY(), lat * Vec3::UnitZ(), Vec3(0.12, -0.08, 0.15));
+        case LimbSegment::Shank:  // anterolateral shank: x up, z out of the skin at 45° between front and side
+            return mountFromAxes(Vec3::UnitY(), Vec3::UnitX() + lat * Vec3::UnitZ(), Vec3(-0.10, 0.14, 0.09));
     }
     return Quat::Identity();
 }
@@ -214,7 +215,8 @@ LimbSimulation simulateLimb(const LimbSimulatorParams& params) {
         const std::array<Vec3, 3> p0 = script.sensorPositions(t), pm = script.sensorPositions(t - h),
                                   pp = script.sensorPositions(t + h);
         const Vec3 walk = script.walkAcceleration(t);
-        const std::array<Quat, 3> now{pose.pelvis, pose.thigh, pose.shank}, then{before.pelvis, before.thigh, before.shank};
+        const std::array<Quat, 3> now{pose.pelvis, pose.thigh, pose.shank},
+            then{before.pelvis, before.thigh, before.shank};
         for (int s = 0; s < 3; ++s) {
             SimulatedSegment& seg = sim.segments[s];
             const Quat sensor = (now[s] * seg.mount.conjugate()).normalized();
@@ -224,8 +226,7 @@ LimbSimulation simulateLimb(const LimbSimulatorParams& params) {
             const Vec3 a = walk + (pp[s] - 2.0 * p0[s] + pm[s]) / (h * h);
             const Vec3 omega = math::rotationVectorFromQuat(previous.conjugate() * sensor) / dt;
             seg.gyr[k] = omega + seg.gyrBias + draw3(normal) * params.gyrNoise;
-            seg.acc[k] = sensor.conjugate() * (a + gravityUp) + seg.accBias +
-                         draw3(normal) * params.accNoise;
+            seg.acc[k] = sensor.conjugate() * (a + gravityUp) + seg.accBias + draw3(normal) * params.accNoise;
         }
     }
     return sim;

@@ -27,20 +27,20 @@ enum class LimbSegment { Pelvis = 0, Thigh = 1, Shank = 2 };
 struct LimbSimulatorParams {
     std::uint64_t seed = 1;
     Side side = Side::Right;
-    double rate = 100.0;          // Hz
-    double standDuration = 3.0;   // s, each standing phase
-    double walkDuration = 20.0;   // s
-    double gaitPeriod = 1.1;      // s per stride
-    double walkSpeed = 1.2;       // m/s
+    double rate = 100.0;                     // Hz
+    double standDuration = 3.0;              // s, each standing phase
+    double walkDuration = 20.0;              // s
+    double gaitPeriod = 1.1;                 // s per stride
+    double walkSpeed = 1.2;                  // m/s
     double walkTurn = std::numbers::pi / 2;  // rad, total change of heading while walking
     int squats = 3;
     double squatDuration = 4.0;   // s each
     double initialHeading = 0.4;  // rad, anterior direction counter-clockwise from East
     // IMU errors (per axis: bias drawn uniformly in ±bias, white noise σ per sample)
     double gyrBias = 0.3 * math::kDeg;  // rad/s
-    double gyrNoise = 0.004;      // rad/s
-    double accBias = 0.05;        // m/s²
-    double accNoise = 0.04;       // m/s²
+    double gyrNoise = 0.004;            // rad/s
+    double accBias = 0.05;              // m/s²
+    double accNoise = 0.04;             // m/s²
     double gravity = 9.81;
 };
 
@@ -51,16 +51,16 @@ struct SimulatedSegment {
     // does not touch the joint): pelvis and thigh reach the hip, thigh and shank the knee.
     math::Vec3 toHip = math::Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
     math::Vec3 toKnee = math::Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
-    std::vector<math::Vec3> acc, gyr;            // sensor frame, m/s², rad/s
-    std::vector<math::Quat> sensor;              // true sensor → earth (ENU)
-    std::vector<math::Quat> segment;             // true segment → earth (ENU)
+    std::vector<math::Vec3> acc, gyr;  // sensor frame, m/s², rad/s
+    std::vector<math::Quat> sensor;    // true sensor → earth (ENU)
+    std::vector<math::Quat> segment;   // true segment → earth (ENU)
 };
 
 struct LimbSimulation {
     std::vector<double> t;
-    std::array<SimulatedSegment, 3> segments;    // indexed by LimbSegment
-    std::vector<AnatomicalAngles> knee, hip;     // reference joint angles (rad), signs as in JointAngles.h
-    std::vector<unsigned char> phase;            // 0 stand, 1 walk, 2 squat
+    std::array<SimulatedSegment, 3> segments;  // indexed by LimbSegment
+    std::vector<AnatomicalAngles> knee, hip;   // reference joint angles (rad), signs as in JointAngles.h
+    std::vector<unsigned char> phase;          // 0 stand, 1 walk, 2 squat
     double walkBegin = 0, walkEnd = 0, squatBegin = 0, squatEnd = 0;
     const SimulatedSegment& operator[](LimbSegment s) const { return segments[static_cast<int>(s)]; }
 };

@@ -17,14 +17,14 @@ namespace athlos::inertial {
 class MagDisturbance {
 public:
     struct Params {
-        double currentTau = 0.05;                           // s, smoothing of norm and dip
-        double refTau = 20.0;                               // s, tracking of the reference
-        double thNorm = 0.1;                                // relative norm deviation
-        double thDip = 10.0 * math::kDeg;                   // rad
-        double newTime = 20.0;                              // s
-        double newFirstTime = 5.0;                          // s
-        double newMinGyr = 20.0 * math::kDeg;               // rad/s, motion needed to accept a new field
-        double minUndisturbedTime = 0.5;                    // s
+        double currentTau = 0.05;              // s, smoothing of norm and dip
+        double refTau = 20.0;                  // s, tracking of the reference
+        double thNorm = 0.1;                   // relative norm deviation
+        double thDip = 10.0 * math::kDeg;      // rad
+        double newTime = 20.0;                 // s
+        double newFirstTime = 5.0;             // s
+        double newMinGyr = 20.0 * math::kDeg;  // rad/s, motion needed to accept a new field
+        double minUndisturbedTime = 0.5;       // s
     };
 
     MagDisturbance() = default;

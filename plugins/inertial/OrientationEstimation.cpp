@@ -21,7 +21,8 @@ QString orientationAlgorithmName(OrientationAlgorithm algorithm) {
 
 namespace {
 template <class Filter>
-bool runChunked(Filter& filter, const ImuBatch& in, OrientationTrack& out, const std::function<bool(double)>& keepGoing) {
+bool runChunked(Filter& filter, const ImuBatch& in, OrientationTrack& out,
+                const std::function<bool(double)>& keepGoing) {
     constexpr std::size_t chunk = 1 << 16;
     out.resize(in.rows);
     for (std::size_t b = 0; b < in.rows; b += chunk) {
@@ -39,31 +40,31 @@ OrientationRun estimateOrientation(const OrientationOptions& o, const ImuBatch& 
     OrientationRun run;
     bool done = false;
     switch (o.algorithm) {
-    case OrientationAlgorithm::Vqf: {
-        OrientationFilter f(ts, o.filter);
-        done = runChunked(f, in, run.track, keepGoing);
-        break;
-    }
-    case OrientationAlgorithm::Strapdown: {
-        Strapdown f(ts);
-        done = runChunked(f, in, run.track, keepGoing);
-        break;
-    }
-    case OrientationAlgorithm::Madgwick: {
-        Madgwick f(ts, o.madgwick);
-        done = runChunked(f, in, run.track, keepGoing);
-        break;
-    }
-    case OrientationAlgorithm::Mahony: {
-        Mahony f(ts, o.mahony);
-        done = runChunked(f, in, run.track, keepGoing);
-        break;
-    }
-    case OrientationAlgorithm::Kalman: {
-        QuaternionKalman f(ts, o.kalman);
-        done = runChunked(f, in, run.track, keepGoing);
-        break;
-    }
+        case OrientationAlgorithm::Vqf: {
+            OrientationFilter f(ts, o.filter);
+            done = runChunked(f, in, run.track, keepGoing);
+            break;
+        }
+        case OrientationAlgorithm::Strapdown: {
+            Strapdown f(ts);
+            done = runChunked(f, in, run.track, keepGoing);
+            break;
+        }
+        case OrientationAlgorithm::Madgwick: {
+            Madgwick f(ts, o.madgwick);
+            done = runChunked(f, in, run.track, keepGoing);
+            break;
+        }
+        case OrientationAlgorithm::Mahony: {
+            Mahony f(ts, o.mahony);
+            done = runChunked(f, in, run.track, keepGoing);
+            break;
+        }
+        case OrientationAlgorithm::Kalman: {
+            QuaternionKalman f(ts, o.kalman);
+            done = runChunked(f, in, run.track, keepGoing);
+            break;
+        }
     }
     run.cancelled = !done;
     return run;

@@ -20,13 +20,14 @@ inline Mat3 symmetricInverse(const Mat3& s) {
     m(2, 2) = (a * d - b * b) * invDet;
     return m;
 }
-}
+}  // namespace
 
 OrientationFilter::OrientationFilter(double ts, const Params& params) : p_(params), ts_(ts) {
     // Bias Kalman filter noise (eqs. 24–27). Only the ratios matter for the gain, so the units of
     // P and W just have to agree: (rad/s)².
     biasP0_ = sq(p_.biasSigmaInit);
-    biasV_ = sq(0.1 * math::kDeg) * ts_ / p_.biasForgettingTime;  // the uncertainty grows by 0.1 °/s per forgetting time
+    biasV_ =
+        sq(0.1 * math::kDeg) * ts_ / p_.biasForgettingTime;  // the uncertainty grows by 0.1 °/s per forgetting time
     // A measurement that, repeated every step, would hold P at pMotion in steady state: w = p²/v + p.
     const double pMotion = sq(p_.biasSigmaMotion);
     biasMotionW_ = sq(pMotion) / biasV_ + pMotion;

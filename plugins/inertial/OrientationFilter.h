@@ -28,28 +28,28 @@ namespace athlos::inertial {
 class OrientationFilter {
 public:
     struct Params {
-        double tauAcc = 3.0;                     // s
-        double tauMag = 9.0;                     // s
+        double tauAcc = 3.0;  // s
+        double tauMag = 9.0;  // s
         bool restBiasEstimation = true;
         bool motionBiasEstimation = true;
         bool magDisturbanceRejection = true;
-        double biasSigmaInit = 0.5 * math::kDeg; // rad/s, initial bias uncertainty
-        double biasForgettingTime = 100.0;       // s, time for the uncertainty to grow back by 0.1 °/s
-        double biasClip = 2.0 * math::kDeg;      // rad/s, largest bias the filter accepts
-        double biasSigmaMotion = 0.1 * math::kDeg; // rad/s, motion-update measurement noise
+        double biasSigmaInit = 0.5 * math::kDeg;    // rad/s, initial bias uncertainty
+        double biasForgettingTime = 100.0;          // s, time for the uncertainty to grow back by 0.1 °/s
+        double biasClip = 2.0 * math::kDeg;         // rad/s, largest bias the filter accepts
+        double biasSigmaMotion = 0.1 * math::kDeg;  // rad/s, motion-update measurement noise
         double biasVerticalForgettingFactor = 1e-4;
-        double biasSigmaRest = 0.03 * math::kDeg; // rad/s, rest-update measurement noise
+        double biasSigmaRest = 0.03 * math::kDeg;  // rad/s, rest-update measurement noise
         RestDetector::Params rest;
         MagDisturbance::Params mag;
-        double magMaxRejectionTime = 60.0;       // s, longest ride-out of a disturbance
-        double magRejectionFactor = 2.0;         // gain divisor after it, and recovery speed of the budget
+        double magMaxRejectionTime = 60.0;  // s, longest ride-out of a disturbance
+        double magRejectionFactor = 2.0;    // gain divisor after it, and recovery speed of the budget
         // Saturation gate (our addition to VQF): a sample with any accelerometer axis at the sensor's
         // range is replaced by the gravity the filter currently expects. Real shocks integrate to ~0
         // in the almost inertial frame and need no gate (gating by |a| − g > 3 g, 6 g broke BROAD's
         // fast-translation trial: 0.75° → 21°, 11°), but clipped ones lose part of their integral.
         // 0 = range unknown, gate off.
-        double accRange = 0.0;                   // m/s²
-        double gravity = 9.81;                   // m/s², magnitude of the substituted sample
+        double accRange = 0.0;  // m/s²
+        double gravity = 9.81;  // m/s², magnitude of the substituted sample
     };
 
     // ts: nominal sampling interval (s); the filters' coefficients are derived from it.

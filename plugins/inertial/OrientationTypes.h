@@ -22,10 +22,10 @@ struct ImuBatch {
 };
 
 struct OrientationTrack {
-    std::vector<Quat> q;                    // sensor→earth (ENU)
-    std::vector<Vec3> bias;                 // gyroscope bias estimate (rad/s), zero if not estimated
-    std::vector<unsigned char> rest;        // 1 = rest detected
-    std::vector<unsigned char> magDisturbed;// 1 = magnetic disturbance detected
+    std::vector<Quat> q;                      // sensor→earth (ENU)
+    std::vector<Vec3> bias;                   // gyroscope bias estimate (rad/s), zero if not estimated
+    std::vector<unsigned char> rest;          // 1 = rest detected
+    std::vector<unsigned char> magDisturbed;  // 1 = magnetic disturbance detected
     void resize(std::size_t n) {
         q.resize(n);
         bias.resize(n);

@@ -13,11 +13,11 @@ namespace athlos::inertial {
 class RestDetector {
 public:
     struct Params {
-        double minTime = 1.5;                                  // s
-        double filterTau = 0.5;                                // s
-        double thGyr = 2.0 * math::kDeg;                       // rad/s
-        double thAcc = 0.5;                                    // m/s²
-        double biasClip = 2.0 * math::kDeg;                    // rad/s
+        double minTime = 1.5;                // s
+        double filterTau = 0.5;              // s
+        double thGyr = 2.0 * math::kDeg;     // rad/s
+        double thAcc = 0.5;                  // m/s²
+        double biasClip = 2.0 * math::kDeg;  // rad/s
     };
 
     RestDetector() = default;

@@ -12,15 +12,18 @@ namespace athlos::inertial {
 using math::Vec3;
 
 Expected<SegmentCalibration::Result> SegmentCalibration::calibrate(std::span<const Vec3> staticAcc,
-                                                                   std::span<const Vec3> movementGyr, double movementDt) const {
+                                                                   std::span<const Vec3> movementGyr,
+                                                                   double movementDt) const {
     if (staticAcc.empty()) return makeError(QStringLiteral("the static (upright) window has no samples"));
     if (movementGyr.size() < 10) return makeError(QStringLiteral("the movement window has fewer than 10 samples"));
     Vec3 up = Vec3::Zero();
     for (const Vec3& a : staticAcc) up += a;
     up /= double(staticAcc.size());
     if (up.norm() < 5.0 || up.norm() > 15.0)
-        return makeError(QStringLiteral("the mean acceleration in the static window is %1 m/s², not gravity: the sensor was "
-                                        "not at rest").arg(up.norm(), 0, 'f', 2));
+        return makeError(
+            QStringLiteral("the mean acceleration in the static window is %1 m/s², not gravity: the sensor was "
+                           "not at rest")
+                .arg(up.norm(), 0, 'f', 2));
     Result r;
     r.superior = up.normalized();
 
@@ -33,8 +36,10 @@ Expected<SegmentCalibration::Result> SegmentCalibration::calibrate(std::span<con
     if (!(values[2] > 0.0)) return makeError(QStringLiteral("the segment does not rotate in the movement window"));
     r.axisShare = values[2] / values.sum();
     if (r.axisShare < 0.5)
-        return makeError(QStringLiteral("the movement has no dominant rotation axis (%1 % of the angular velocity on the main "
-                                        "axis); repeat slow sagittal movements (squats)").arg(100.0 * r.axisShare, 0, 'f', 0));
+        return makeError(
+            QStringLiteral("the movement has no dominant rotation axis (%1 % of the angular velocity on the main "
+                           "axis); repeat slow sagittal movements (squats)")
+                .arg(100.0 * r.axisShare, 0, 'f', 0));
     Vec3 axis = pca.eigenvectors().col(2);
 
     // The direction of the first clear turn fixes the sign (see the header).
@@ -44,8 +49,10 @@ Expected<SegmentCalibration::Result> SegmentCalibration::calibrate(std::span<con
         if (std::abs(turned) >= params_.decisionAngle) break;
     }
     if (std::abs(turned) < params_.decisionAngle)
-        return makeError(QStringLiteral("the segment turned less than %1° about the movement axis; the sign of the axis is "
-                                        "undetermined").arg(params_.decisionAngle / math::kDeg, 0, 'f', 0));
+        return makeError(
+            QStringLiteral("the segment turned less than %1° about the movement axis; the sign of the axis is "
+                           "undetermined")
+                .arg(params_.decisionAngle / math::kDeg, 0, 'f', 0));
     if (turned * params_.firstRotation < 0.0) axis = -axis;
 
     r.orthogonality = std::asin(std::clamp(std::abs(axis.dot(r.superior)), 0.0, 1.0));

@@ -19,16 +19,17 @@ namespace athlos::inertial {
 class SegmentCalibration {
 public:
     struct Params {
-        double firstRotation = 1.0;         // +1 or −1: sign of the first turn about the right-pointing axis
-        double decisionAngle = 0.1745;      // rad of integrated rotation that decides the sign (10°)
+        double firstRotation = 1.0;     // +1 or −1: sign of the first turn about the right-pointing axis
+        double decisionAngle = 0.1745;  // rad of integrated rotation that decides the sign (10°)
     };
 
     struct Result {
-        math::Quat mount = math::Quat::Identity();  // segment → sensor
-        math::Vec3 superior = math::Vec3::UnitY();   // Y in sensor coordinates
+        math::Quat mount = math::Quat::Identity();      // segment → sensor
+        math::Vec3 superior = math::Vec3::UnitY();      // Y in sensor coordinates
         math::Vec3 mediolateral = math::Vec3::UnitZ();  // Z in sensor coordinates
-        double axisShare = 0.0;     // fraction of the angular velocity energy on the principal axis
-        double orthogonality = 0.0; // angle (rad) between the functional axis and the plane ⊥ Y, before re-orthogonalisation
+        double axisShare = 0.0;                         // fraction of the angular velocity energy on the principal axis
+        double orthogonality =
+            0.0;  // angle (rad) between the functional axis and the plane ⊥ Y, before re-orthogonalisation
     };
 
     SegmentCalibration() = default;

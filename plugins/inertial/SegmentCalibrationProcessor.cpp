@@ -18,18 +18,23 @@ constexpr Translator tr{"athlos::inertial"};
 // Sign of each segment's first turn about its right-pointing Z axis when a squat starts.
 Expected<double> firstRotation(const QString& segment) {
     if (segment == QLatin1String("thigh")) return 1.0;
-    if (segment == QLatin1String("shank") || segment == QLatin1String("pelvis") || segment == QLatin1String("thorax")) return -1.0;
-    return makeError(QStringLiteral("segments: '%1' has no known squat rotation; use thigh, shank, pelvis or thorax").arg(segment));
+    if (segment == QLatin1String("shank") || segment == QLatin1String("pelvis") || segment == QLatin1String("thorax"))
+        return -1.0;
+    return makeError(
+        QStringLiteral("segments: '%1' has no known squat rotation; use thigh, shank, pelvis or thorax").arg(segment));
 }
 
 Expected<QStringList> segmentNames(const RunContext& c) {
     static const QRegularExpression separators(QStringLiteral("[,;\\s]+"));
-    const QStringList names = (c.has(QStringLiteral("segments")) ? c.text(QStringLiteral("segments")) : QStringLiteral("thigh,shank,pelvis"))
-                                  .split(separators, Qt::SkipEmptyParts);
+    const QStringList names =
+        (c.has(QStringLiteral("segments")) ? c.text(QStringLiteral("segments")) : QStringLiteral("thigh,shank,pelvis"))
+            .split(separators, Qt::SkipEmptyParts);
     int inputs = 0;
     for (int i = 0; i < c.inputCount(); ++i) inputs += c.stream(i) ? 1 : 0;
     if (names.size() < inputs)
-        return makeError(QStringLiteral("segments: %1 name(s) for %2 IMU stream(s); name every input").arg(names.size()).arg(inputs));
+        return makeError(QStringLiteral("segments: %1 name(s) for %2 IMU stream(s); name every input")
+                             .arg(names.size())
+                             .arg(inputs));
     for (const QString& n : names)
         if (auto s = firstRotation(n); !s) return s.error();
     return names;
@@ -42,7 +47,11 @@ struct Window {
 Expected<Window> window(const RunContext& c, const char* begin, const char* end) {
     Window w{c.number(QLatin1String(begin)), c.number(QLatin1String(end))};
     if (!(w.end > w.begin))
-        return makeError(QStringLiteral("%1: %2 s must be after %3 (%4 s)").arg(QLatin1String(end)).arg(w.end).arg(QLatin1String(begin)).arg(w.begin));
+        return makeError(QStringLiteral("%1: %2 s must be after %3 (%4 s)")
+                             .arg(QLatin1String(end))
+                             .arg(w.end)
+                             .arg(QLatin1String(begin))
+                             .arg(w.begin));
     return w;
 }
 }  // namespace
@@ -50,9 +59,10 @@ Expected<Window> window(const RunContext& c, const char* begin, const char* end)
 QString SegmentCalibrationProcessor::name() const { return tr("Segment calibration (functional)"); }
 
 QString SegmentCalibrationProcessor::description() const {
-    return tr("Sensor-to-segment mounts from a functional calibration: standing upright still (gravity gives the superior "
-              "axis) and slow squats (the principal axis of the angular velocity gives the medio-lateral axis), combined "
-              "by cross products. Writes a segment-calibration table (segment, qw..qz) for joint-angles.");
+    return tr(
+        "Sensor-to-segment mounts from a functional calibration: standing upright still (gravity gives the superior "
+        "axis) and slow squats (the principal axis of the angular velocity gives the medio-lateral axis), combined "
+        "by cross products. Writes a segment-calibration table (segment, qw..qz) for joint-angles.");
 }
 
 ParameterSpecs SegmentCalibrationProcessor::parameters() const {
@@ -60,21 +70,28 @@ ParameterSpecs SegmentCalibrationProcessor::parameters() const {
     return {
         ParameterSpec::text(QStringLiteral("segments"), QStringLiteral("thigh,shank,pelvis"),
                             tr("Segment of each input IMU, in input order (thigh, shank, pelvis or thorax).")),
-        ParameterSpec::number(QStringLiteral("static_begin"), nan, -inf, inf, QStringLiteral("s"), tr("Start of the upright standing window.")),
-        ParameterSpec::number(QStringLiteral("static_end"), nan, -inf, inf, QStringLiteral("s"), tr("End of the upright standing window.")),
-        ParameterSpec::number(QStringLiteral("movement_begin"), nan, -inf, inf, QStringLiteral("s"), tr("Start of the squats.")),
-        ParameterSpec::number(QStringLiteral("movement_end"), nan, -inf, inf, QStringLiteral("s"), tr("End of the squats.")),
+        ParameterSpec::number(QStringLiteral("static_begin"), nan, -inf, inf, QStringLiteral("s"),
+                              tr("Start of the upright standing window.")),
+        ParameterSpec::number(QStringLiteral("static_end"), nan, -inf, inf, QStringLiteral("s"),
+                              tr("End of the upright standing window.")),
+        ParameterSpec::number(QStringLiteral("movement_begin"), nan, -inf, inf, QStringLiteral("s"),
+                              tr("Start of the squats.")),
+        ParameterSpec::number(QStringLiteral("movement_end"), nan, -inf, inf, QStringLiteral("s"),
+                              tr("End of the squats.")),
     };
 }
 
 QList<InputSpec> SegmentCalibrationProcessor::inputs() const {
-    return {InputSpec{QStringLiteral("imu"), {QStringLiteral("imu")}, false, false, tr("IMU of the first segment (acc, gyr).")},
-            InputSpec{QStringLiteral("imu2"), {QStringLiteral("imu")}, false, true, tr("IMU of the second segment.")},
-            InputSpec{QStringLiteral("imu3"), {QStringLiteral("imu")}, false, true, tr("IMU of the third segment.")}};
+    return {
+        InputSpec{
+            QStringLiteral("imu"), {QStringLiteral("imu")}, false, false, tr("IMU of the first segment (acc, gyr).")},
+        InputSpec{QStringLiteral("imu2"), {QStringLiteral("imu")}, false, true, tr("IMU of the second segment.")},
+        InputSpec{QStringLiteral("imu3"), {QStringLiteral("imu")}, false, true, tr("IMU of the third segment.")}};
 }
 
 QList<OutputSpec> SegmentCalibrationProcessor::outputs() const {
-    return {OutputSpec{kSegmentCalibrationKind, true, QString(), tr("segment, qw, qx, qy, qz (segment to sensor), axis_share, orthogonality (rad).")}};
+    return {OutputSpec{kSegmentCalibrationKind, true, QString(),
+                       tr("segment, qw, qx, qy, qz (segment to sensor), axis_share, orthogonality (rad).")}};
 }
 
 Status SegmentCalibrationProcessor::prepare(const RunContext& c) const {
@@ -114,7 +131,8 @@ Expected<std::vector<ProcessorOutput>> SegmentCalibrationProcessor::run(const Ru
         SegmentCalibration::Params p;
         p.firstRotation = *firstRotation(names->at(i));
         auto result = SegmentCalibration(p).calibrate(acc, gyr, *ts);
-        if (!result) return makeError(QStringLiteral("'%1' (%2): %3").arg(c.inputPath(i), names->at(i), result.message()));
+        if (!result)
+            return makeError(QStringLiteral("'%1' (%2): %3").arg(c.inputPath(i), names->at(i), result.message()));
         segments << names->at(i);
         mounts.push_back(result->mount);
         share.numbers.push_back(result->axisShare);

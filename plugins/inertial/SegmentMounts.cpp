@@ -13,7 +13,8 @@ Table segmentMountTable(const QStringList& segments, const std::vector<math::Qua
                                        "segment orientation = sensor orientation * q"));
     TableColumn name{QStringLiteral("segment"), QString(), true, {}, segments};
     std::vector<TableColumn> q;
-    for (const char* c : {"qw", "qx", "qy", "qz"}) q.push_back(TableColumn{QLatin1String(c), QStringLiteral("1"), false, {}, {}});
+    for (const char* c : {"qw", "qx", "qy", "qz"})
+        q.push_back(TableColumn{QLatin1String(c), QStringLiteral("1"), false, {}, {}});
     for (const math::Quat& m : mounts) {
         const math::Quat c = math::canonical(m.normalized());
         q[0].numbers.push_back(c.w());
@@ -32,8 +33,9 @@ Expected<math::Quat> segmentMount(const Table& table, const QString& path, const
     const TableColumn* y = table.column(QStringLiteral("qy"));
     const TableColumn* z = table.column(QStringLiteral("qz"));
     if (!name || !name->isText || !w || !x || !y || !z || w->isText || x->isText || y->isText || z->isText)
-        return makeError(QStringLiteral("calibration table '%1' needs a text column segment and numeric columns qw, qx, qy, qz")
-                             .arg(path));
+        return makeError(
+            QStringLiteral("calibration table '%1' needs a text column segment and numeric columns qw, qx, qy, qz")
+                .arg(path));
     const auto row = name->texts.indexOf(segment);
     if (row < 0)
         return makeError(QStringLiteral("calibration table '%1' has no row for segment '%2' (it has: %3)")
@@ -41,7 +43,8 @@ Expected<math::Quat> segmentMount(const Table& table, const QString& path, const
     const auto r = static_cast<std::size_t>(row);
     const math::Quat q(w->numbers.at(r), x->numbers.at(r), y->numbers.at(r), z->numbers.at(r));
     if (!q.coeffs().allFinite() || q.norm() < 1e-9)
-        return makeError(QStringLiteral("calibration table '%1', segment '%2': the quaternion is not valid").arg(path, segment));
+        return makeError(
+            QStringLiteral("calibration table '%1', segment '%2': the quaternion is not valid").arg(path, segment));
     return q.normalized();
 }
 

@@ -13,7 +13,8 @@ namespace athlos::inertial {
 
 inline const QString kSegmentCalibrationKind = QStringLiteral("segment-calibration");
 
-Table segmentMountTable(const QStringList& segments, const std::vector<math::Quat>& mounts, QJsonObject attributes = {});
+Table segmentMountTable(const QStringList& segments, const std::vector<math::Quat>& mounts,
+                        QJsonObject attributes = {});
 // The mount of `segment`, or an error naming the table and what is missing.
 Expected<math::Quat> segmentMount(const Table& table, const QString& path, const QString& segment);
 

@@ -16,17 +16,20 @@ constexpr Translator tr{"athlos::inertial"};
 QString SimulateImuGnssProcessor::name() const { return tr("Simulate IMU and GNSS"); }
 
 QString SimulateImuGnssProcessor::description() const {
-    return tr("Simulated football session with known truth: sprints from standstill, decelerations, turns and jogging. "
-              "IMU (acc, gyr, mag) with bias, noise, scale errors and saturation at <output>; GNSS (local ENU x, y, z, "
-              "vx, vy, vz) with white and slowly correlated errors at <output>-gnss; the truth at <output>-truth.");
+    return tr(
+        "Simulated football session with known truth: sprints from standstill, decelerations, turns and jogging. "
+        "IMU (acc, gyr, mag) with bias, noise, scale errors and saturation at <output>; GNSS (local ENU x, y, z, "
+        "vx, vy, vz) with white and slowly correlated errors at <output>-gnss; the truth at <output>-truth.");
 }
 
 ParameterSpecs SimulateImuGnssProcessor::parameters() const {
     const SimulatorParams d;
     return {
         ParameterSpec::integer(QStringLiteral("seed"), 1, 0, std::numeric_limits<int>::max(), tr("Random seed.")),
-        ParameterSpec::number(QStringLiteral("duration"), d.duration, 10.0, 36000.0, QStringLiteral("s"), tr("Length of the session.")),
-        ParameterSpec::number(QStringLiteral("imu_rate"), d.imuRate, 10.0, 10000.0, QStringLiteral("Hz"), tr("IMU sampling rate.")),
+        ParameterSpec::number(QStringLiteral("duration"), d.duration, 10.0, 36000.0, QStringLiteral("s"),
+                              tr("Length of the session.")),
+        ParameterSpec::number(QStringLiteral("imu_rate"), d.imuRate, 10.0, 10000.0, QStringLiteral("Hz"),
+                              tr("IMU sampling rate.")),
         ParameterSpec::number(QStringLiteral("gnss_rate"), d.gnssRate, 0.1, 100.0, QStringLiteral("Hz"),
                               tr("GNSS rate (the IMU rate must be a multiple of it).")),
         ParameterSpec::number(QStringLiteral("gnss_sigma"), d.gnssHorizontalSigma, 0.0, 100.0, QStringLiteral("m"),
@@ -53,7 +56,8 @@ Expected<std::vector<ProcessorOutput>> SimulateImuGnssProcessor::run(const RunCo
     if (c.has(QStringLiteral("gyr_bias"))) p.gyrBias = c.number(QStringLiteral("gyr_bias"));
     const double ratio = p.imuRate / p.gnssRate;
     if (std::abs(ratio - std::round(ratio)) > 1e-9)
-        return makeError(QStringLiteral("gnss_rate: %1 Hz does not divide imu_rate %2 Hz").arg(p.gnssRate).arg(p.imuRate));
+        return makeError(
+            QStringLiteral("gnss_rate: %1 Hz does not divide imu_rate %2 Hz").arg(p.gnssRate).arg(p.imuRate));
     c.report(0.1, QStringLiteral("simulating"));
     const SimulatedData d = simulateImuGnss(p);
     if (c.isCancelled()) return cancelledError();
@@ -69,7 +73,10 @@ Expected<std::vector<ProcessorOutput>> SimulateImuGnssProcessor::run(const RunCo
             truth.at(k, 3 + i) = d.velocity[k][i];
         }
         const Quat& q = d.orientation[k];
-        truth.at(k, 6) = q.w(); truth.at(k, 7) = q.x(); truth.at(k, 8) = q.y(); truth.at(k, 9) = q.z();
+        truth.at(k, 6) = q.w();
+        truth.at(k, 7) = q.x();
+        truth.at(k, 8) = q.y();
+        truth.at(k, 9) = q.z();
         truth.at(k, 10) = d.velocity[k].head<2>().norm();
         truth.at(k, 11) = d.distance[k];
     }
@@ -81,20 +88,22 @@ Expected<std::vector<ProcessorOutput>> SimulateImuGnssProcessor::run(const RunCo
         }
     const QJsonObject attrs{{"simulated", true}, {"seed", static_cast<double>(p.seed)}};
     std::vector<ProcessorOutput> out;
-    out.push_back({QString(),
-                   outputStream(QStringLiteral("imu"), QStringLiteral("sensor"),
-                                columnsOf({"acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z", "mag_x", "mag_y", "mag_z"},
-                                          {"m/s^2", "m/s^2", "m/s^2", "rad/s", "rad/s", "rad/s", "uT", "uT", "uT"}),
-                                std::move(imu), attrs)});
+    out.push_back(
+        {QString(),
+         outputStream(QStringLiteral("imu"), QStringLiteral("sensor"),
+                      columnsOf({"acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z", "mag_x", "mag_y", "mag_z"},
+                                {"m/s^2", "m/s^2", "m/s^2", "rad/s", "rad/s", "rad/s", "uT", "uT", "uT"}),
+                      std::move(imu), attrs)});
     out.push_back({QStringLiteral("gnss"),
                    outputStream(QStringLiteral("gnss"), QStringLiteral("ENU"),
                                 columnsOf({"x", "y", "z", "vx", "vy", "vz"}, {"m", "m", "m", "m/s", "m/s", "m/s"}),
                                 std::move(gnss), attrs)});
-    out.push_back({QStringLiteral("truth"),
-                   outputStream(QStringLiteral("trajectory"), QStringLiteral("ENU"),
-                                columnsOf({"x", "y", "z", "vx", "vy", "vz", "qw", "qx", "qy", "qz", "speed", "distance"},
-                                          {"m", "m", "m", "m/s", "m/s", "m/s", "1", "1", "1", "1", "m/s", "m"}),
-                                std::move(truth), attrs)});
+    out.push_back(
+        {QStringLiteral("truth"),
+         outputStream(QStringLiteral("trajectory"), QStringLiteral("ENU"),
+                      columnsOf({"x", "y", "z", "vx", "vy", "vz", "qw", "qx", "qy", "qz", "speed", "distance"},
+                                {"m", "m", "m", "m/s", "m/s", "m/s", "1", "1", "1", "1", "m/s", "m"}),
+                      std::move(truth), attrs)});
     c.report(1.0);
     return out;
 }

@@ -50,20 +50,22 @@ Stream angleStream(const LimbSimulation& sim, const std::vector<AnatomicalAngles
 QString SimulateLimbProcessor::name() const { return tr("Simulate lower limb IMUs"); }
 
 QString SimulateLimbProcessor::description() const {
-    return tr("Pelvis, thigh and shank IMUs with known, non-trivial mounts during standing, walking along a curve and "
-              "squats, with the true hip and knee angles (3 DOF). Thigh IMU at <output>, shank and pelvis IMUs at "
-              "<output>-shank and <output>-pelvis, true segment orientations at <output>-segments, reference angles at "
-              "<output>-knee-reference and <output>-hip-reference, the true mounts as a segment-calibration table at "
-              "<output>-mounts.");
+    return tr(
+        "Pelvis, thigh and shank IMUs with known, non-trivial mounts during standing, walking along a curve and "
+        "squats, with the true hip and knee angles (3 DOF). Thigh IMU at <output>, shank and pelvis IMUs at "
+        "<output>-shank and <output>-pelvis, true segment orientations at <output>-segments, reference angles at "
+        "<output>-knee-reference and <output>-hip-reference, the true mounts as a segment-calibration table at "
+        "<output>-mounts.");
 }
 
 ParameterSpecs SimulateLimbProcessor::parameters() const {
     const LimbSimulatorParams d;
     return {
         ParameterSpec::integer(QStringLiteral("seed"), 1, 0, std::numeric_limits<int>::max(), tr("Random seed.")),
-        ParameterSpec::choice(QStringLiteral("side"), {QStringLiteral("right"), QStringLiteral("left")}, QStringLiteral("right"),
-                              tr("Which leg carries the thigh and shank sensors.")),
-        ParameterSpec::number(QStringLiteral("rate"), d.rate, 10.0, 2000.0, QStringLiteral("Hz"), tr("IMU sampling rate.")),
+        ParameterSpec::choice(QStringLiteral("side"), {QStringLiteral("right"), QStringLiteral("left")},
+                              QStringLiteral("right"), tr("Which leg carries the thigh and shank sensors.")),
+        ParameterSpec::number(QStringLiteral("rate"), d.rate, 10.0, 2000.0, QStringLiteral("Hz"),
+                              tr("IMU sampling rate.")),
         ParameterSpec::number(QStringLiteral("walk_duration"), d.walkDuration, 2.0, 3600.0, QStringLiteral("s"),
                               tr("Length of the walking phase.")),
         ParameterSpec::integer(QStringLiteral("squats"), d.squats, 0, 100, tr("Number of squats after walking.")),
@@ -82,8 +84,10 @@ QList<OutputSpec> SimulateLimbProcessor::outputs() const {
             OutputSpec{QStringLiteral("imu"), false, QStringLiteral("pelvis"), tr("Pelvis IMU.")},
             OutputSpec{QStringLiteral("segment-orientation"), false, QStringLiteral("segments"),
                        tr("True segment orientations pelvis_qw..qz, thigh_qw..qz, shank_qw..qz (segment to ENU).")},
-            OutputSpec{QStringLiteral("joint-angles"), false, QStringLiteral("knee-reference"), tr("True knee angles (rad).")},
-            OutputSpec{QStringLiteral("joint-angles"), false, QStringLiteral("hip-reference"), tr("True hip angles (rad).")},
+            OutputSpec{QStringLiteral("joint-angles"), false, QStringLiteral("knee-reference"),
+                       tr("True knee angles (rad).")},
+            OutputSpec{QStringLiteral("joint-angles"), false, QStringLiteral("hip-reference"),
+                       tr("True hip angles (rad).")},
             OutputSpec{kSegmentCalibrationKind, true, QStringLiteral("mounts"), tr("True mounts (segment, qw..qz).")}};
 }
 
@@ -104,8 +108,9 @@ Expected<std::vector<ProcessorOutput>> SimulateLimbProcessor::run(const RunConte
     c.report(0.1, QStringLiteral("simulating"));
     const LimbSimulation sim = simulateLimb(p);
     if (c.isCancelled()) return cancelledError();
-    const QJsonObject attrs{{"simulated", true}, {"seed", static_cast<double>(p.seed)}, {"side", sideName(p.side)},
-                            {"walk_begin", sim.walkBegin}, {"walk_end", sim.walkEnd}, {"squat_begin", sim.squatBegin},
+    const QJsonObject attrs{{"simulated", true},        {"seed", static_cast<double>(p.seed)},
+                            {"side", sideName(p.side)}, {"walk_begin", sim.walkBegin},
+                            {"walk_end", sim.walkEnd},  {"squat_begin", sim.squatBegin},
                             {"squat_end", sim.squatEnd}};
     StreamData segments(sim.t.size(), 12);
     segments.t = sim.t;
@@ -127,12 +132,14 @@ Expected<std::vector<ProcessorOutput>> SimulateLimbProcessor::run(const RunConte
     out.push_back({QString(), imuStream(sim, 1, attrs)});
     out.push_back({QStringLiteral("shank"), imuStream(sim, 2, attrs)});
     out.push_back({QStringLiteral("pelvis"), imuStream(sim, 0, attrs)});
-    out.push_back({QStringLiteral("segments"), outputStream(QStringLiteral("segment-orientation"), QStringLiteral("ENU"),
-                                                            columnsOf(names, units), std::move(segments), attrs)});
+    out.push_back(
+        {QStringLiteral("segments"), outputStream(QStringLiteral("segment-orientation"), QStringLiteral("ENU"),
+                                                  columnsOf(names, units), std::move(segments), attrs)});
     out.push_back({QStringLiteral("knee-reference"), angleStream(sim, sim.knee, Joint::Knee, p.side, attrs)});
     out.push_back({QStringLiteral("hip-reference"), angleStream(sim, sim.hip, Joint::Hip, p.side, attrs)});
-    out.push_back({QStringLiteral("mounts"),
-                   segmentMountTable(kSegments, {sim.segments[0].mount, sim.segments[1].mount, sim.segments[2].mount}, attrs)});
+    out.push_back(
+        {QStringLiteral("mounts"),
+         segmentMountTable(kSegments, {sim.segments[0].mount, sim.segments[1].mount, sim.segments[2].mount}, attrs)});
     c.report(1.0);
     return out;
 }

@@ -10,11 +10,14 @@ namespace athlos::lps {
 
 TagFix BeaconSelection::solve(FixInput& input, TdoaSolver& solver, const TagFix* start, const View* view) const {
     switch (params_.method) {
-    case Method::All: return solveAll(input, solver, start);
-    case Method::Irls: return solveIrls(input, solver, start);
-    case Method::LargestResidual: return solveLargestResidual(input, solver, start);
-    case Method::FieldOfView:
-        return view ? solveFieldOfView(input, solver, start, *view) : solveLargestResidual(input, solver, start);
+        case Method::All:
+            return solveAll(input, solver, start);
+        case Method::Irls:
+            return solveIrls(input, solver, start);
+        case Method::LargestResidual:
+            return solveLargestResidual(input, solver, start);
+        case Method::FieldOfView:
+            return view ? solveFieldOfView(input, solver, start, *view) : solveLargestResidual(input, solver, start);
     }
     return {};
 }
@@ -64,7 +67,8 @@ TagFix BeaconSelection::solveIrlsWeighted(FixInput& input, TdoaSolver& solver, c
         if (!next.valid) break;
         fix = next;
         double change = 0.0;
-        for (std::size_t i = 0; i < previous.size(); ++i) change = std::max(change, std::abs(previous[i] - input.weights[i]));
+        for (std::size_t i = 0; i < previous.size(); ++i)
+            change = std::max(change, std::abs(previous[i] - input.weights[i]));
         if (change < 1e-3) break;
     }
     return fix;
@@ -121,7 +125,8 @@ TagFix BeaconSelection::solveFieldOfView(FixInput& input, TdoaSolver& solver, co
         std::vector<int> order(std::size_t(input.size()));
         std::iota(order.begin(), order.end(), 0);
         std::sort(order.begin(), order.end(), [&](int a, int b) { return margin[size_t(a)] > margin[size_t(b)]; });
-        for (int k = 0; k < std::min(params_.minBeacons, input.size()); ++k) input.weights[size_t(order[size_t(k)])] = 1.0;
+        for (int k = 0; k < std::min(params_.minBeacons, input.size()); ++k)
+            input.weights[size_t(order[size_t(k)])] = 1.0;
     }
     const std::vector<double> fovWeights = input.weights;
     TagFix fix = solver.solve(input, start);

@@ -25,11 +25,11 @@ public:
     struct Params {
         Method method = Method::Irls;
         int minBeacons = 4;
-        double irlsK = 2.5;               // bisquare cut-off in units of the (σ-scaled) MAD
-        double irlsMinScale = 0.05;       // m, floor of 1.4826·MAD (noise-free data has MAD → 0)
+        double irlsK = 2.5;          // bisquare cut-off in units of the (σ-scaled) MAD
+        double irlsMinScale = 0.05;  // m, floor of 1.4826·MAD (noise-free data has MAD → 0)
         int irlsIterations = 10;
-        double rejectionThreshold = 0.25; // m, mean |e| at which LargestResidual stops
-        double kappa = 100.0;             // dB, κ of Eqn. 3.8 for the default pattern (grid search, docs/validation/lps.md)
+        double rejectionThreshold = 0.25;  // m, mean |e| at which LargestResidual stops
+        double kappa = 100.0;  // dB, κ of Eqn. 3.8 for the default pattern (grid search, docs/validation/lps.md)
         // After the field-of-view selection, leave-one-out rejection among the beacons in view (drop the
         // reading whose removal leaves the smallest mean |e|, down to B_min): removes the gross
         // outliers (late detections) a field of view cannot predict.
@@ -38,7 +38,7 @@ public:
         // ≈ 0.2–0.3 s behind at 10 Hz: ~2 m at sprint speed) is re-solved from m̂_ini with IRLS over
         // all readings (grid 1.5…8 m on seed 777, docs/validation/lps.md).
         double fovMaxJump = 4.0;
-        double frequency = 5.8e9;         // Hz, carrier of the thesis' LPS (free-space loss)
+        double frequency = 5.8e9;  // Hz, carrier of the thesis' LPS (free-space loss)
         GainPattern gain;
     };
 
@@ -70,7 +70,8 @@ private:
     TagFix rejectLargest(FixInput& input, TdoaSolver& solver, TagFix fix) const;
     // fovRefine: like rejectLargest, but drops the reading whose removal leaves the smallest mean |e|.
     // Method 6 restricted to the readings with mask > 0 (the others get weight 0 unless B_min needs them).
-    TagFix solveIrlsWeighted(FixInput& input, TdoaSolver& solver, const TagFix* start, const std::vector<double> mask) const;
+    TagFix solveIrlsWeighted(FixInput& input, TdoaSolver& solver, const TagFix* start,
+                             const std::vector<double> mask) const;
     TagFix rejectLeaveOneOut(FixInput& input, TdoaSolver& solver, TagFix fix) const;
     Params params_;
 };

@@ -34,14 +34,14 @@ Expected<BeaconLayout> layoutFromTable(const Table& table, const QString& path) 
     const TableColumn* y = table.column(QStringLiteral("y"));
     const TableColumn* z = table.column(QStringLiteral("z"));
     if (!id || !x || !y)
-        return makeError(QStringLiteral("beacon table '%1' needs columns id, x, y (and z); it has: %2")
-                             .arg(path, [&] {
-                                 QStringList names;
-                                 for (const auto& c : table.columns) names << c.name;
-                                 return names.join(QStringLiteral(", "));
-                             }()));
+        return makeError(QStringLiteral("beacon table '%1' needs columns id, x, y (and z); it has: %2").arg(path, [&] {
+            QStringList names;
+            for (const auto& c : table.columns) names << c.name;
+            return names.join(QStringLiteral(", "));
+        }()));
     for (const TableColumn* c : {x, y, z})
-        if (c && c->isText) return makeError(QStringLiteral("beacon table '%1': column %2 must be numeric (m)").arg(path, c->name));
+        if (c && c->isText)
+            return makeError(QStringLiteral("beacon table '%1': column %2 must be numeric (m)").arg(path, c->name));
 
     BeaconLayout layout;
     bool referenceRow = false;
@@ -50,7 +50,9 @@ Expected<BeaconLayout> layoutFromTable(const Table& table, const QString& path) 
         const Vector3 p(x->numbers[size_t(r)], y->numbers[size_t(r)], z ? z->numbers[size_t(r)] : 0.0);
         if (!p.allFinite())
             return makeError(QStringLiteral("beacon table '%1', row %2 (id %3): coordinates must be finite numbers")
-                                 .arg(path).arg(r + 1).arg(name));
+                                 .arg(path)
+                                 .arg(r + 1)
+                                 .arg(name));
         if (isReferenceId(name)) {
             layout.reference = p;
             referenceRow = true;
@@ -67,7 +69,8 @@ Expected<BeaconLayout> layoutFromTable(const Table& table, const QString& path) 
     }
     if (layout.size() < 4)
         return makeError(QStringLiteral("beacon table '%1' has %2 beacon(s); TDoA positioning needs at least 4")
-                             .arg(path).arg(layout.size()));
+                             .arg(path)
+                             .arg(layout.size()));
     return layout;
 }
 

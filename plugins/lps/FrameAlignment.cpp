@@ -9,11 +9,14 @@ namespace athlos::lps {
 Expected<RigidTransform> fitRigid(const std::vector<Vector3>& from, const std::vector<Vector3>& to, AlignMode mode,
                                   const std::vector<double>& weights) {
     const std::size_t n = from.size();
-    if (n != to.size()) return makeError(QStringLiteral("alignment: %1 source points but %2 targets").arg(n).arg(to.size()));
+    if (n != to.size())
+        return makeError(QStringLiteral("alignment: %1 source points but %2 targets").arg(n).arg(to.size()));
     const std::size_t minimum = mode == AlignMode::Full ? 3 : 2;
     if (n < minimum)
         return makeError(QStringLiteral("alignment needs at least %1 marks for %2 (got %3)")
-                             .arg(minimum).arg(mode == AlignMode::Full ? "a full rotation" : "a yaw rotation").arg(n));
+                             .arg(minimum)
+                             .arg(mode == AlignMode::Full ? "a full rotation" : "a yaw rotation")
+                             .arg(n));
     auto w = [&](std::size_t k) { return weights.empty() ? 1.0 : weights[k]; };
     double total = 0.0;
     Vector3 cf = Vector3::Zero(), ct = Vector3::Zero();
@@ -30,8 +33,9 @@ Expected<RigidTransform> fitRigid(const std::vector<Vector3>& from, const std::v
         for (std::size_t k = 0; k < n; ++k) h += w(k) * (from[k] - cf) * (to[k] - ct).transpose();
         Eigen::JacobiSVD<Eigen::Matrix3d> svd(h, Eigen::ComputeFullU | Eigen::ComputeFullV);
         if (svd.singularValues()(1) < 1e-9 * std::max(1.0, svd.singularValues()(0)))
-            return makeError(QStringLiteral("alignment: the marks are collinear; a full rotation is undetermined "
-                                            "(use the yaw mode or a non-collinear mark)"));
+            return makeError(
+                QStringLiteral("alignment: the marks are collinear; a full rotation is undetermined "
+                               "(use the yaw mode or a non-collinear mark)"));
         // Kabsch: R = V diag(1, 1, det(VUᵀ)) Uᵀ excludes reflections.
         Eigen::Matrix3d d = Eigen::Matrix3d::Identity();
         d(2, 2) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0 ? -1.0 : 1.0;
@@ -44,7 +48,8 @@ Expected<RigidTransform> fitRigid(const std::vector<Vector3>& from, const std::v
             c += w(k) * (p.x() * q.x() + p.y() * q.y());
         }
         if (std::hypot(s, c) < 1e-12)
-            return makeError(QStringLiteral("alignment: the marks coincide horizontally; the rotation is undetermined"));
+            return makeError(
+                QStringLiteral("alignment: the marks coincide horizontally; the rotation is undetermined"));
         transform.rotation = Eigen::AngleAxisd(std::atan2(s, c), Vector3::UnitZ()).toRotationMatrix();
     }
     transform.translation = ct - transform.rotation * cf;

@@ -40,11 +40,13 @@ Expected<GainPattern> GainPattern::parse(const QString& text) {
         points.emplace_back(deg, g);
     }
     if (points.size() < 2) return makeError(QStringLiteral("gain_pattern: give at least two 'angle_deg:gain' points"));
-    const bool halfPlane = std::all_of(points.begin(), points.end(), [](auto& p) { return p.first >= 0 && p.first <= 180; });
+    const bool halfPlane =
+        std::all_of(points.begin(), points.end(), [](auto& p) { return p.first >= 0 && p.first <= 180; });
     if (halfPlane) {
         const auto n = points.size();
         for (std::size_t k = 0; k < n; ++k)
-            if (points[k].first > 0.0 && points[k].first < 180.0) points.emplace_back(360.0 - points[k].first, points[k].second);
+            if (points[k].first > 0.0 && points[k].first < 180.0)
+                points.emplace_back(360.0 - points[k].first, points[k].second);
     }
     for (auto& p : points) p.first = std::fmod(std::fmod(p.first, 360.0) + 360.0, 360.0) * std::numbers::pi / 180.0;
     std::sort(points.begin(), points.end());
@@ -78,7 +80,8 @@ double GainPattern::gainDb(double phi) const { return 10.0 * std::log10(gain(phi
 QString GainPattern::describe() const {
     QStringList items;
     for (std::size_t k = 0; k < angles_.size(); ++k)
-        items << QStringLiteral("%1:%2").arg(angles_[k] * 180.0 / std::numbers::pi, 0, 'g', 6).arg(gains_[k], 0, 'g', 6);
+        items
+            << QStringLiteral("%1:%2").arg(angles_[k] * 180.0 / std::numbers::pi, 0, 'g', 6).arg(gains_[k], 0, 'g', 6);
     return items.join(QLatin1Char(','));
 }
 

@@ -20,9 +20,9 @@ public:
     static GainPattern frontLobe(double exponent, double backGainDb);
     static Expected<GainPattern> parse(const QString& text);
 
-    double gain(double phi) const;                 // linear, periodic in φ (rad)
-    double gainDb(double phi) const;               // G_t(φ) = 10 log10 gain(φ)   (Eqn. 3.10)
-    QString describe() const;                      // the table as "deg:gain,…"
+    double gain(double phi) const;    // linear, periodic in φ (rad)
+    double gainDb(double phi) const;  // G_t(φ) = 10 log10 gain(φ)   (Eqn. 3.10)
+    QString describe() const;         // the table as "deg:gain,…"
 
 private:
     struct Empty {};

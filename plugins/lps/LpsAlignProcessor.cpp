@@ -15,21 +15,26 @@ constexpr Translator tr{"athlos::lps"};
 QString LpsAlignProcessor::name() const { return tr("LPS frame alignment"); }
 
 QString LpsAlignProcessor::description() const {
-    return tr("Rotates and translates a beacon table so that venue marks (e.g. the finish line and a point down the "
-              "home straight) land at the given coordinates.");
+    return tr(
+        "Rotates and translates a beacon table so that venue marks (e.g. the finish line and a point down the "
+        "home straight) land at the given coordinates.");
 }
 
 ParameterSpecs LpsAlignProcessor::parameters() const {
     return {ParameterSpec::text(QStringLiteral("marks"), QString(),
                                 tr("Marks 'x,y,z>X,Y,Z; …': LPS coordinates > desired coordinates (m); "
                                    "or give a marks table as second input.")),
-            ParameterSpec::choice(QStringLiteral("mode"), {QStringLiteral("yaw"), QStringLiteral("full")}, QStringLiteral("yaw"),
-                                  tr("yaw: rotation about the vertical only (≥ 2 marks); full: 3D rotation (≥ 3 marks)."))};
+            ParameterSpec::choice(
+                QStringLiteral("mode"), {QStringLiteral("yaw"), QStringLiteral("full")}, QStringLiteral("yaw"),
+                tr("yaw: rotation about the vertical only (≥ 2 marks); full: 3D rotation (≥ 3 marks)."))};
 }
 
 QList<InputSpec> LpsAlignProcessor::inputs() const {
     return {InputSpec{QStringLiteral("beacons"), {QStringLiteral("beacons")}, true, false, tr("Beacon table to move.")},
-            InputSpec{QStringLiteral("marks"), {}, true, true,
+            InputSpec{QStringLiteral("marks"),
+                      {},
+                      true,
+                      true,
                       tr("Optional table x, y, z, target_x, target_y, target_z (m), one row per mark.")}};
 }
 
@@ -73,12 +78,15 @@ Expected<std::pair<std::vector<Vector3>, std::vector<Vector3>>> collectMarks(con
         for (int c = 0; c < 6; ++c) {
             cols[c] = table->column(QString::fromLatin1(names[c]));
             if (!cols[c] || cols[c]->isText)
-                return makeError(QStringLiteral("marks table '%1' needs numeric columns x, y, z, target_x, target_y, target_z")
-                                     .arg(context.inputPath(1)));
+                return makeError(
+                    QStringLiteral("marks table '%1' needs numeric columns x, y, z, target_x, target_y, target_z")
+                        .arg(context.inputPath(1)));
         }
         for (long long r = 0; r < table->rows(); ++r) {
-            marks->first.emplace_back(cols[0]->numbers[size_t(r)], cols[1]->numbers[size_t(r)], cols[2]->numbers[size_t(r)]);
-            marks->second.emplace_back(cols[3]->numbers[size_t(r)], cols[4]->numbers[size_t(r)], cols[5]->numbers[size_t(r)]);
+            marks->first.emplace_back(cols[0]->numbers[size_t(r)], cols[1]->numbers[size_t(r)],
+                                      cols[2]->numbers[size_t(r)]);
+            marks->second.emplace_back(cols[3]->numbers[size_t(r)], cols[4]->numbers[size_t(r)],
+                                       cols[5]->numbers[size_t(r)]);
         }
     }
     return marks;
@@ -91,8 +99,11 @@ Status LpsAlignProcessor::prepare(const RunContext& context) const {
     if (!marks) return marks.error();
     const bool full = context.text(QStringLiteral("mode")) == QLatin1String("full");
     if (marks->first.size() < (full ? 3u : 2u))
-        return makeError(QStringLiteral("marks: mode=%1 needs at least %2 marks, got %3 (parameter marks or a marks table)")
-                             .arg(full ? "full" : "yaw").arg(full ? 3 : 2).arg(marks->first.size()));
+        return makeError(
+            QStringLiteral("marks: mode=%1 needs at least %2 marks, got %3 (parameter marks or a marks table)")
+                .arg(full ? "full" : "yaw")
+                .arg(full ? 3 : 2)
+                .arg(marks->first.size()));
     return {};
 }
 
@@ -101,7 +112,8 @@ Expected<std::vector<ProcessorOutput>> LpsAlignProcessor::run(const RunContext& 
     if (!layout) return layout.error();
     auto marks = collectMarks(context);
     if (!marks) return marks.error();
-    const AlignMode mode = context.text(QStringLiteral("mode")) == QLatin1String("full") ? AlignMode::Full : AlignMode::Yaw;
+    const AlignMode mode =
+        context.text(QStringLiteral("mode")) == QLatin1String("full") ? AlignMode::Full : AlignMode::Yaw;
     auto transform = fitRigid(marks->first, marks->second, mode);
     if (!transform) return makeError(QStringLiteral("marks: %1").arg(transform.message()));
     Table table = tableFromLayout(transformLayout(*layout, *transform));

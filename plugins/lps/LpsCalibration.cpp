@@ -26,7 +26,8 @@ struct BundleResidual {
     bool operator()(const T* beacon, const T* tag, const T* height, T* residual) const {
         const T mx = tag[0] - beacon[0], my = tag[1] - beacon[1], mz = height[0] - beacon[2];
         const T rx = T(reference.x()) - beacon[0], ry = T(reference.y()) - beacon[1], rz = T(reference.z()) - beacon[2];
-        residual[0] = (sqrt(mx * mx + my * my + mz * mz) - sqrt(rx * rx + ry * ry + rz * rz) - T(cdt) - tag[2]) * T(scale);
+        residual[0] =
+            (sqrt(mx * mx + my * my + mz * mz) - sqrt(rx * rx + ry * ry + rz * rz) - T(cdt) - tag[2]) * T(scale);
         return true;
     }
 };
@@ -105,7 +106,8 @@ std::vector<int> LpsCalibration::spreadSelection(const std::vector<Vector3>& poi
         chosen.push_back(next);
         int best = -1;
         for (int i = 0; i < n; ++i) {
-            distance[size_t(i)] = std::min(distance[size_t(i)], (points[size_t(i)] - points[size_t(next)]).head<2>().norm());
+            distance[size_t(i)] =
+                std::min(distance[size_t(i)], (points[size_t(i)] - points[size_t(next)]).head<2>().norm());
             if (best < 0 || distance[size_t(i)] > distance[size_t(best)]) best = i;
         }
         next = best;
@@ -139,16 +141,17 @@ std::pair<int, bool> solveBundle(const std::vector<TdoaEpoch>& epochs, BundleSta
         for (const auto& r : epochs[n].readings) {
             auto* cost = new ceres::AutoDiffCostFunction<BundleResidual, 1, 3, 3, 1>(
                 new BundleResidual{kSpeedOfLight * r.dt, state.beacons->reference, scale});
-            problem.AddResidualBlock(cost, loss, positions[size_t(r.beacon)].data(), (*state.tags)[n].data(), state.height);
+            problem.AddResidualBlock(cost, loss, positions[size_t(r.beacon)].data(), (*state.tags)[n].data(),
+                                     state.height);
             used[size_t(r.beacon)] = true;
         }
     }
     const Vector3 inverseSigma(1.0 / params.priorSigmaXy, 1.0 / params.priorSigmaXy, 1.0 / params.priorSigmaZ);
     for (std::size_t i = 0; i < positions.size(); ++i) {
         if (!used[i]) continue;
-        problem.AddResidualBlock(new ceres::AutoDiffCostFunction<GuessPrior, 3, 3>(
-                                     new GuessPrior{guess.positions[i], inverseSigma}),
-                                 nullptr, positions[i].data());
+        problem.AddResidualBlock(
+            new ceres::AutoDiffCostFunction<GuessPrior, 3, 3>(new GuessPrior{guess.positions[i], inverseSigma}),
+            nullptr, positions[i].data());
     }
     if (heightFree)
         problem.AddResidualBlock(new ceres::AutoDiffCostFunction<HeightPrior, 1, 1>(
@@ -211,7 +214,8 @@ Expected<LpsCalibration::Start> LpsCalibration::adjust(const std::vector<TdoaEpo
         const Vector3 m(s.tags[n].x(), s.tags[n].y(), s.height);
         for (const auto& r : s.epochs[n].readings) {
             const Vector3& b = s.beacons.positions[size_t(r.beacon)];
-            residuals.push_back((m - b).norm() - (s.beacons.reference - b).norm() - kSpeedOfLight * r.dt - s.tags[n].z());
+            residuals.push_back((m - b).norm() - (s.beacons.reference - b).norm() - kSpeedOfLight * r.dt -
+                                s.tags[n].z());
         }
     }
     std::vector<bool> outlier;
@@ -228,8 +232,10 @@ Expected<LpsCalibration::Start> LpsCalibration::adjust(const std::vector<TdoaEpo
     for (std::size_t n = 0; n < s.epochs.size(); ++n) {
         TdoaEpoch e{s.epochs[n].t, {}};
         for (const auto& r : s.epochs[n].readings) {
-            if (outlier[k++]) ++s.readingsRemoved;
-            else e.readings.push_back(r);
+            if (outlier[k++])
+                ++s.readingsRemoved;
+            else
+                e.readings.push_back(r);
         }
         if (int(e.readings.size()) < params_.minBeacons) {
             ++s.fixesRemoved;
@@ -266,9 +272,12 @@ double LpsCalibration::guessRotationSigma(const BeaconLayout& beacons, double si
 
 const char* LpsCalibration::gaugeName(Gauge gauge) {
     switch (gauge) {
-    case Gauge::Auto: return "auto";
-    case Gauge::Guess: return "guess";
-    case Gauge::Track: return "track";
+        case Gauge::Auto:
+            return "auto";
+        case Gauge::Guess:
+            return "guess";
+        case Gauge::Track:
+            return "track";
     }
     return "?";
 }
@@ -315,19 +324,23 @@ Expected<LpsCalibration::GaugeReport> LpsCalibration::applyGauge(const std::vect
             failed << QStringLiteral("only %1 % of the walk on the track line").arg(100.0 * f.inlierShare, 0, 'f', 0);
         if (f.coverage < params_.gaugeMinCoverage)
             failed << QStringLiteral("walk covers %1 % of the lap < %2 %")
-                          .arg(100.0 * f.coverage, 0, 'f', 0).arg(100.0 * params_.gaugeMinCoverage, 0, 'f', 0);
+                          .arg(100.0 * f.coverage, 0, 'f', 0)
+                          .arg(100.0 * params_.gaugeMinCoverage, 0, 'f', 0);
         if (!f.bothBends) failed << QStringLiteral("walk does not cover both bends");
         const double tolerance = params_.gaugeAgreementSigmas * std::hypot(g.sigmaGuess, f.sigmaRotation);
         if (std::abs(f.rotation) > tolerance)
             failed << QStringLiteral("track rotation %1 mrad disagrees with the guess (tolerance %2 mrad)")
-                          .arg(1e3 * f.rotation, 0, 'f', 2).arg(1e3 * tolerance, 0, 'f', 2);
+                          .arg(1e3 * f.rotation, 0, 'f', 2)
+                          .arg(1e3 * tolerance, 0, 'f', 2);
     }
     if (params_.gauge == Gauge::Track) {
         if (!f.valid)
-            return makeError(QStringLiteral("gauge=track: %1; use gauge=auto or gauge=guess").arg(failed.join(QStringLiteral("; "))));
+            return makeError(QStringLiteral("gauge=track: %1; use gauge=auto or gauge=guess")
+                                 .arg(failed.join(QStringLiteral("; "))));
         g.used = Gauge::Track;
-        g.reason = failed.isEmpty() ? QStringLiteral("gauge=track: rotation from the track fit")
-                                    : QStringLiteral("gauge=track (forced) although %1").arg(failed.join(QStringLiteral("; ")));
+        g.reason = failed.isEmpty()
+                       ? QStringLiteral("gauge=track: rotation from the track fit")
+                       : QStringLiteral("gauge=track (forced) although %1").arg(failed.join(QStringLiteral("; ")));
     } else if (failed.isEmpty()) {
         g.used = Gauge::Track;
         g.reason = QStringLiteral("auto: walk follows the track; rotation from the track fit");
@@ -364,8 +377,10 @@ Expected<LpsCalibration::Result> LpsCalibration::run(const std::vector<TdoaEpoch
         }
     }
     if (candidates.size() < 20)
-        return makeError(QStringLiteral("calibration needs at least 20 instants with %1 or more beacons; the walk has %2")
-                             .arg(params_.minBeacons).arg(candidates.size()));
+        return makeError(
+            QStringLiteral("calibration needs at least 20 instants with %1 or more beacons; the walk has %2")
+                .arg(params_.minBeacons)
+                .arg(candidates.size()));
     const std::vector<bool> badFix = grubbsOutliers(rms, params_.alpha, int(rms.size() / 5));
     std::vector<TdoaEpoch> clean;
     std::vector<Vector3> cleanPositions;
@@ -400,13 +415,16 @@ Expected<LpsCalibration::Result> LpsCalibration::run(const std::vector<TdoaEpoch
         if (!best || result->nrmsr < best->nrmsr) best = std::move(*result);
         if (best->nrmsr <= params_.restartNrmsr) break;
     }
-    if (!best) return makeError(QStringLiteral("calibration failed from every start; check the beacon table and the walk"));
+    if (!best)
+        return makeError(QStringLiteral("calibration failed from every start; check the beacon table and the walk"));
 
     Result out;
     out.beacons = best->beacons;
     Report& report = out.report;
-    if (auto gauge = applyGauge(epochs, best->height, out.beacons); gauge) report.gauge = std::move(*gauge);
-    else return gauge.error();
+    if (auto gauge = applyGauge(epochs, best->height, out.beacons); gauge)
+        report.gauge = std::move(*gauge);
+    else
+        return gauge.error();
     report.nrmsrCalibrated = best->nrmsr;
     report.nrmsrInitial = nrmsr(best->epochs, initial, h0, params_.minBeacons);
     if (reference) report.nrmsrReference = nrmsr(best->epochs, *reference, best->height, params_.minBeacons);
@@ -438,7 +456,8 @@ Expected<LpsCalibration::Result> LpsCalibration::run(const std::vector<TdoaEpoch
     }
     for (int i = 0; i < out.beacons.size(); ++i) {
         auto& b = report.beacons[size_t(i)];
-        b.rmsResidual = b.readings ? std::sqrt(sumSq[size_t(i)] / b.readings) : std::numeric_limits<double>::quiet_NaN();
+        b.rmsResidual =
+            b.readings ? std::sqrt(sumSq[size_t(i)] / b.readings) : std::numeric_limits<double>::quiet_NaN();
         b.shift = (out.beacons.positions[size_t(i)] - initial.positions[size_t(i)]).norm();
     }
     return out;

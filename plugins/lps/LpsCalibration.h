@@ -49,9 +49,9 @@ public:
 
     struct Params {
         double walkHeight = std::numeric_limits<double>::quiet_NaN();  // m; NaN = estimate
-        double walkHeightPrior = 1.0;     // m
-        double walkHeightSigma = 0.5;     // m
-        int calibrationFixes = 200;       // thesis: 200 training fixes; 0 = all
+        double walkHeightPrior = 1.0;                                  // m
+        double walkHeightSigma = 0.5;                                  // m
+        int calibrationFixes = 200;                                    // thesis: 200 training fixes; 0 = all
         int minBeacons = 4;
         OutlierTest outlierTest = OutlierTest::Grubbs;
         double alpha = 0.05;              // Grubbs significance
@@ -63,15 +63,15 @@ public:
         double relativeTolerance = 1e-4;  // stop when nRMSR improves by less than 0.01 %
         int maxIterations = 200;
         int maxStarts = 5;
-        double restartNrmsr = 0.3;        // m; above this after a start, restart from a re-perturbed guess
-        double restartSigmaXy = 2.0;      // m
-        double restartSigmaZ = 1.0;       // m
+        double restartNrmsr = 0.3;    // m; above this after a start, restart from a re-perturbed guess
+        double restartSigmaXy = 2.0;  // m
+        double restartSigmaZ = 1.0;   // m
         std::uint64_t seed = 1;
         Gauge gauge = Gauge::Auto;
-        TrackGeometry track;              // in LPS coordinates (its pose); default: iaaf-400m at the origin
-        double gaugeMaxRms = 0.5;         // m, inlier RMS of the track fit
-        double gaugeMinInliers = 0.8;     // share of the walk's fixes within the fit's inlier band
-        double gaugeMinCoverage = 0.5;    // share of the reference line's 10 m bins the walk visits
+        TrackGeometry track;            // in LPS coordinates (its pose); default: iaaf-400m at the origin
+        double gaugeMaxRms = 0.5;       // m, inlier RMS of the track fit
+        double gaugeMinInliers = 0.8;   // share of the walk's fixes within the fit's inlier band
+        double gaugeMinCoverage = 0.5;  // share of the reference line's 10 m bins the walk visits
         double gaugeAgreementSigmas = 3.0;
         // m, horizontal σ of the initial guess for the agreement test; NaN = priorSigmaXy. Set it
         // when the guess is known to be worse than the prior assumes (the prior also weights the fit).
@@ -80,25 +80,25 @@ public:
 
     struct GaugeReport {
         Gauge requested = Gauge::Auto;
-        Gauge used = Gauge::Guess;        // Guess or Track
-        QString reason;                   // why the track rotation was (not) used
-        double rotation = 0.0;            // rad, applied on top of the guess-based gauge (0 for Guess)
-        double sigmaGuess = 0.0;          // rad, σ_θ of the guess-based gauge
-        TrackGaugeFit fit;                // track fit (fit.valid false when not attempted or impossible)
+        Gauge used = Gauge::Guess;  // Guess or Track
+        QString reason;             // why the track rotation was (not) used
+        double rotation = 0.0;      // rad, applied on top of the guess-based gauge (0 for Guess)
+        double sigmaGuess = 0.0;    // rad, σ_θ of the guess-based gauge
+        TrackGaugeFit fit;          // track fit (fit.valid false when not attempted or impossible)
     };
 
     struct BeaconReport {
         double rmsResidual = 0.0;  // m, over the calibration fixes
         int readings = 0;
-        double shift = 0.0;        // m, distance from the initial guess
+        double shift = 0.0;  // m, distance from the initial guess
     };
 
     struct Report {
         double nrmsrInitial = 0.0;     // m, calibration fixes solved with the initial beacons
         double nrmsrCalibrated = 0.0;  // m, same fixes with the calibrated beacons
-        double nrmsrReference = std::numeric_limits<double>::quiet_NaN();  // with reference beacons, if given
-        double etaInitial() const { return nrmsrInitial / nrmsrReference; }      // Eqn. 3.6
-        double etaCalibrated() const { return nrmsrCalibrated / nrmsrReference; } // Eqn. 3.7
+        double nrmsrReference = std::numeric_limits<double>::quiet_NaN();          // with reference beacons, if given
+        double etaInitial() const { return nrmsrInitial / nrmsrReference; }        // Eqn. 3.6
+        double etaCalibrated() const { return nrmsrCalibrated / nrmsrReference; }  // Eqn. 3.7
         int epochs = 0, fixesUsed = 0, fixesRemoved = 0, readingsRemoved = 0;
         int starts = 0, iterations = 0;
         double walkHeight = 0.0;

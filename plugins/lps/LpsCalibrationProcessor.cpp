@@ -24,18 +24,20 @@ ParameterSpec optionalNumber(const QString& name, const QString& unit, const QSt
 QString LpsCalibrationProcessor::name() const { return tr("LPS beacon calibration"); }
 
 QString LpsCalibrationProcessor::description() const {
-    return tr("Automatic calibration of a TDoA LPS from a walk at constant height and rough initial beacon positions: "
-              "outlier removal, ~200 well-spread fixes, joint least squares over beacons, tag positions and offsets "
-              "(minimising nRMSR), multi-start when residuals stay high. The rotation about the reference node's "
-              "vertical axis is not observable from TDoA: it is taken from the running track when the walk follows it "
-              "(gauge=auto|track, thesis step 6 \"rotate the frame to venue marks\") or from the initial guess.");
+    return tr(
+        "Automatic calibration of a TDoA LPS from a walk at constant height and rough initial beacon positions: "
+        "outlier removal, ~200 well-spread fixes, joint least squares over beacons, tag positions and offsets "
+        "(minimising nRMSR), multi-start when residuals stay high. The rotation about the reference node's "
+        "vertical axis is not observable from TDoA: it is taken from the running track when the walk follows it "
+        "(gauge=auto|track, thesis step 6 \"rotate the frame to venue marks\") or from the initial guess.");
 }
 
 ParameterSpecs LpsCalibrationProcessor::parameters() const {
     return {
         optionalNumber(QStringLiteral("walk_height"), QStringLiteral("m"),
                        tr("Height of the tag during the walk in the LPS frame; absent = estimated (one unknown for the "
-                          "whole walk)."), -100, 1000),
+                          "whole walk)."),
+                       -100, 1000),
         ParameterSpec::number(QStringLiteral("walk_height_prior"), 1.0, -100, 1000, QStringLiteral("m"),
                               tr("Prior mean of the estimated walk height (hand-held tag).")),
         ParameterSpec::number(QStringLiteral("walk_height_sigma"), 0.5, 1e-3, 100, QStringLiteral("m"),
@@ -44,25 +46,28 @@ ParameterSpecs LpsCalibrationProcessor::parameters() const {
                                tr("Fixes spread over the area used for the calibration (thesis: 200); 0 = all.")),
         ParameterSpec::choice(QStringLiteral("outlier_test"), {QStringLiteral("grubbs"), QStringLiteral("mad")},
                               QStringLiteral("grubbs"), tr("Outlier test on the residuals.")),
-        ParameterSpec::number(QStringLiteral("alpha"), 0.05, 1e-6, 0.5, QString(), tr("Significance of the Grubbs test.")),
+        ParameterSpec::number(QStringLiteral("alpha"), 0.05, 1e-6, 0.5, QString(),
+                              tr("Significance of the Grubbs test.")),
         ParameterSpec::number(QStringLiteral("prior_sigma_xy"), 2.0, 1e-3, 1000, QStringLiteral("m"),
                               tr("Horizontal uncertainty of the initial beacon positions (weak prior).")),
         ParameterSpec::number(QStringLiteral("prior_sigma_z"), 1.0, 1e-3, 1000, QStringLiteral("m"),
                               tr("Vertical uncertainty of the initial beacon positions (weak prior).")),
-        ParameterSpec::number(QStringLiteral("tolerance"), 1e-4, 1e-12, 0.1, QString(),
-                              tr("Stop when nRMSR improves by less than this fraction per iteration (thesis: 0.01 %).")),
+        ParameterSpec::number(
+            QStringLiteral("tolerance"), 1e-4, 1e-12, 0.1, QString(),
+            tr("Stop when nRMSR improves by less than this fraction per iteration (thesis: 0.01 %).")),
         ParameterSpec::integer(QStringLiteral("max_starts"), 5, 1, 100,
                                tr("Starts from re-perturbed initial positions while nRMSR stays above restart_nrmsr.")),
         ParameterSpec::number(QStringLiteral("restart_nrmsr"), 0.3, 0.0, 1000, QStringLiteral("m"),
                               tr("nRMSR above which the calibration restarts (about 3× the ranging noise).")),
         ParameterSpec::integer(QStringLiteral("seed"), 1, 0, std::numeric_limits<int>::max(),
                                tr("Seed of the restart perturbations (reproducible).")),
-        ParameterSpec::choice(QStringLiteral("gauge"), {QStringLiteral("auto"), QStringLiteral("guess"), QStringLiteral("track")},
-                              QStringLiteral("auto"),
-                              tr("Rotation about the reference node's vertical axis. auto: fit the walk to a line parallel "
-                                 "to the track and use that rotation if the fit is tight, covers the lap and agrees with "
-                                 "the guess, else the guess; guess: from the initial beacon table only; track: always "
-                                 "from the track fit.")),
+        ParameterSpec::choice(
+            QStringLiteral("gauge"), {QStringLiteral("auto"), QStringLiteral("guess"), QStringLiteral("track")},
+            QStringLiteral("auto"),
+            tr("Rotation about the reference node's vertical axis. auto: fit the walk to a line parallel "
+               "to the track and use that rotation if the fit is tight, covers the lap and agrees with "
+               "the guess, else the guess; guess: from the initial beacon table only; track: always "
+               "from the track fit.")),
         ParameterSpec::text(QStringLiteral("track"), QStringLiteral("iaaf-400m"),
                             tr("Track geometry the walk follows: a name under the project's /geometry or a built-in "
                                "(iaaf-400m, indoor-200m). Used by gauge=auto|track.")),
@@ -75,7 +80,8 @@ ParameterSpecs LpsCalibrationProcessor::parameters() const {
                               tr("gauge=auto: largest RMS distance of the walk from its fitted track line.")),
         optionalNumber(QStringLiteral("gauge_guess_sigma"), QStringLiteral("m"),
                        tr("gauge=auto: horizontal error of the initial guess for the agreement test (the track "
-                          "rotation must agree with the guess within 3σ); absent = prior_sigma_xy."), 1e-3, 1000),
+                          "rotation must agree with the guess within 3σ); absent = prior_sigma_xy."),
+                       1e-3, 1000),
         ParameterSpec::number(QStringLiteral("gauge_min_coverage"), 0.5, 0.0, 1.0, QString(),
                               tr("gauge=auto: least share of the lap (10 m bins) the walk must visit; on an oval also "
                                  "both bends.")),
@@ -83,18 +89,29 @@ ParameterSpecs LpsCalibrationProcessor::parameters() const {
 }
 
 QList<InputSpec> LpsCalibrationProcessor::inputs() const {
-    return {InputSpec{QStringLiteral("tdoa"), {QStringLiteral("lps-tdoa")}, false, false,
+    return {InputSpec{QStringLiteral("tdoa"),
+                      {QStringLiteral("lps-tdoa")},
+                      false,
+                      false,
                       tr("TDoA readings of the calibration walk (tag at constant height, whole area).")},
-            InputSpec{QStringLiteral("beacons"), {QStringLiteral("beacons")}, true, false,
+            InputSpec{QStringLiteral("beacons"),
+                      {QStringLiteral("beacons")},
+                      true,
+                      false,
                       tr("Initial beacon positions (site plan, aerial image, GNSS), from any recording.")},
-            InputSpec{QStringLiteral("reference"), {QStringLiteral("beacons")}, true, true,
+            InputSpec{QStringLiteral("reference"),
+                      {QStringLiteral("beacons")},
+                      true,
+                      true,
                       tr("Optional surveyed beacon table: adds nRMSR_ref and η to the report.")}};
 }
 
 QList<OutputSpec> LpsCalibrationProcessor::outputs() const {
-    return {OutputSpec{QStringLiteral("beacons"), true, QString(), tr("Calibrated beacon table id, x, y, z (m).")},
-            OutputSpec{QStringLiteral("report"), true, QStringLiteral("report"),
-                       tr("Per beacon: rms_residual (m), readings, shift (m); attributes: nRMSR before/after, η, walk height.")}};
+    return {
+        OutputSpec{QStringLiteral("beacons"), true, QString(), tr("Calibrated beacon table id, x, y, z (m).")},
+        OutputSpec{
+            QStringLiteral("report"), true, QStringLiteral("report"),
+            tr("Per beacon: rms_residual (m), readings, shift (m); attributes: nRMSR before/after, η, walk height.")}};
 }
 
 Expected<std::vector<ProcessorOutput>> LpsCalibrationProcessor::run(const RunContext& context) const {
@@ -117,8 +134,9 @@ Expected<std::vector<ProcessorOutput>> LpsCalibrationProcessor::run(const RunCon
     p.walkHeightPrior = context.number(QStringLiteral("walk_height_prior"));
     p.walkHeightSigma = context.number(QStringLiteral("walk_height_sigma"));
     p.calibrationFixes = context.integer(QStringLiteral("calibration_fixes"));
-    p.outlierTest = context.text(QStringLiteral("outlier_test")) == QLatin1String("mad") ? LpsCalibration::OutlierTest::Mad
-                                                                                          : LpsCalibration::OutlierTest::Grubbs;
+    p.outlierTest = context.text(QStringLiteral("outlier_test")) == QLatin1String("mad")
+                        ? LpsCalibration::OutlierTest::Mad
+                        : LpsCalibration::OutlierTest::Grubbs;
     p.alpha = context.number(QStringLiteral("alpha"));
     p.priorSigmaXy = context.number(QStringLiteral("prior_sigma_xy"));
     p.priorSigmaZ = context.number(QStringLiteral("prior_sigma_z"));
@@ -136,15 +154,18 @@ Expected<std::vector<ProcessorOutput>> LpsCalibrationProcessor::run(const RunCon
         TrackPose pose = track->pose();
         if (context.has(QStringLiteral("track_x"))) pose.x = context.number(QStringLiteral("track_x"));
         if (context.has(QStringLiteral("track_y"))) pose.y = context.number(QStringLiteral("track_y"));
-        if (context.has(QStringLiteral("track_rotation"))) pose.rotation = context.number(QStringLiteral("track_rotation"));
+        if (context.has(QStringLiteral("track_rotation")))
+            pose.rotation = context.number(QStringLiteral("track_rotation"));
         track->setPose(pose);
         p.track = std::move(*track);
     }
     p.gaugeMaxRms = context.number(QStringLiteral("gauge_max_rms"));
     p.gaugeMinCoverage = context.number(QStringLiteral("gauge_min_coverage"));
-    if (context.has(QStringLiteral("gauge_guess_sigma"))) p.gaugeGuessSigma = context.number(QStringLiteral("gauge_guess_sigma"));
+    if (context.has(QStringLiteral("gauge_guess_sigma")))
+        p.gaugeGuessSigma = context.number(QStringLiteral("gauge_guess_sigma"));
 
-    auto result = LpsCalibration(p).run(epochs->epochs, *initial, context.progress(), reference ? &*reference : nullptr);
+    auto result =
+        LpsCalibration(p).run(epochs->epochs, *initial, context.progress(), reference ? &*reference : nullptr);
     if (!result) return context.isCancelled() ? cancelledError() : result.error();
     const auto& report = result->report;
 

@@ -53,26 +53,29 @@ struct LpsPositioningProcessor::Plan {
 QString LpsPositioningProcessor::name() const { return tr("LPS positioning (TDoA)"); }
 
 QString LpsPositioningProcessor::description() const {
-    return tr("Tag positions and clock offsets from TDoA readings and a beacon table, one fix per instant "
-              "(2D at tag_height or 3D), with beacon selection against NLOS: all, IRLS (bisquare, 2.5·MAD), "
-              "largest-residual rejection or the field of view of the body-worn tag.");
+    return tr(
+        "Tag positions and clock offsets from TDoA readings and a beacon table, one fix per instant "
+        "(2D at tag_height or 3D), with beacon selection against NLOS: all, IRLS (bisquare, 2.5·MAD), "
+        "largest-residual rejection or the field of view of the body-worn tag.");
 }
 
 ParameterSpecs LpsPositioningProcessor::parameters() const {
     const double inf = std::numeric_limits<double>::infinity();
     return {
-        ParameterSpec::choice(QStringLiteral("dimension"), {QStringLiteral("auto"), QStringLiteral("2d"), QStringLiteral("3d")},
-                              QStringLiteral("auto"),
-                              tr("2d solves x, y at tag_height; 3d also z; auto = 3d only when the beacons' height span "
-                                 "is at least 30 % of their horizontal extent (else z is ill-conditioned).")),
+        ParameterSpec::choice(
+            QStringLiteral("dimension"), {QStringLiteral("auto"), QStringLiteral("2d"), QStringLiteral("3d")},
+            QStringLiteral("auto"),
+            tr("2d solves x, y at tag_height; 3d also z; auto = 3d only when the beacons' height span "
+               "is at least 30 % of their horizontal extent (else z is ill-conditioned).")),
         ParameterSpec::number(QStringLiteral("tag_height"), 1.2, -100, 1000, QStringLiteral("m"),
                               tr("Tag height in the LPS frame for 2D fixes.")),
         ParameterSpec::choice(QStringLiteral("selection"),
                               {QStringLiteral("all"), QStringLiteral("irls"), QStringLiteral("largest-residual"),
                                QStringLiteral("field-of-view")},
                               QStringLiteral("irls"), tr("Beacon selection method (thesis §3.2).")),
-        ParameterSpec::choice(QStringLiteral("loss"), {QStringLiteral("none"), QStringLiteral("huber"), QStringLiteral("cauchy")},
-                              QStringLiteral("none"), tr("Robust loss of the fix (solved with a ceres::Problem; slower).")),
+        ParameterSpec::choice(
+            QStringLiteral("loss"), {QStringLiteral("none"), QStringLiteral("huber"), QStringLiteral("cauchy")},
+            QStringLiteral("none"), tr("Robust loss of the fix (solved with a ceres::Problem; slower).")),
         ParameterSpec::number(QStringLiteral("loss_scale"), 0.5, 1e-3, 100, QStringLiteral("m"),
                               tr("Residual at which the robust loss leaves its quadratic part.")),
         ParameterSpec::integer(QStringLiteral("min_beacons"), 4, 4, 64, tr("Fewest beacons per fix (thesis: 4).")),
@@ -91,24 +94,35 @@ ParameterSpecs LpsPositioningProcessor::parameters() const {
                                tr("field-of-view: afterwards reject gross outliers among the beacons in view "
                                   "(leave-one-out), and re-solve a fix more than 4 m from the median of the "
                                   "last five fixes with IRLS over all beacons.")),
-        ParameterSpec::choice(QStringLiteral("heading"), {QStringLiteral("track"), QStringLiteral("orientation"), QStringLiteral("motion")},
+        ParameterSpec::choice(QStringLiteral("heading"),
+                              {QStringLiteral("track"), QStringLiteral("orientation"), QStringLiteral("motion")},
                               QStringLiteral("track"),
                               tr("field-of-view: body heading from the track geometry and running direction, from the "
                                  "orientation input (sensor x axis = forward) or from the direction of travel.")),
         ParameterSpec::text(QStringLiteral("track"), QStringLiteral("iaaf-400m"),
                             tr("field-of-view, heading=track: project geometry name or built-in track; the LPS frame "
                                "must be the track's (see lps-align).")),
-        ParameterSpec::choice(QStringLiteral("direction"), {QStringLiteral("ccw"), QStringLiteral("cw")}, QStringLiteral("ccw"),
+        ParameterSpec::choice(QStringLiteral("direction"), {QStringLiteral("ccw"), QStringLiteral("cw")},
+                              QStringLiteral("ccw"),
                               tr("field-of-view, heading=track: running direction (athletics: counter-clockwise).")),
     };
 }
 
 QList<InputSpec> LpsPositioningProcessor::inputs() const {
-    return {InputSpec{QStringLiteral("tdoa"), {QStringLiteral("lps-tdoa")}, false, false,
+    return {InputSpec{QStringLiteral("tdoa"),
+                      {QStringLiteral("lps-tdoa")},
+                      false,
+                      false,
                       tr("TDoA readings t, beacon, dt (s), several rows per instant.")},
-            InputSpec{QStringLiteral("beacons"), {QStringLiteral("beacons")}, true, false,
+            InputSpec{QStringLiteral("beacons"),
+                      {QStringLiteral("beacons")},
+                      true,
+                      false,
                       tr("Beacon table id, x, y, z (m), from any recording; a row 'ref' places the reference node.")},
-            InputSpec{QStringLiteral("orientation"), {QStringLiteral("orientation")}, false, true,
+            InputSpec{QStringLiteral("orientation"),
+                      {QStringLiteral("orientation")},
+                      false,
+                      true,
                       tr("Optional orientation (qw, qx, qy, qz) for heading=orientation.")}};
 }
 
@@ -135,7 +149,8 @@ Expected<LpsPositioningProcessor::Plan> LpsPositioningProcessor::makePlan(const 
 
     auto& solver = plan.params.solver;
     const QString dimension = context.text(QStringLiteral("dimension"));
-    const bool spatial = dimension == QLatin1String("3d") || (dimension == QLatin1String("auto") && geometryAllows3d(plan.layout));
+    const bool spatial =
+        dimension == QLatin1String("3d") || (dimension == QLatin1String("auto") && geometryAllows3d(plan.layout));
     solver.geometry = spatial ? TdoaSolver::Geometry::Spatial : TdoaSolver::Geometry::Planar;
     solver.tagHeight = context.number(QStringLiteral("tag_height"));
     const QString loss = context.text(QStringLiteral("loss"));
@@ -163,7 +178,9 @@ Expected<LpsPositioningProcessor::Plan> LpsPositioningProcessor::makePlan(const 
     }
     if (plan.layout.size() < sel.minBeacons)
         return makeError(QStringLiteral("min_beacons = %1 but the beacon table '%2' has only %3 beacons")
-                             .arg(sel.minBeacons).arg(context.inputPath(1)).arg(plan.layout.size()));
+                             .arg(sel.minBeacons)
+                             .arg(context.inputPath(1))
+                             .arg(plan.layout.size()));
 
     const QString heading = context.text(QStringLiteral("heading"));
     plan.params.heading = heading == QLatin1String("orientation") ? TdoaPositioning::HeadingSource::Orientation
@@ -223,9 +240,12 @@ Expected<std::vector<ProcessorOutput>> LpsPositioningProcessor::run(const RunCon
     info.name = QStringLiteral("lps");
     info.kind = QStringLiteral("lps-position");
     info.frame = QStringLiteral("lps");
-    info.columns = {{QStringLiteral("x"), QStringLiteral("m")},        {QStringLiteral("y"), QStringLiteral("m")},
-                    {QStringLiteral("z"), QStringLiteral("m")},        {QStringLiteral("offset"), QStringLiteral("s")},
-                    {QStringLiteral("rms_residual"), QStringLiteral("m")}, {QStringLiteral("n_beacons"), QStringLiteral("1")}};
+    info.columns = {{QStringLiteral("x"), QStringLiteral("m")},
+                    {QStringLiteral("y"), QStringLiteral("m")},
+                    {QStringLiteral("z"), QStringLiteral("m")},
+                    {QStringLiteral("offset"), QStringLiteral("s")},
+                    {QStringLiteral("rms_residual"), QStringLiteral("m")},
+                    {QStringLiteral("n_beacons"), QStringLiteral("1")}};
     std::size_t valid = 0;
     for (const auto& f : *fixes) valid += f.valid;
     if (valid == 0)
@@ -248,7 +268,8 @@ Expected<std::vector<ProcessorOutput>> LpsPositioningProcessor::run(const RunCon
     info.attributes.insert(QStringLiteral("fixes_dropped"), qint64(fixes->size() - valid));
     info.attributes.insert(QStringLiteral("readings_skipped"), qint64(plan->epochs.readingsSkipped));
     info.attributes.insert(QStringLiteral("solver"), plan->params.solver.geometry == TdoaSolver::Geometry::Planar
-                                                         ? QStringLiteral("2d") : QStringLiteral("3d"));
+                                                         ? QStringLiteral("2d")
+                                                         : QStringLiteral("3d"));
     std::vector<ProcessorOutput> outputs;
     outputs.push_back({QString(), Stream(std::move(info), std::move(data))});
     return outputs;

@@ -25,13 +25,15 @@ std::optional<BeaconSelection::View> TdoaPositioning::view(double t) const {
     if (!position) return std::nullopt;
     std::optional<double> heading;
     switch (params_.heading) {
-    case HeadingSource::Track:
-        heading = track_.headingAt(position->head<2>()) + (params_.clockwise ? std::numbers::pi : 0.0);
-        break;
-    case HeadingSource::Orientation:
-        if (orientationHeading_) heading = orientationHeading_(t);
-        break;
-    case HeadingSource::Motion: heading = history_.motionHeading(t); break;
+        case HeadingSource::Track:
+            heading = track_.headingAt(position->head<2>()) + (params_.clockwise ? std::numbers::pi : 0.0);
+            break;
+        case HeadingSource::Orientation:
+            if (orientationHeading_) heading = orientationHeading_(t);
+            break;
+        case HeadingSource::Motion:
+            heading = history_.motionHeading(t);
+            break;
     }
     if (!heading) return std::nullopt;
     return BeaconSelection::View{*position, *heading};
@@ -53,7 +55,8 @@ TagFix TdoaPositioning::update(const TdoaEpoch& epoch) {
     return fix;
 }
 
-std::optional<std::vector<TagFix>> TdoaPositioning::run(const std::vector<TdoaEpoch>& epochs, const Progress& progress) {
+std::optional<std::vector<TagFix>> TdoaPositioning::run(const std::vector<TdoaEpoch>& epochs,
+                                                        const Progress& progress) {
     std::vector<TagFix> fixes;
     fixes.reserve(epochs.size());
     for (std::size_t k = 0; k < epochs.size(); ++k) {

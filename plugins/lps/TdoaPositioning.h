@@ -24,7 +24,7 @@ public:
         TdoaSolver::Params solver;
         BeaconSelection::Params selection;
         HeadingSource heading = HeadingSource::Track;
-        bool clockwise = false;      // running direction on the track
+        bool clockwise = false;        // running direction on the track
         double maxWarmStartGap = 2.0;  // s; older fixes do not seed the solver or the history
     };
 

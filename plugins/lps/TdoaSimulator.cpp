@@ -5,7 +5,8 @@
 namespace athlos::lps {
 
 const std::vector<Perturbation>& thesisPerturbations() {
-    static const std::vector<Perturbation> levels = {{1, 0.5}, {1, 1}, {5, 2.5}, {5, 5}, {10, 5}, {10, 10}, {20, 10}, {20, 20}};
+    static const std::vector<Perturbation> levels = {{1, 0.5}, {1, 1},   {5, 2.5}, {5, 5},
+                                                     {10, 5},  {10, 10}, {20, 10}, {20, 20}};
     return levels;
 }
 
@@ -14,7 +15,8 @@ TdoaSimulator::TdoaSimulator(const Params& params, std::uint64_t seed)
 
 BeaconLayout TdoaSimulator::venue(const VenueParams& venue, const TrackGeometry& track) {
     std::uniform_real_distribution<double> unit(0.0, 1.0);
-    const double outer = track.laneOffset(std::max(1, track.kind() == TrackGeometry::Kind::Oval ? track.ovalParams().lanes : 1)) + 1.0;
+    const double outer =
+        track.laneOffset(std::max(1, track.kind() == TrackGeometry::Kind::Oval ? track.ovalParams().lanes : 1)) + 1.0;
     const double length = track.referenceLength();
     BeaconLayout layout;
     for (int i = 0; i < venue.beacons; ++i) {
@@ -79,7 +81,8 @@ TdoaSimulator::Recording TdoaSimulator::measure(const std::vector<TrajectorySamp
             if (params_.bodyShadowing) {
                 const Vector3 d = b - sample.position;
                 const double phi = std::atan2(d.y(), d.x()) - sample.heading;
-                const double loss = 20.0 * std::log10(std::max(d.norm(), 0.1)) + 20.0 * std::log10(params_.frequency) - 147.55;
+                const double loss =
+                    20.0 * std::log10(std::max(d.norm(), 0.1)) + 20.0 * std::log10(params_.frequency) - 147.55;
                 shadowed = body_.gainDb(phi) - loss + params_.linkKappa + params_.fadingDb * normal(rng_) < 0.0;
                 if (shadowed) {
                     if (unit(rng_) < params_.nlosDropRate) continue;

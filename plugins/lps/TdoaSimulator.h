@@ -29,8 +29,8 @@ struct TrajectorySample {
 
 struct VenueParams {
     int beacons = 12;
-    double minHeight = 3.0, maxHeight = 8.0;        // m
-    double minClearance = 3.0, maxClearance = 20.0; // m outside the outer lane
+    double minHeight = 3.0, maxHeight = 8.0;         // m
+    double minClearance = 3.0, maxClearance = 20.0;  // m outside the outer lane
 };
 
 // Initial-guess perturbation levels of thesis Table 3.2: {σxy, σz} (m).
@@ -43,20 +43,20 @@ const std::vector<Perturbation>& thesisPerturbations();
 class TdoaSimulator {
 public:
     struct Params {
-        double timeOffset = 7e-6;             // s
-        double noiseSd = 0.1 / kSpeedOfLight; // s (3.336·10⁻¹⁰)
+        double timeOffset = 7e-6;              // s
+        double noiseSd = 0.1 / kSpeedOfLight;  // s (3.336·10⁻¹⁰)
         double outlierRate = 0.01;
         double outlierSd = 20.0 / kSpeedOfLight;  // s
         bool positiveOutliers = true;
         bool bodyShadowing = false;
-        double bodyExponent = 8.0;            // front-lobe exponent of the body pattern
-        double bodyBackDb = -35.0;            // dB, gain behind the body
-        double linkKappa = 112.0;             // dB, link budget constant (Pt, losses, detection threshold)
-        double fadingDb = 3.0;                // dB, shadow-fading σ per reading
-        double frequency = 5.8e9;             // Hz
+        double bodyExponent = 8.0;  // front-lobe exponent of the body pattern
+        double bodyBackDb = -35.0;  // dB, gain behind the body
+        double linkKappa = 112.0;   // dB, link budget constant (Pt, losses, detection threshold)
+        double fadingDb = 3.0;      // dB, shadow-fading σ per reading
+        double frequency = 5.8e9;   // Hz
         double nlosDropRate = 0.3;
-        double nlosBiasMin = 1.0;             // m
-        double nlosBiasMean = 4.0;            // m
+        double nlosBiasMin = 1.0;   // m
+        double nlosBiasMean = 4.0;  // m
     };
 
     struct Recording {

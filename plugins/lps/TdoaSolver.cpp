@@ -8,7 +8,8 @@
 
 namespace athlos::lps {
 
-void FixInput::assign(const TdoaEpoch& epoch, const BeaconLayout& layout, const std::vector<double>& referenceDistance) {
+void FixInput::assign(const TdoaEpoch& epoch, const BeaconLayout& layout,
+                      const std::vector<double>& referenceDistance) {
     t = epoch.t;
     const auto n = epoch.readings.size();
     beacons.resize(n);
@@ -229,8 +230,8 @@ TagFix TdoaSolver::solveCeres(const FixInput& input, const TagFix& start) const 
         if (w <= 0.0) continue;
         const double s = std::sqrt(w);
         ceres::CostFunction* cost =
-            planar ? static_cast<ceres::CostFunction*>(
-                         new TdoaReadingCost<3>(input.beacons[size_t(i)], input.ranges[size_t(i)], s, params_.tagHeight))
+            planar ? static_cast<ceres::CostFunction*>(new TdoaReadingCost<3>(
+                         input.beacons[size_t(i)], input.ranges[size_t(i)], s, params_.tagHeight))
                    : new TdoaReadingCost<4>(input.beacons[size_t(i)], input.ranges[size_t(i)], s, 0.0);
         problem.AddResidualBlock(cost, loss.get(), x.data());
     }

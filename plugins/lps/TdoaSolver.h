@@ -40,9 +40,9 @@ public:
 
     struct Params {
         Geometry geometry = Geometry::Planar;
-        double tagHeight = 1.2;      // m, planar mode
-        Loss loss = Loss::None;      // != None uses a ceres::Problem per fix
-        double lossScale = 0.5;      // m, where the robust loss leaves the quadratic regime
+        double tagHeight = 1.2;  // m, planar mode
+        Loss loss = Loss::None;  // != None uses a ceres::Problem per fix
+        double lossScale = 0.5;  // m, where the robust loss leaves the quadratic regime
         int maxIterations = 30;
         // A warm-started fix whose RMS residual exceeds this is re-solved from the closed-form start
         // and the lower-cost solution kept (guards against TDoA's secondary minima).

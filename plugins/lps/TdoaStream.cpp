@@ -33,8 +33,7 @@ Expected<EpochSet> epochsFromWide(const Stream& stream, const StreamData& data, 
     if (!any)
         return makeError(QStringLiteral("TDoA stream '%1' has no dt_<beacon> columns (nor beacon and dt); it has: %2")
                              .arg(path, info.columnNames().join(QStringLiteral(", "))));
-    if (!unknown.isEmpty())
-        return unknownBeaconsError(path, unknown, layout);
+    if (!unknown.isEmpty()) return unknownBeaconsError(path, unknown, layout);
     EpochSet set;
     set.epochs.reserve(data.rows());
     for (std::size_t r = 0; r < data.rows(); ++r) {
@@ -72,7 +71,7 @@ Expected<EpochSet> epochsFromStream(const Stream& stream, const StreamData& data
         if (!textIds.isEmpty()) {
             const auto k = static_cast<qsizetype>(value);
             id = (value >= 0 && k < textIds.size() && double(k) == value) ? textIds[k].toString()
-                                                                            : QString::number(value, 'g', 17);
+                                                                          : QString::number(value, 'g', 17);
         } else {
             id = QString::number(value, 'g', 17);
         }
@@ -97,7 +96,10 @@ Expected<EpochSet> epochsFromStream(const Stream& stream, const StreamData& data
         if (set.epochs.empty() || t > set.epochs.back().t + tolerance) {
             if (!set.epochs.empty() && t < set.epochs.back().t - tolerance)
                 return makeError(QStringLiteral("TDoA stream '%1': time goes back at row %2 (%3 s after %4 s)")
-                                     .arg(path).arg(r + 1).arg(t, 0, 'g', 12).arg(set.epochs.back().t, 0, 'g', 12));
+                                     .arg(path)
+                                     .arg(r + 1)
+                                     .arg(t, 0, 'g', 12)
+                                     .arg(set.epochs.back().t, 0, 'g', 12));
             set.epochs.push_back({t, {}});
         }
         auto& readings = set.epochs.back().readings;
@@ -105,11 +107,12 @@ Expected<EpochSet> epochsFromStream(const Stream& stream, const StreamData& data
         for (const auto& reading : readings) duplicate = duplicate || reading.beacon == index;
         if (duplicate)
             return makeError(QStringLiteral("TDoA stream '%1': beacon %2 appears twice at t = %3 s (row %4)")
-                                 .arg(path, layout.ids[index]).arg(t, 0, 'g', 12).arg(r + 1));
+                                 .arg(path, layout.ids[index])
+                                 .arg(t, 0, 'g', 12)
+                                 .arg(r + 1));
         readings.push_back({index, dt});
     }
-    if (!unknown.isEmpty())
-        return unknownBeaconsError(path, unknown, layout);
+    if (!unknown.isEmpty()) return unknownBeaconsError(path, unknown, layout);
     return set;
 }
 

@@ -11,11 +11,11 @@ namespace athlos::lps {
 
 namespace {
 
-constexpr double kCauchy = 2.385;      // 95 % efficiency at the normal distribution
-constexpr double kMinScale = 0.02;     // m, floor of the robust scale (noise-free data)
+constexpr double kCauchy = 2.385;   // 95 % efficiency at the normal distribution
+constexpr double kMinScale = 0.02;  // m, floor of the robust scale (noise-free data)
 constexpr double kInlierSigmas = 3.0;
-constexpr double kMinInlierBand = 0.3; // m
-constexpr double kBin = 10.0;          // m of reference line per coverage bin
+constexpr double kMinInlierBand = 0.3;  // m
+constexpr double kBin = 10.0;           // m of reference line per coverage bin
 
 Eigen::Vector2d rotated(const Vector3& p, const Vector3& pivot, double c, double s) {
     const double x = p.x() - pivot.x(), y = p.y() - pivot.y();
@@ -39,7 +39,7 @@ TrackGaugeFit fitTrackGauge(const std::vector<Vector3>& points, const Vector3& p
             const Eigen::Vector2d q = rotated(points[k], pivot, c, s);
             queries[k] = track.query(q);
             const double h = queries[k].heading;
-            const Eigen::Vector2d right(std::sin(h), -std::cos(h));       // ∂d_track/∂q
+            const Eigen::Vector2d right(std::sin(h), -std::cos(h));             // ∂d_track/∂q
             const Eigen::Vector2d dq(-(q.y() - pivot.y()), q.x() - pivot.x());  // ∂q/∂θ
             e[k] = queries[k].d - d;
             jacobian[k] = Eigen::Vector2d(right.dot(dq), -1.0);

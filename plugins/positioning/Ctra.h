@@ -17,7 +17,7 @@ enum StateIndex { kPx = 0, kPy = 1, kV = 2, kA = 3, kPhi = 4, kOmega = 5 };
 
 // Position increment of one CTRA step and its partial derivatives.
 struct CtraIncrement {
-    Eigen::Vector2d delta;   // Δp
+    Eigen::Vector2d delta;                 // Δp
     Eigen::Vector2d dV, dA, dPhi, dOmega;  // ∂Δp/∂v, ∂Δp/∂a, ∂Δp/∂φ, ∂Δp/∂ω
     Eigen::Vector2d direction;  // [cos, sin](φ + ωT), the predicted heading's direction (to (ωT)³/6 for small ωT)
 };
@@ -28,13 +28,13 @@ CtraIncrement ctraIncrement(double v, double a, double phi, double omega, double
 // Process noise densities (per second: Q_k = diag(q)·T_k, so inserting output-grid steps does not
 // change the total noise of an interval) and measurement noise variances.
 struct CtraNoise {
-    double qPosition = 1e-3; // m²/s      (thesis: 0; estimated with noise=auto)
-    double qSpeed = 0.1;     // m²/s³
-    double qAccel = 1.0;     // m²/s⁵
-    double qHeading = 0.01;  // rad²/s
-    double qTurnRate = 0.05; // rad²/s³
-    double rX = 0.01;        // m²
-    double rY = 0.01;        // m²
+    double qPosition = 1e-3;  // m²/s      (thesis: 0; estimated with noise=auto)
+    double qSpeed = 0.1;      // m²/s³
+    double qAccel = 1.0;      // m²/s⁵
+    double qHeading = 0.01;   // rad²/s
+    double qTurnRate = 0.05;  // rad²/s³
+    double rX = 0.01;         // m²
+    double rY = 0.01;         // m²
 };
 
 // Kinematic summary every positioning model can give for its output columns (speed ≥ 0, heading =

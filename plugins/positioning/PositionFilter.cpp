@@ -98,8 +98,8 @@ struct ModelTraits<PseudoTrackModel> : CtraTraits<PseudoTrackModel> {};
 
 template <class Filter>
 PositionFilterResult runFilter(Filter filter, const PositionFilter::Params& params, const PositionSamples& in,
-                               const std::vector<double>& tOut, Smoothing smoothing, const PositionFilter::ProgressFn& progress,
-                               const TrackGeometry* track) {
+                               const std::vector<double>& tOut, Smoothing smoothing,
+                               const PositionFilter::ProgressFn& progress, const TrackGeometry* track) {
     using Model = typename Filter::ModelType;
     PositionFilterResult result;
     if (in.t.empty()) return result;
@@ -140,32 +140,36 @@ PositionFilterResult dispatchFilter(const Model& model, const PositionFilter::Pa
                                     const PositionFilter::ProgressFn& progress) {
     const TrackGeometry* track = params.track.get();
     switch (params.filter) {
-    case FilterKind::Ekf: return runFilter(Ekf<Model>(model), params, in, tOut, smoothing, progress, track);
-    case FilterKind::Ukf: return runFilter(Ukf<Model>(model, params.unscented), params, in, tOut, smoothing, progress, track);
-    case FilterKind::SrUkf:
-        return runFilter(SrUkf<Model>(model, params.unscented), params, in, tOut, smoothing, progress, track);
+        case FilterKind::Ekf:
+            return runFilter(Ekf<Model>(model), params, in, tOut, smoothing, progress, track);
+        case FilterKind::Ukf:
+            return runFilter(Ukf<Model>(model, params.unscented), params, in, tOut, smoothing, progress, track);
+        case FilterKind::SrUkf:
+            return runFilter(SrUkf<Model>(model, params.unscented), params, in, tOut, smoothing, progress, track);
     }
     return {};
 }
 
 PositionFilterResult dispatch(const PositionFilter::Params& params, const PositionSamples& in,
-                              const std::vector<double>& tOut, Smoothing smoothing, const PositionFilter::ProgressFn& progress) {
+                              const std::vector<double>& tOut, Smoothing smoothing,
+                              const PositionFilter::ProgressFn& progress) {
     const NoiseSettings& n = params.noise;
     const double inf = std::numeric_limits<double>::infinity();
-    const double cvAfter =
-        params.cvSwitch && !in.t.empty() ? PositionFilter::detectStart(in) + params.accelPhase : inf;
+    const double cvAfter = params.cvSwitch && !in.t.empty() ? PositionFilter::detectStart(in) + params.accelPhase : inf;
     TrackConstraintParams constraint;
     constraint.track = params.track;
     switch (params.model) {
-    case ModelKind::Unconstrained: return dispatchFilter(CtraModel({n.ctra, inf}), params, in, tOut, smoothing, progress);
-    case ModelKind::ConstantVelocity:
-        return dispatchFilter(ConstantVelocityModel({n.qAccelCv, n.ctra.rX, n.ctra.rY}), params, in, tOut, smoothing,
-                              progress);
-    case ModelKind::Augmented:
-        return dispatchFilter(AugmentedTrackModel({n.ctra, constraint, cvAfter}), params, in, tOut, smoothing, progress);
-    case ModelKind::Pseudo:
-        return dispatchFilter(PseudoTrackModel({n.ctra, constraint, cvAfter, n.rHeading, n.rTurnRate, n.rAccel}), params,
-                              in, tOut, smoothing, progress);
+        case ModelKind::Unconstrained:
+            return dispatchFilter(CtraModel({n.ctra, inf}), params, in, tOut, smoothing, progress);
+        case ModelKind::ConstantVelocity:
+            return dispatchFilter(ConstantVelocityModel({n.qAccelCv, n.ctra.rX, n.ctra.rY}), params, in, tOut,
+                                  smoothing, progress);
+        case ModelKind::Augmented:
+            return dispatchFilter(AugmentedTrackModel({n.ctra, constraint, cvAfter}), params, in, tOut, smoothing,
+                                  progress);
+        case ModelKind::Pseudo:
+            return dispatchFilter(PseudoTrackModel({n.ctra, constraint, cvAfter, n.rHeading, n.rTurnRate, n.rAccel}),
+                                  params, in, tOut, smoothing, progress);
     }
     return {};
 }
@@ -195,7 +199,8 @@ double PositionFilter::objective(const PositionSamples& in) const {
 }
 
 PositionFilter::Estimate PositionFilter::estimateNoise(const Params& params, const std::vector<PositionSamples>& runs,
-                                                       const NoiseEstimator::Params& search, const ProgressFn& progress) {
+                                                       const NoiseEstimator::Params& search,
+                                                       const ProgressFn& progress) {
     // The searched parameters depend on the model; each maps to one field of NoiseSettings.
     struct Field {
         NoiseEstimator::Parameter parameter;
@@ -237,8 +242,10 @@ PositionFilter::Estimate PositionFilter::estimateNoise(const Params& params, con
     auto apply = [&](const std::vector<double>& values) {
         Params p = params;
         for (std::size_t i = 0; i < fields.size(); ++i) {
-            if (fields[i].member) p.noise.*fields[i].member = values[i];
-            else p.noise.ctra.*fields[i].ctraMember = values[i];
+            if (fields[i].member)
+                p.noise.*fields[i].member = values[i];
+            else
+                p.noise.ctra.*fields[i].ctraMember = values[i];
         }
         return p;
     };
@@ -281,7 +288,8 @@ double PositionFilter::roughMeasurementVariance(const PositionSamples& in) {
         dy.push_back(std::abs(d.y()));
     }
     if (dx.empty()) return 0.01;
-    const double sx = 1.4826 * math::upperMedian(dx) / std::sqrt(6.0), sy = 1.4826 * math::upperMedian(dy) / std::sqrt(6.0);
+    const double sx = 1.4826 * math::upperMedian(dx) / std::sqrt(6.0),
+                 sy = 1.4826 * math::upperMedian(dy) / std::sqrt(6.0);
     return std::max(0.5 * (sx * sx + sy * sy), 1e-4);
 }
 

@@ -21,11 +21,11 @@ enum class ModelKind { Unconstrained, Pseudo, Augmented, ConstantVelocity };
 // Every noise quantity any model uses (variances; Q entries are densities per second).
 struct NoiseSettings {
     CtraNoise ctra;
-    double qAccelCv = 1.0;      // m²/s³, constant-velocity model
-    double rHeading = 0.01;     // rad², pseudo-measurements
-    double rTurnRate = 0.01;    // rad²/s²
-    double rAccel = 0.1;        // m²/s⁴
-    double gate = 16.0;         // α on d²
+    double qAccelCv = 1.0;    // m²/s³, constant-velocity model
+    double rHeading = 0.01;   // rad², pseudo-measurements
+    double rTurnRate = 0.01;  // rad²/s²
+    double rAccel = 0.1;      // m²/s⁴
+    double gate = 16.0;       // α on d²
 };
 
 struct PositionSamples {
@@ -50,12 +50,12 @@ public:
         std::shared_ptr<const TrackGeometry> track;  // required for pseudo / augmented
         NoiseSettings noise;
         estimation::Smoothing smoothing = estimation::Smoothing::None;
-        double lag = 0.5;          // s, fixed-lag smoothing
-        double maxStep = 0.1;      // s, longest prediction step (outages are crossed in steps)
-        bool cvSwitch = true;      // track models: a = 0 after the acceleration phase
-        double accelPhase = 6.0;   // s of constant acceleration after the detected start
-        double bridgeGap = 2.0;    // s: augmented model with RTS, outages at least this long are bridged
-                                   // along the track (TrackGapBridge); 0 = off
+        double lag = 0.5;         // s, fixed-lag smoothing
+        double maxStep = 0.1;     // s, longest prediction step (outages are crossed in steps)
+        bool cvSwitch = true;     // track models: a = 0 after the acceleration phase
+        double accelPhase = 6.0;  // s of constant acceleration after the detected start
+        double bridgeGap = 2.0;   // s: augmented model with RTS, outages at least this long are bridged
+                                  // along the track (TrackGapBridge); 0 = off
         estimation::UnscentedParams unscented;
     };
 

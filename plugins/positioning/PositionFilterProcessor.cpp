@@ -24,7 +24,8 @@ ParameterSpec optionalNumber(const QString& name, double min, double max, const 
 Expected<PositionSamples> loadPositions(const RunContext& context) {
     const Stream* stream = context.stream(0);
     if (!stream) return makeError(QStringLiteral("input '%1' was not given").arg(context.inputRole(0)));
-    const int cx = stream->info().columnIndex(QStringLiteral("x")), cy = stream->info().columnIndex(QStringLiteral("y"));
+    const int cx = stream->info().columnIndex(QStringLiteral("x")),
+              cy = stream->info().columnIndex(QStringLiteral("y"));
     if (cx < 0 || cy < 0) return context.inputError(0, QStringLiteral("needs columns x and y"));
     auto input = context.samples(0);
     if (!input) return input.error();
@@ -37,7 +38,8 @@ Expected<PositionSamples> loadPositions(const RunContext& context) {
         samples.p.emplace_back(x, y);
     }
     if (samples.t.size() < 10)
-        return input->error(QStringLiteral("%1 valid samples; position-filter needs at least 10").arg(samples.t.size()));
+        return input->error(
+            QStringLiteral("%1 valid samples; position-filter needs at least 10").arg(samples.t.size()));
     return samples;
 }
 }  // namespace
@@ -45,30 +47,34 @@ Expected<PositionSamples> loadPositions(const RunContext& context) {
 QString PositionFilterProcessor::name() const { return tr("Position filter"); }
 
 QString PositionFilterProcessor::description() const {
-    return tr("Robust Kalman filtering of LPS positions (EKF, UKF or square-root UKF): outlier gating by the "
-              "Mahalanobis distance, output on any time grid from non-uniform input, RTS or fixed-lag smoothing, "
-              "noise parameters estimated from the data, and track constraints either in an augmented motion model "
-              "or as pseudo-measurements.");
+    return tr(
+        "Robust Kalman filtering of LPS positions (EKF, UKF or square-root UKF): outlier gating by the "
+        "Mahalanobis distance, output on any time grid from non-uniform input, RTS or fixed-lag smoothing, "
+        "noise parameters estimated from the data, and track constraints either in an augmented motion model "
+        "or as pseudo-measurements.");
 }
 
 ParameterSpecs PositionFilterProcessor::parameters() const {
     const CtraNoise n;
     const NoiseSettings ns;
     return {
-        ParameterSpec::choice(QStringLiteral("filter"), {QStringLiteral("ekf"), QStringLiteral("ukf"), QStringLiteral("srukf")},
+        ParameterSpec::choice(QStringLiteral("filter"),
+                              {QStringLiteral("ekf"), QStringLiteral("ukf"), QStringLiteral("srukf")},
                               QStringLiteral("ekf"), tr("Kalman filter variant.")),
-        ParameterSpec::choice(QStringLiteral("model"),
-                              {QStringLiteral("unconstrained"), QStringLiteral("pseudo"), QStringLiteral("augmented"),
-                               QStringLiteral("constant-velocity")},
-                              QStringLiteral("augmented"),
-                              tr("Motion model: CTRA (unconstrained), CTRA with track pseudo-measurements, CTRA with the "
-                                 "track-augmented prediction, or constant velocity.")),
+        ParameterSpec::choice(
+            QStringLiteral("model"),
+            {QStringLiteral("unconstrained"), QStringLiteral("pseudo"), QStringLiteral("augmented"),
+             QStringLiteral("constant-velocity")},
+            QStringLiteral("augmented"),
+            tr("Motion model: CTRA (unconstrained), CTRA with track pseudo-measurements, CTRA with the "
+               "track-augmented prediction, or constant velocity.")),
         ParameterSpec::text(QStringLiteral("track"), QStringLiteral("iaaf-400m"),
                             tr("Track geometry: a name under the project's /geometry or a built-in (iaaf-400m, "
                                "indoor-200m). Used by model=pseudo|augmented.")),
         optionalNumber(QStringLiteral("track_x"), -kInf, kInf, QStringLiteral("m"),
                        tr("Track origin x in LPS coordinates (overrides the geometry's pose).")),
-        optionalNumber(QStringLiteral("track_y"), -kInf, kInf, QStringLiteral("m"), tr("Track origin y in LPS coordinates.")),
+        optionalNumber(QStringLiteral("track_y"), -kInf, kInf, QStringLiteral("m"),
+                       tr("Track origin y in LPS coordinates.")),
         optionalNumber(QStringLiteral("track_rotation"), -10.0, 10.0, QStringLiteral("rad"),
                        tr("Rotation of the track frame in LPS coordinates (counter-clockwise).")),
         ParameterSpec::choice(QStringLiteral("noise"), {QStringLiteral("auto"), QStringLiteral("manual")},
@@ -94,8 +100,9 @@ ParameterSpecs PositionFilterProcessor::parameters() const {
                               tr("Pseudo-measurement variance of heading − track heading (model=pseudo, manual).")),
         ParameterSpec::number(QStringLiteral("r_turn_rate"), ns.rTurnRate, 1e-12, kInf, QStringLiteral("rad^2/s^2"),
                               tr("Pseudo-measurement variance of turn rate − v·curvature (model=pseudo, manual).")),
-        ParameterSpec::number(QStringLiteral("r_accel"), ns.rAccel, 1e-12, kInf, QStringLiteral("m^2/s^4"),
-                              tr("Pseudo-measurement variance of the acceleration after the start (model=pseudo, manual).")),
+        ParameterSpec::number(
+            QStringLiteral("r_accel"), ns.rAccel, 1e-12, kInf, QStringLiteral("m^2/s^4"),
+            tr("Pseudo-measurement variance of the acceleration after the start (model=pseudo, manual).")),
         ParameterSpec::number(QStringLiteral("gate"), ns.gate, 0.0, kInf, QString(),
                               tr("Outlier gate α on the squared Mahalanobis distance of the innovation (manual); "
                                  "0 disables gating.")),
@@ -110,8 +117,9 @@ ParameterSpecs PositionFilterProcessor::parameters() const {
                               tr("model=augmented with smoother=rts: outages at least this long are bridged along "
                                  "the track between the smoothed states at their ends (arc length by a monotone "
                                  "cubic matching both speeds); 0 = off.")),
-        optionalNumber(QStringLiteral("output_rate"), 0.0, 1e4, QStringLiteral("Hz"),
-                       tr("Output on a uniform grid at this rate (multiples of 1/rate); absent: at the input time stamps.")),
+        optionalNumber(
+            QStringLiteral("output_rate"), 0.0, 1e4, QStringLiteral("Hz"),
+            tr("Output on a uniform grid at this rate (multiples of 1/rate); absent: at the input time stamps.")),
         ParameterSpec::number(QStringLiteral("max_step"), 0.1, 1e-3, 10.0, QStringLiteral("s"),
                               tr("Longest prediction step; outages are crossed in steps of at most this length.")),
         ParameterSpec::boolean(QStringLiteral("cv_switch"), true,
@@ -123,7 +131,10 @@ ParameterSpecs PositionFilterProcessor::parameters() const {
 }
 
 QList<InputSpec> PositionFilterProcessor::inputs() const {
-    return {InputSpec{QStringLiteral("positions"), {QStringLiteral("lps-position")}, false, false,
+    return {InputSpec{QStringLiteral("positions"),
+                      {QStringLiteral("lps-position")},
+                      false,
+                      false,
                       tr("LPS fixes t, x, y (m), possibly non-uniform, with outliers and outages.")}};
 }
 
@@ -138,10 +149,11 @@ QList<OutputSpec> PositionFilterProcessor::outputs() const {
 Expected<PositionFilter::Params> PositionFilterProcessor::readParams(const RunContext& c) const {
     PositionFilter::Params p;
     const QString filter = c.text(QStringLiteral("filter")), model = c.text(QStringLiteral("model"));
-    p.filter = filter == QLatin1String("ukf") ? FilterKind::Ukf : filter == QLatin1String("srukf") ? FilterKind::SrUkf
-                                                                                                    : FilterKind::Ekf;
-    p.model = model == QLatin1String("unconstrained") ? ModelKind::Unconstrained
-              : model == QLatin1String("pseudo")      ? ModelKind::Pseudo
+    p.filter = filter == QLatin1String("ukf")     ? FilterKind::Ukf
+               : filter == QLatin1String("srukf") ? FilterKind::SrUkf
+                                                  : FilterKind::Ekf;
+    p.model = model == QLatin1String("unconstrained")       ? ModelKind::Unconstrained
+              : model == QLatin1String("pseudo")            ? ModelKind::Pseudo
               : model == QLatin1String("constant-velocity") ? ModelKind::ConstantVelocity
                                                             : ModelKind::Augmented;
     if (p.model == ModelKind::Pseudo || p.model == ModelKind::Augmented) {
@@ -203,11 +215,11 @@ Expected<std::vector<ProcessorOutput>> PositionFilterProcessor::run(const RunCon
     QJsonObject attributes;
     if (autoNoise) {
         const Progress sub = context.progress().sub(0.0, 0.8);
-        const auto estimate = PositionFilter::estimateNoise(params, {in}, estimation::NoiseEstimator::Params{},
-                                                            [&](double f) {
-                                                                sub.report(f, QStringLiteral("estimating noise"));
-                                                                return !context.isCancelled();
-                                                            });
+        const auto estimate =
+            PositionFilter::estimateNoise(params, {in}, estimation::NoiseEstimator::Params{}, [&](double f) {
+                sub.report(f, QStringLiteral("estimating noise"));
+                return !context.isCancelled();
+            });
         if (estimate.cancelled || context.isCancelled()) return cancelledError();
         params.noise = estimate.noise;
         QJsonObject estimated;
@@ -218,12 +230,16 @@ Expected<std::vector<ProcessorOutput>> PositionFilterProcessor::run(const RunCon
     }
     const NoiseSettings& n = params.noise;
     attributes.insert(QStringLiteral("noise"),
-                      QJsonObject{{QStringLiteral("q_position"), n.ctra.qPosition}, {QStringLiteral("q_speed"), n.ctra.qSpeed},
-                                  {QStringLiteral("q_accel"), params.model == ModelKind::ConstantVelocity ? n.qAccelCv
-                                                                                                          : n.ctra.qAccel},
-                                  {QStringLiteral("q_heading"), n.ctra.qHeading}, {QStringLiteral("q_turn_rate"), n.ctra.qTurnRate},
-                                  {QStringLiteral("r_x"), n.ctra.rX}, {QStringLiteral("r_y"), n.ctra.rY},
-                                  {QStringLiteral("r_heading"), n.rHeading}, {QStringLiteral("r_turn_rate"), n.rTurnRate},
+                      QJsonObject{{QStringLiteral("q_position"), n.ctra.qPosition},
+                                  {QStringLiteral("q_speed"), n.ctra.qSpeed},
+                                  {QStringLiteral("q_accel"),
+                                   params.model == ModelKind::ConstantVelocity ? n.qAccelCv : n.ctra.qAccel},
+                                  {QStringLiteral("q_heading"), n.ctra.qHeading},
+                                  {QStringLiteral("q_turn_rate"), n.ctra.qTurnRate},
+                                  {QStringLiteral("r_x"), n.ctra.rX},
+                                  {QStringLiteral("r_y"), n.ctra.rY},
+                                  {QStringLiteral("r_heading"), n.rHeading},
+                                  {QStringLiteral("r_turn_rate"), n.rTurnRate},
                                   {QStringLiteral("r_accel"), n.rAccel},
                                   {QStringLiteral("gate"), std::isfinite(n.gate) ? n.gate : 0.0}});
 
@@ -256,7 +272,8 @@ Expected<std::vector<ProcessorOutput>> PositionFilterProcessor::run(const RunCon
         if (grid) {
             const double hi = r.t[k] + 0.5 / rate, lo = r.t[k] - 0.5 / rate;
             while (next < in.t.size() && in.t[next] < lo) ++next;
-            for (std::size_t i = next; i < in.t.size() && in.t[i] < hi; ++i) flag = std::max(flag, double(r.outlier[i]));
+            for (std::size_t i = next; i < in.t.size() && in.t[i] < hi; ++i)
+                flag = std::max(flag, double(r.outlier[i]));
         } else {
             flag = r.outlier[k];
         }
@@ -265,9 +282,12 @@ Expected<std::vector<ProcessorOutput>> PositionFilterProcessor::run(const RunCon
     StreamInfo info;
     info.kind = QStringLiteral("trajectory");
     info.frame = context.stream(0)->info().frame.isEmpty() ? QStringLiteral("lps") : context.stream(0)->info().frame;
-    info.columns = {{QStringLiteral("x"), QStringLiteral("m")},        {QStringLiteral("y"), QStringLiteral("m")},
-                    {QStringLiteral("speed"), QStringLiteral("m/s")},  {QStringLiteral("heading"), QStringLiteral("rad")},
-                    {QStringLiteral("turn_rate"), QStringLiteral("rad/s")}, {QStringLiteral("accel"), QStringLiteral("m/s^2")},
+    info.columns = {{QStringLiteral("x"), QStringLiteral("m")},
+                    {QStringLiteral("y"), QStringLiteral("m")},
+                    {QStringLiteral("speed"), QStringLiteral("m/s")},
+                    {QStringLiteral("heading"), QStringLiteral("rad")},
+                    {QStringLiteral("turn_rate"), QStringLiteral("rad/s")},
+                    {QStringLiteral("accel"), QStringLiteral("m/s^2")},
                     {QStringLiteral("outlier"), QStringLiteral("1")}};
     if (grid) attributes.insert(QStringLiteral("sampling_rate"), rate);
     int outliers = 0;
@@ -284,7 +304,8 @@ Expected<std::vector<ProcessorOutput>> PositionFilterProcessor::run(const RunCon
     StreamInfo flagInfo;
     flagInfo.kind = QStringLiteral("outliers");
     flagInfo.frame = info.frame;
-    flagInfo.columns = {{QStringLiteral("outlier"), QStringLiteral("1")}, {QStringLiteral("mahalanobis"), QStringLiteral("1")}};
+    flagInfo.columns = {{QStringLiteral("outlier"), QStringLiteral("1")},
+                        {QStringLiteral("mahalanobis"), QStringLiteral("1")}};
 
     std::vector<ProcessorOutput> outputs;
     outputs.push_back({QString(), Stream(std::move(info), std::move(out))});

@@ -15,8 +15,9 @@ const double kInf = std::numeric_limits<double>::infinity();
 QString SimulateTrackRunProcessor::name() const { return tr("Simulate track run"); }
 
 QString SimulateTrackRunProcessor::description() const {
-    return tr("Simulates an LPS recording of a runner on a track (start acceleration, near-constant speed, lane "
-              "changes) with tag noise, outlier bursts, non-uniform sampling and outages, plus the ground truth.");
+    return tr(
+        "Simulates an LPS recording of a runner on a track (start acceleration, near-constant speed, lane "
+        "changes) with tag noise, outlier bursts, non-uniform sampling and outages, plus the ground truth.");
 }
 
 ParameterSpecs SimulateTrackRunProcessor::parameters() const {
@@ -26,33 +27,44 @@ ParameterSpecs SimulateTrackRunProcessor::parameters() const {
         PS::integer(QStringLiteral("seed"), 1, 0, std::numeric_limits<int>::max(), tr("Random seed (deterministic).")),
         PS::number(QStringLiteral("distance"), d.distance, 1.0, 1e5, QStringLiteral("m"), tr("Race distance.")),
         PS::integer(QStringLiteral("lane"), d.lane, 1, 12, tr("Start lane.")),
-        PS::number(QStringLiteral("top_speed"), d.topSpeed, 0.5, 15.0, QStringLiteral("m/s"), tr("Speed after the start.")),
+        PS::number(QStringLiteral("top_speed"), d.topSpeed, 0.5, 15.0, QStringLiteral("m/s"),
+                   tr("Speed after the start.")),
         PS::number(QStringLiteral("accel_time"), d.accelTime, 0.1, 20.0, QStringLiteral("s"),
                    tr("Time constant of the start acceleration.")),
         PS::number(QStringLiteral("fatigue"), d.fatigue, 0.0, 0.9, QString(),
                    tr("Fraction of the top speed lost linearly over the distance.")),
         PS::number(QStringLiteral("speed_sd"), d.speedSd, 0.0, 5.0, QStringLiteral("m/s"),
                    tr("SD of the speed fluctuation (Ornstein–Uhlenbeck, 3 s).")),
-        PS::number(QStringLiteral("pre_start"), d.preStart, 0.0, 600.0, QStringLiteral("s"), tr("Standing time before the start.")),
+        PS::number(QStringLiteral("pre_start"), d.preStart, 0.0, 600.0, QStringLiteral("s"),
+                   tr("Standing time before the start.")),
         PS::number(QStringLiteral("post_finish"), d.postFinish, 0.0, 600.0, QStringLiteral("s"),
                    tr("Recorded time after the finish.")),
         PS::boolean(QStringLiteral("lane_changes"), d.laneChanges,
                     tr("800 m break to lane 1 after the first bend and random overtakes.")),
-        PS::number(QStringLiteral("noise_var_x"), d.noiseVarX, 0.0, 1e3, QStringLiteral("m^2"), tr("Tag noise variance in x.")),
-        PS::number(QStringLiteral("noise_var_y"), d.noiseVarY, 0.0, 1e3, QStringLiteral("m^2"), tr("Tag noise variance in y.")),
-        PS::number(QStringLiteral("outlier_fraction"), d.outlierFraction, 0.0, 0.9, QString(), tr("Fraction of outliers.")),
-        PS::number(QStringLiteral("outlier_burst"), d.outlierBurst, 1.0, 1e3, QString(), tr("Mean outlier burst length (samples).")),
-        PS::number(QStringLiteral("outlier_sd"), d.outlierSd, 0.0, 1e3, QStringLiteral("m"), tr("SD of outliers per axis.")),
-        PS::number(QStringLiteral("outages"), d.outagesPer400m, 0.0, 100.0, QString(), tr("Mean number of outages per 400 m.")),
+        PS::number(QStringLiteral("noise_var_x"), d.noiseVarX, 0.0, 1e3, QStringLiteral("m^2"),
+                   tr("Tag noise variance in x.")),
+        PS::number(QStringLiteral("noise_var_y"), d.noiseVarY, 0.0, 1e3, QStringLiteral("m^2"),
+                   tr("Tag noise variance in y.")),
+        PS::number(QStringLiteral("outlier_fraction"), d.outlierFraction, 0.0, 0.9, QString(),
+                   tr("Fraction of outliers.")),
+        PS::number(QStringLiteral("outlier_burst"), d.outlierBurst, 1.0, 1e3, QString(),
+                   tr("Mean outlier burst length (samples).")),
+        PS::number(QStringLiteral("outlier_sd"), d.outlierSd, 0.0, 1e3, QStringLiteral("m"),
+                   tr("SD of outliers per axis.")),
+        PS::number(QStringLiteral("outages"), d.outagesPer400m, 0.0, 100.0, QString(),
+                   tr("Mean number of outages per 400 m.")),
         PS::number(QStringLiteral("outage_min"), d.outageMin, 0.0, 600.0, QStringLiteral("s"), tr("Shortest outage.")),
         PS::number(QStringLiteral("outage_max"), d.outageMax, 0.0, 600.0, QStringLiteral("s"), tr("Longest outage.")),
         PS::number(QStringLiteral("truth_rate"), d.truthRate, 1.0, 1000.0, QStringLiteral("Hz"),
                    tr("Sampling rate of the truth (a divisor of 1000).")),
         PS::text(QStringLiteral("track"), QStringLiteral("iaaf-400m"),
                  tr("Track geometry: a name under the project's /geometry or a built-in.")),
-        PS::number(QStringLiteral("track_x"), 0.0, -kInf, kInf, QStringLiteral("m"), tr("Track origin x in LPS coordinates.")),
-        PS::number(QStringLiteral("track_y"), 0.0, -kInf, kInf, QStringLiteral("m"), tr("Track origin y in LPS coordinates.")),
-        PS::number(QStringLiteral("track_rotation"), 0.0, -10.0, 10.0, QStringLiteral("rad"), tr("Rotation of the track frame.")),
+        PS::number(QStringLiteral("track_x"), 0.0, -kInf, kInf, QStringLiteral("m"),
+                   tr("Track origin x in LPS coordinates.")),
+        PS::number(QStringLiteral("track_y"), 0.0, -kInf, kInf, QStringLiteral("m"),
+                   tr("Track origin y in LPS coordinates.")),
+        PS::number(QStringLiteral("track_rotation"), 0.0, -10.0, 10.0, QStringLiteral("rad"),
+                   tr("Rotation of the track frame.")),
     };
 }
 
@@ -125,8 +137,10 @@ Expected<std::vector<ProcessorOutput>> SimulateTrackRunProcessor::run(const RunC
     StreamInfo ti;
     ti.kind = QStringLiteral("trajectory");
     ti.frame = QStringLiteral("lps");
-    ti.columns = {{QStringLiteral("x"), QStringLiteral("m")}, {QStringLiteral("y"), QStringLiteral("m")},
-                  {QStringLiteral("speed"), QStringLiteral("m/s")}, {QStringLiteral("heading"), QStringLiteral("rad")}};
+    ti.columns = {{QStringLiteral("x"), QStringLiteral("m")},
+                  {QStringLiteral("y"), QStringLiteral("m")},
+                  {QStringLiteral("speed"), QStringLiteral("m/s")},
+                  {QStringLiteral("heading"), QStringLiteral("rad")}};
     ti.attributes = QJsonObject{{QStringLiteral("simulated"), true}, {QStringLiteral("sampling_rate"), p.truthRate}};
 
     std::vector<ProcessorOutput> outputs;

@@ -8,8 +8,7 @@
 
 namespace athlos::positioning {
 
-TrackGapBridge::TrackGapBridge(TrackConstraintParams constraint, Params params)
-    : field_(constraint), params_(params) {}
+TrackGapBridge::TrackGapBridge(TrackConstraintParams constraint, Params params) : field_(constraint), params_(params) {}
 
 int TrackGapBridge::apply(const PositionSamples& in, PositionFilterResult& result) const {
     if (!field_.track() || result.t.size() < 3 || result.outlier.size() != in.t.size()) return 0;

@@ -46,11 +46,11 @@ TrackConstraint trackConstraint(const TrackConstraintField& field, const Eigen::
 }
 
 AugmentedTrackModel::StateVector AugmentedTrackModel::predict(const StateVector& x, double T, double t,
-                                                             StateMatrix* jacobian) const {
+                                                              StateMatrix* jacobian) const {
     Eigen::Vector2d direction;
     StateVector y = ctraPredict(x, T, t > params_.cvAfter, jacobian, &direction);
     const TrackConstraint c = field_.at(y.head<2>(), x[kPhi], y[kPhi], direction);
-    if (!c.active) return y;  // off the track: generic CTRA
+    if (!c.active) return y;          // off the track: generic CTRA
     y[kPhi] = c.heading;              // eq. 4.17
     y[kOmega] = x[kV] * c.curvature;  // eq. 4.18 (straights, κ = 0) / 4.20 (bends, κ = 1/r)
     if (jacobian) {

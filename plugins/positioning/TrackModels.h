@@ -64,13 +64,14 @@ private:
     Eigen::Vector2d axis_ = Eigen::Vector2d::UnitX();   // track-frame x axis (LPS)
     Eigen::Vector2d centre_[2];                         // bend centres: +x (bend 1), −x (bend 2)
     double halfStraight_ = 0.0, kerbRadius_ = 0.0;
-    double straightHeading_[2] = {0.0, 0.0};            // running direction: home (y < 0), back straight
-    double reversedHeading_[2] = {0.0, 0.0};            // the same + π
+    double straightHeading_[2] = {0.0, 0.0};  // running direction: home (y < 0), back straight
+    double reversedHeading_[2] = {0.0, 0.0};  // the same + π
 };
 
 TrackConstraint trackConstraint(const TrackConstraintField& field, const Eigen::Vector2d& p, double heading);
 
-EIGEN_ALWAYS_INLINE TrackConstraint TrackConstraintField::at(const Eigen::Vector2d& p, double heading, double predictedHeading,
+EIGEN_ALWAYS_INLINE TrackConstraint TrackConstraintField::at(const Eigen::Vector2d& p, double heading,
+                                                             double predictedHeading,
                                                              const Eigen::Vector2d& predictedDirection) const {
     if (!oval_) return trackConstraint(*this, p, heading);
     constexpr double pi = std::numbers::pi;
@@ -106,8 +107,8 @@ EIGEN_ALWAYS_INLINE TrackConstraint TrackConstraintField::at(const Eigen::Vector
     bool reverse = false;
     if (u.dot(tangent) > 0.0 && std::abs(s) <= 0.05 && std::abs(predictedHeading - heading) < 1.0) {
         const double s2 = s * s;
-        c.heading = math::wrapAngle(
-            predictedHeading + s * ((1.0 + s2 * (1.0 / 6)) + s2 * s2 * (3.0 / 40 + s2 * (5.0 / 112))));
+        c.heading =
+            math::wrapAngle(predictedHeading + s * ((1.0 + s2 * (1.0 / 6)) + s2 * s2 * (3.0 / 40 + s2 * (5.0 / 112))));
     } else {
         const double tangentHeading = std::atan2(tangent.y(), tangent.x());
         reverse = std::abs(math::wrapAngle(heading - tangentHeading)) > pi / 2;
@@ -158,9 +159,9 @@ public:
         CtraNoise noise;
         TrackConstraintParams constraint;
         double cvAfter = std::numeric_limits<double>::infinity();  // a = 0 pseudo-measurement from here
-        double rHeading = 0.01;   // rad², pseudo-measurement φ − φ_track
-        double rTurnRate = 0.01;  // rad²/s², pseudo-measurement ω − v κ
-        double rAccel = 0.1;      // m²/s⁴, pseudo-measurement a
+        double rHeading = 0.01;                                    // rad², pseudo-measurement φ − φ_track
+        double rTurnRate = 0.01;                                   // rad²/s², pseudo-measurement ω − v κ
+        double rAccel = 0.1;                                       // m²/s⁴, pseudo-measurement a
     };
 
     explicit PseudoTrackModel(Params params) : params_(std::move(params)), field_(params_.constraint) {}

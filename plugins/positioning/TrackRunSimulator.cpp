@@ -29,15 +29,16 @@ TrackRunSimulator::Result TrackRunSimulator::simulate(const Params& P) {
     std::normal_distribution<double> gauss(0.0, 1.0);
     std::uniform_real_distribution<double> uniform(0.0, 1.0);
     const TrackGeometry& track = P.track;
-    const double laneWidth = track.kind() == TrackGeometry::Kind::Oval ? track.ovalParams().laneWidth
-                                                                       : track.polylineParams().laneWidth;
+    const double laneWidth =
+        track.kind() == TrackGeometry::Kind::Oval ? track.ovalParams().laneWidth : track.polylineParams().laneWidth;
 
     // Lane plan: 800 m (and longer) break to lane 1 after the first bend; overtakes one lane out.
     std::vector<LaneChange> changes;
     const double startOffset = track.laneOffset(P.lane);
     if (P.laneChanges) {
         if (P.distance > 400.0 && P.lane > 1)
-            changes.push_back({100.0 + 20.0 * uniform(rng), 3.0 + 2.0 * uniform(rng), track.laneOffset(1) - startOffset});
+            changes.push_back(
+                {100.0 + 20.0 * uniform(rng), 3.0 + 2.0 * uniform(rng), track.laneOffset(1) - startOffset});
         const int overtakes = std::poisson_distribution<int>(P.distance / 400.0)(rng);
         for (int i = 0; i < overtakes; ++i) {
             const double at = 140.0 + (P.distance - 200.0) * uniform(rng);
@@ -101,7 +102,8 @@ TrackRunSimulator::Result TrackRunSimulator::simulate(const Params& P) {
         result.truth.x.push_back(xs[k]);
         result.truth.y.push_back(ys[k]);
         result.truth.speed.push_back(std::hypot(vx, vy));
-        result.truth.heading.push_back(result.truth.speed.back() > 1e-6 ? std::atan2(vy, vx) : track.headingAt({xs[k], ys[k]}));
+        result.truth.heading.push_back(result.truth.speed.back() > 1e-6 ? std::atan2(vy, vx)
+                                                                        : track.headingAt({xs[k], ys[k]}));
     }
     const double tEnd = ts.back();
 
@@ -124,8 +126,8 @@ TrackRunSimulator::Result TrackRunSimulator::simulate(const Params& P) {
     const double sx = std::sqrt(P.noiseVarX), sy = std::sqrt(P.noiseVarY);
     for (double tm = P.intervalBase * uniform(rng); tm <= tEnd; tm += P.intervalBase + P.intervalScale * poisson(rng)) {
         inBurst = inBurst ? uniform(rng) >= pEnd : uniform(rng) < pStart;
-        const bool out = std::any_of(outages.begin(), outages.end(),
-                                     [&](const auto& o) { return tm >= o.first && tm < o.second; });
+        const bool out =
+            std::any_of(outages.begin(), outages.end(), [&](const auto& o) { return tm >= o.first && tm < o.second; });
         const double ex = gauss(rng), ey = gauss(rng), ox = gauss(rng), oy = gauss(rng);
         if (out) continue;
         const auto k = std::min(static_cast<std::size_t>(tm / dt), n - 2);
@@ -149,7 +151,8 @@ Eigen::Vector2d TrackRunSimulator::truthAt(const Truth& truth, double t) {
     return {(1 - u) * truth.x[k - 1] + u * truth.x[k], (1 - u) * truth.y[k - 1] + u * truth.y[k]};
 }
 
-double TrackRunSimulator::rmse(const Truth& truth, const std::vector<double>& t, const std::vector<Eigen::Vector2d>& p) {
+double TrackRunSimulator::rmse(const Truth& truth, const std::vector<double>& t,
+                               const std::vector<Eigen::Vector2d>& p) {
     double sum = 0.0;
     std::size_t count = 0;
     for (std::size_t k = 0; k < t.size(); ++k) {

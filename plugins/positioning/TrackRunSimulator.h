@@ -20,27 +20,27 @@ class TrackRunSimulator {
 public:
     struct Params {
         std::uint64_t seed = 1;
-        double distance = 400.0;       // m along the running line
-        int lane = 1;                  // start lane
-        double topSpeed = 7.0;         // m/s
-        double accelTime = 1.3;        // s, τ of the start acceleration
-        double fatigue = 0.08;         // fraction of top speed lost linearly over the distance
-        double speedSd = 0.15;         // m/s, OU fluctuation (correlation time 3 s)
-        double preStart = 2.0;         // s standing before the gun
-        double postFinish = 3.0;       // s recorded after the finish (decelerating)
-        bool laneChanges = true;       // 800 m break to lane 1 and random overtakes
-        double noiseVarX = 5e-3;       // m²
-        double noiseVarY = 1.6e-2;     // m²
+        double distance = 400.0;    // m along the running line
+        int lane = 1;               // start lane
+        double topSpeed = 7.0;      // m/s
+        double accelTime = 1.3;     // s, τ of the start acceleration
+        double fatigue = 0.08;      // fraction of top speed lost linearly over the distance
+        double speedSd = 0.15;      // m/s, OU fluctuation (correlation time 3 s)
+        double preStart = 2.0;      // s standing before the gun
+        double postFinish = 3.0;    // s recorded after the finish (decelerating)
+        bool laneChanges = true;    // 800 m break to lane 1 and random overtakes
+        double noiseVarX = 5e-3;    // m²
+        double noiseVarY = 1.6e-2;  // m²
         double outlierFraction = 0.05;
-        double outlierBurst = 5.0;     // mean samples per burst
-        double outlierSd = 7.0;        // m
-        double intervalBase = 0.010;   // s
-        double intervalScale = 0.0015; // s per Poisson count
+        double outlierBurst = 5.0;      // mean samples per burst
+        double outlierSd = 7.0;         // m
+        double intervalBase = 0.010;    // s
+        double intervalScale = 0.0015;  // s per Poisson count
         double intervalPoisson = 20.0;
-        double outagesPer400m = 1.0;   // mean number of outages per 400 m
-        double outageMin = 2.0;        // s
-        double outageMax = 13.7;       // s
-        double truthRate = 100.0;      // Hz
+        double outagesPer400m = 1.0;  // mean number of outages per 400 m
+        double outageMin = 2.0;       // s
+        double outageMax = 13.7;      // s
+        double truthRate = 100.0;     // Hz
         TrackGeometry track = TrackGeometry::iaaf400m();
     };
 

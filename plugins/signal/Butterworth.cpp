@@ -39,15 +39,15 @@ Status Butterworth::check(const Params& params) {
     const QString nyquistText = QStringLiteral("the Nyquist frequency %1 (half the sampling rate %2)")
                                     .arg(hz(nyquist), hz(params.samplingRate));
     if (!(params.cutoff > 0.0) || !(params.cutoff < limit))
-        return makeError(QStringLiteral("cutoff must be above 0 Hz and below %1, got %2")
-                             .arg(nyquistText, hz(params.cutoff)));
+        return makeError(
+            QStringLiteral("cutoff must be above 0 Hz and below %1, got %2").arg(nyquistText, hz(params.cutoff)));
     if (isBand(params.type)) {
         if (!(params.cutoffHigh > params.cutoff))
             return makeError(QStringLiteral("cutoff_high (%1) must be above cutoff (%2) for a band filter")
                                  .arg(hz(params.cutoffHigh), hz(params.cutoff)));
         if (!(params.cutoffHigh < limit))
-            return makeError(QStringLiteral("cutoff_high must be below %1, got %2")
-                                 .arg(nyquistText, hz(params.cutoffHigh)));
+            return makeError(
+                QStringLiteral("cutoff_high must be below %1, got %2").arg(nyquistText, hz(params.cutoffHigh)));
     }
     return {};
 }
@@ -72,8 +72,7 @@ Butterworth::Butterworth(const Params& params) : params_(params) {
     // Analog prototype (Ωc = 1): poles p_k = exp(jπ(2k + n − 1)/(2n)), k = 1..n, on the left half of
     // the unit circle. k = 1..⌊n/2⌋ are the upper-half poles (one per conjugate pair); odd n adds −1.
     std::vector<Complex> prototype;
-    for (int k = 1; k <= n / 2; ++k)
-        prototype.push_back(std::polar(1.0, pi * (2 * k + n - 1) / (2.0 * n)));
+    for (int k = 1; k <= n / 2; ++k) prototype.push_back(std::polar(1.0, pi * (2 * k + n - 1) / (2.0 * n)));
     const bool hasRealPole = n % 2 == 1;
 
     // Frequency transformation of each prototype pole, kept in sections so that conjugate pairs
@@ -90,36 +89,40 @@ Butterworth::Butterworth(const Params& params) : params_(params) {
     };
     for (const Complex& p : prototype) {
         switch (params.type) {
-        case Type::LowPass: addPair(omegaLow * p); break;
-        case Type::HighPass: addPair(omegaLow / p); break;
-        case Type::BandPass: {
-            auto [s1, s2] = bandRoots(p * bandwidth / 2.0);
-            addPair(s1);
-            addPair(s2);
-            break;
-        }
-        case Type::BandStop: {
-            auto [s1, s2] = bandRoots(bandwidth / 2.0 / p);
-            addPair(s1);
-            addPair(s2);
-            break;
-        }
+            case Type::LowPass:
+                addPair(omegaLow * p);
+                break;
+            case Type::HighPass:
+                addPair(omegaLow / p);
+                break;
+            case Type::BandPass: {
+                auto [s1, s2] = bandRoots(p * bandwidth / 2.0);
+                addPair(s1);
+                addPair(s2);
+                break;
+            }
+            case Type::BandStop: {
+                auto [s1, s2] = bandRoots(bandwidth / 2.0 / p);
+                addPair(s1);
+                addPair(s2);
+                break;
+            }
         }
     }
     if (hasRealPole) {
         switch (params.type) {
-        case Type::LowPass:   // Ωc·p with p = −1
-        case Type::HighPass:  // Ωc/p with p = −1
-            analog.push_back({Complex(-omegaLow), std::nullopt});
-            break;
-        case Type::BandPass:
-        case Type::BandStop: {
-            // Both transforms give half = −bw/2 for p = −1. A real half gives either a conjugate pair
-            // (exactly, via sqrt of a negative real) or two real poles; both fit one section.
-            auto [s1, s2] = bandRoots(Complex(-bandwidth / 2.0));
-            analog.push_back({s1, s2});
-            break;
-        }
+            case Type::LowPass:   // Ωc·p with p = −1
+            case Type::HighPass:  // Ωc/p with p = −1
+                analog.push_back({Complex(-omegaLow), std::nullopt});
+                break;
+            case Type::BandPass:
+            case Type::BandStop: {
+                // Both transforms give half = −bw/2 for p = −1. A real half gives either a conjugate pair
+                // (exactly, via sqrt of a negative real) or two real poles; both fit one section.
+                auto [s1, s2] = bandRoots(Complex(-bandwidth / 2.0));
+                analog.push_back({s1, s2});
+                break;
+            }
         }
     }
 
@@ -151,10 +154,18 @@ Butterworth::Butterworth(const Params& params) : params_(params) {
     // Gain of the bilinear transform: k_d = k_a · ∏(1 − z_a) / ∏(1 − p_a) over finite analog zeros.
     double analogGain = 1.0;  // k_a · ∏(1 − z_a)
     switch (params.type) {
-    case Type::LowPass: analogGain = std::pow(omegaLow, n); break;
-    case Type::HighPass: analogGain = 1.0; break;
-    case Type::BandPass: analogGain = std::pow(bandwidth, n); break;
-    case Type::BandStop: analogGain = std::pow(1.0 + centre2, n); break;
+        case Type::LowPass:
+            analogGain = std::pow(omegaLow, n);
+            break;
+        case Type::HighPass:
+            analogGain = 1.0;
+            break;
+        case Type::BandPass:
+            analogGain = std::pow(bandwidth, n);
+            break;
+        case Type::BandStop:
+            analogGain = std::pow(1.0 + centre2, n);
+            break;
     }
     const double gain = analogGain / analogPoleProduct.real();
 
@@ -171,10 +182,18 @@ Butterworth::Butterworth(const Params& params) : params_(params) {
             a2 = (d.p1 * *d.p2).real();
             b2 = params.type == Type::BandPass ? -1.0 : 1.0;
             switch (params.type) {
-            case Type::LowPass: b1 = 2.0; break;            // z = −1, −1
-            case Type::HighPass: b1 = -2.0; break;          // z = +1, +1
-            case Type::BandPass: b1 = 0.0; break;           // z = +1, −1
-            case Type::BandStop: b1 = -2.0 * cosNotch; break;  // z = e^{±jω0}
+                case Type::LowPass:
+                    b1 = 2.0;
+                    break;  // z = −1, −1
+                case Type::HighPass:
+                    b1 = -2.0;
+                    break;  // z = +1, +1
+                case Type::BandPass:
+                    b1 = 0.0;
+                    break;  // z = +1, −1
+                case Type::BandStop:
+                    b1 = -2.0 * cosNotch;
+                    break;  // z = e^{±jω0}
             }
         }
         sos_.row(static_cast<Eigen::Index>(i)) << 1.0, b1, b2, 1.0, a1, a2;

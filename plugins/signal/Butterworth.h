@@ -24,10 +24,10 @@ public:
 
     struct Params {
         Type type = Type::LowPass;
-        int order = 2;               // 1..10; band types have 2·order poles
-        double cutoff = 0.0;         // Hz: the cut-off, or the lower edge for band types
-        double cutoffHigh = 0.0;     // Hz: upper edge, band types only
-        double samplingRate = 0.0;   // Hz
+        int order = 2;              // 1..10; band types have 2·order poles
+        double cutoff = 0.0;        // Hz: the cut-off, or the lower edge for band types
+        double cutoffHigh = 0.0;    // Hz: upper edge, band types only
+        double samplingRate = 0.0;  // Hz
     };
 
     static constexpr int kMaxOrder = 10;

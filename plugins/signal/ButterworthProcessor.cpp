@@ -29,41 +29,42 @@ QString ButterworthProcessor::description() const {
 }
 
 ParameterSpecs ButterworthProcessor::parameters() const {
-    ParameterSpec cutoff = ParameterSpec::number(QStringLiteral("cutoff"), 0.0, 0.0,
-        std::numeric_limits<double>::infinity(), QStringLiteral("Hz"),
+    ParameterSpec cutoff = ParameterSpec::number(
+        QStringLiteral("cutoff"), 0.0, 0.0, std::numeric_limits<double>::infinity(), QStringLiteral("Hz"),
         tr("Cut-off frequency (-3 dB of one pass); the lower edge for bandpass/bandstop. Must be below "
            "half the sampling rate."));
     cutoff.defaultValue = QVariant();  // required
-    ParameterSpec cutoffHigh = ParameterSpec::number(QStringLiteral("cutoff_high"), 0.0, 0.0,
-        std::numeric_limits<double>::infinity(), QStringLiteral("Hz"),
+    ParameterSpec cutoffHigh = ParameterSpec::number(
+        QStringLiteral("cutoff_high"), 0.0, 0.0, std::numeric_limits<double>::infinity(), QStringLiteral("Hz"),
         tr("Upper edge for bandpass/bandstop (required there, not allowed otherwise)."));
     cutoffHigh.defaultValue = QVariant();
     cutoffHigh.optional = true;
     return {
         ParameterSpec::choice(QStringLiteral("type"),
-            {QStringLiteral("lowpass"), QStringLiteral("highpass"), QStringLiteral("bandpass"), QStringLiteral("bandstop")},
-            QStringLiteral("lowpass"), tr("Filter type.")),
-        ParameterSpec::integer(QStringLiteral("order"), 2, 1, Butterworth::kMaxOrder,
+                              {QStringLiteral("lowpass"), QStringLiteral("highpass"), QStringLiteral("bandpass"),
+                               QStringLiteral("bandstop")},
+                              QStringLiteral("lowpass"), tr("Filter type.")),
+        ParameterSpec::integer(
+            QStringLiteral("order"), 2, 1, Butterworth::kMaxOrder,
             tr("Filter order n (band types have 2n poles). Zero-phase filtering doubles the effective order.")),
         cutoff,
         cutoffHigh,
-        ParameterSpec::boolean(QStringLiteral("zero_phase"), true,
+        ParameterSpec::boolean(
+            QStringLiteral("zero_phase"), true,
             tr("Filter forwards and backwards (no phase shift, squared magnitude: -6 dB at the cut-off); "
                "false = causal single pass.")),
         ParameterSpec::text(QStringLiteral("columns"), QString(),
-            tr("Comma-separated columns to filter; empty = all columns except quaternions and flags.")),
+                            tr("Comma-separated columns to filter; empty = all columns except quaternions and flags.")),
     };
 }
 
 QList<InputSpec> ButterworthProcessor::inputs() const {
-    return {InputSpec{QStringLiteral("signal"), {}, false, false,
-                      tr("Uniformly sampled stream of any kind.")}};
+    return {InputSpec{QStringLiteral("signal"), {}, false, false, tr("Uniformly sampled stream of any kind.")}};
 }
 
 QList<OutputSpec> ButterworthProcessor::outputs() const {
     // Empty kind: the output has the kind of the input.
-    return {OutputSpec{QString(), false, QString(),
-                       tr("Filtered stream: same kind, frame and columns.")}};
+    return {OutputSpec{QString(), false, QString(), tr("Filtered stream: same kind, frame and columns.")}};
 }
 
 Expected<ButterworthProcessor::Plan> ButterworthProcessor::makePlan(const RunContext& context) const {
@@ -77,9 +78,11 @@ Expected<ButterworthProcessor::Plan> ButterworthProcessor::makePlan(const RunCon
     plan.params.cutoff = context.number(QStringLiteral("cutoff"));
     const bool hasHigh = context.has(QStringLiteral("cutoff_high"));
     if (Butterworth::isBand(plan.params.type) && !hasHigh)
-        return makeError(QStringLiteral("cutoff_high (Hz) is required for type=%1").arg(context.text(QStringLiteral("type"))));
+        return makeError(
+            QStringLiteral("cutoff_high (Hz) is required for type=%1").arg(context.text(QStringLiteral("type"))));
     if (!Butterworth::isBand(plan.params.type) && hasHigh)
-        return makeError(QStringLiteral("cutoff_high applies only to type=bandpass or bandstop; remove it or change type"));
+        return makeError(
+            QStringLiteral("cutoff_high applies only to type=bandpass or bandstop; remove it or change type"));
     plan.params.cutoffHigh = hasHigh ? context.number(QStringLiteral("cutoff_high")) : 0.0;
     plan.zeroPhase = !context.has(QStringLiteral("zero_phase")) || context.flag(QStringLiteral("zero_phase"));
 
@@ -96,9 +99,13 @@ Expected<ButterworthProcessor::Plan> ButterworthProcessor::makePlan(const RunCon
     for (std::size_t i = 1; i < data.rows(); ++i) {
         const double dt = data.t[i] - data.t[i - 1];
         if (!(std::abs(dt - interval) <= kUniformTolerance * interval))
-            return makeError(QStringLiteral("stream '%1' is not uniformly sampled: the interval before row %2 is %3 s, "
-                                            "the median is %4 s (more than 1 % apart); run the resample processor first")
-                                 .arg(path).arg(i).arg(dt, 0, 'g', 6).arg(interval, 0, 'g', 6));
+            return makeError(
+                QStringLiteral("stream '%1' is not uniformly sampled: the interval before row %2 is %3 s, "
+                               "the median is %4 s (more than 1 % apart); run the resample processor first")
+                    .arg(path)
+                    .arg(i)
+                    .arg(dt, 0, 'g', 6)
+                    .arg(interval, 0, 'g', 6));
     }
     plan.params.samplingRate = 1.0 / interval;
     if (Status ok = Butterworth::check(plan.params); !ok) return ok.error();
@@ -116,10 +123,13 @@ Expected<ButterworthProcessor::Plan> ButterworthProcessor::makePlan(const RunCon
                 return makeError(QStringLiteral("columns: stream '%1' has no column '%2' (it has: %3)")
                                      .arg(path, name, names.join(QStringLiteral(", "))));
             if (groups.isQuaternionColumn(c))
-                return makeError(QStringLiteral("columns: '%1' is a quaternion component; quaternions cannot be filtered "
-                                                "component-wise (leave it out: it passes through unchanged)").arg(name));
+                return makeError(
+                    QStringLiteral("columns: '%1' is a quaternion component; quaternions cannot be filtered "
+                                   "component-wise (leave it out: it passes through unchanged)")
+                        .arg(name));
             if (groups.isFlagColumn(c))
-                return makeError(QStringLiteral("columns: '%1' is a flag column (categorical) and cannot be filtered").arg(name));
+                return makeError(
+                    QStringLiteral("columns: '%1' is a flag column (categorical) and cannot be filtered").arg(name));
             plan.columns.push_back(c);
         }
     }
@@ -129,9 +139,14 @@ Expected<ButterworthProcessor::Plan> ButterworthProcessor::makePlan(const RunCon
     if (plan.zeroPhase) {
         const int pad = Butterworth(plan.params).defaultPadLength();
         if (data.rows() <= static_cast<std::size_t>(pad))
-            return makeError(QStringLiteral("stream '%1' has %2 rows; zero-phase filtering of order %3 needs at least %4 "
-                                            "rows (padding of %5); use a longer stream, a lower order or zero_phase=false")
-                                 .arg(path).arg(data.rows()).arg(plan.params.order).arg(pad + 1).arg(pad));
+            return makeError(
+                QStringLiteral("stream '%1' has %2 rows; zero-phase filtering of order %3 needs at least %4 "
+                               "rows (padding of %5); use a longer stream, a lower order or zero_phase=false")
+                    .arg(path)
+                    .arg(data.rows())
+                    .arg(plan.params.order)
+                    .arg(pad + 1)
+                    .arg(pad));
     }
     return plan;
 }

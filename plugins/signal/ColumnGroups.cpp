@@ -7,11 +7,11 @@ namespace athlos::signal {
 bool ColumnGroups::isFlagName(const QString& name) {
     // Satellite fix quality, satellite count and dilution of precision (NMEA GGA/GSA fields, vendor
     // exports) are per-fix indicators: a value between two fixes was never observed (issue #13).
-    static const QStringList kGnssQuality{"fix", "fix_quality", "quality", "sats", "satellites", "num_sats",
-                                          "nsat", "hdop", "vdop", "pdop"};
+    static const QStringList kGnssQuality{"fix",      "fix_quality", "quality", "sats", "satellites",
+                                          "num_sats", "nsat",        "hdop",    "vdop", "pdop"};
     const QString lower = name.toLower();
-    return lower == QLatin1String("movement") || lower == QLatin1String("outlier") || lower == QLatin1String("flag")
-        || lower.endsWith(QLatin1String("_flag")) || kGnssQuality.contains(lower);
+    return lower == QLatin1String("movement") || lower == QLatin1String("outlier") || lower == QLatin1String("flag") ||
+           lower.endsWith(QLatin1String("_flag")) || kGnssQuality.contains(lower);
 }
 
 ColumnGroups ColumnGroups::detect(const QStringList& names) {

@@ -27,27 +27,26 @@ ParameterSpecs ResampleProcessor::parameters() const {
     rate.defaultValue = QVariant();  // required
     return {
         rate,
-        ParameterSpec::choice(QStringLiteral("method"),
-            {QStringLiteral("linear"), QStringLiteral("nearest"), QStringLiteral("cubic")}, QStringLiteral("linear"),
+        ParameterSpec::choice(
+            QStringLiteral("method"), {QStringLiteral("linear"), QStringLiteral("nearest"), QStringLiteral("cubic")},
+            QStringLiteral("linear"),
             tr("Interpolation of ordinary columns. cubic = local cubic Hermite (Catmull-Rom style, exact for "
                "quadratics). Quaternions always use SLERP (nearest sample for nearest), flags nearest.")),
         ParameterSpec::number(QStringLiteral("max_gap"), 0.0, 0.0, inf, QStringLiteral("s"),
-            tr("Output samples inside an input gap longer than this become NaN; 0 = off.")),
-        ParameterSpec::boolean(QStringLiteral("align"), false,
+                              tr("Output samples inside an input gap longer than this become NaN; 0 = off.")),
+        ParameterSpec::boolean(
+            QStringLiteral("align"), false,
             tr("Put the grid on integer multiples of 1/rate instead of starting at the first sample.")),
     };
 }
 
 QList<InputSpec> ResampleProcessor::inputs() const {
-    return {InputSpec{QStringLiteral("signal"), {}, false, false,
-                      tr("Stream of any kind, possibly non-uniform.")}};
+    return {InputSpec{QStringLiteral("signal"), {}, false, false, tr("Stream of any kind, possibly non-uniform.")}};
 }
 
 QList<OutputSpec> ResampleProcessor::outputs() const {
     // Empty kind: the output has the kind of the input.
-    return {OutputSpec{QString(), false, QString(),
-                       tr(
-                                                   "Uniformly sampled stream: same kind, frame and columns.")}};
+    return {OutputSpec{QString(), false, QString(), tr("Uniformly sampled stream: same kind, frame and columns.")}};
 }
 
 Expected<Resampler::Params> ResampleProcessor::readParams(const RunContext& context) const {

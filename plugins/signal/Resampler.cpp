@@ -15,7 +15,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kGridTolerance = 1e-9;
 
 struct Grid {
-    double origin;     // t of k = 0 is origin + first/rate
+    double origin;  // t of k = 0 is origin + first/rate
     long long first;
     long long count;
     double at(long long k, double rate) const { return origin + static_cast<double>(first + k) / rate; }
@@ -61,7 +61,8 @@ Status Resampler::checkParams(const Params& params) {
     if (!(params.rate > 0.0) || !std::isfinite(params.rate))
         return makeError(QStringLiteral("rate must be a positive frequency in Hz, got %1").arg(params.rate));
     if (!(params.maxGap >= 0.0))
-        return makeError(QStringLiteral("max_gap must be 0 (off) or a positive duration in s, got %1").arg(params.maxGap));
+        return makeError(
+            QStringLiteral("max_gap must be 0 (off) or a positive duration in s, got %1").arg(params.maxGap));
     return {};
 }
 
@@ -70,19 +71,25 @@ Status Resampler::check(const Params& params, const std::vector<double>& t) {
     if (t.size() < 2)
         return makeError(QStringLiteral("the stream has %1 sample(s); resampling needs at least 2").arg(t.size()));
     for (std::size_t i = 0; i < t.size(); ++i) {
-        if (!std::isfinite(t[i]))
-            return makeError(QStringLiteral("time stamp of row %1 is not finite").arg(i));
+        if (!std::isfinite(t[i])) return makeError(QStringLiteral("time stamp of row %1 is not finite").arg(i));
         if (i > 0 && !(t[i] > t[i - 1]))
             return makeError(QStringLiteral("time stamps must increase strictly: row %1 (t = %2 s) is not after row %3")
-                                 .arg(i).arg(t[i], 0, 'g', 12).arg(i - 1));
+                                 .arg(i)
+                                 .arg(t[i], 0, 'g', 12)
+                                 .arg(i - 1));
     }
     const Grid grid = makeGrid(params, t.front(), t.back());
     if (grid.count > kMaxOutputRows)
         return makeError(QStringLiteral("rate %1 Hz over %2 s would produce %3 rows (at most %4); lower rate")
-                             .arg(params.rate).arg(t.back() - t.front()).arg(grid.count).arg(kMaxOutputRows));
+                             .arg(params.rate)
+                             .arg(t.back() - t.front())
+                             .arg(grid.count)
+                             .arg(kMaxOutputRows));
     if (grid.count == 0)
-        return makeError(QStringLiteral("no multiple of 1/rate lies within [%1, %2] s; use align=false or a higher rate")
-                             .arg(t.front(), 0, 'g', 12).arg(t.back(), 0, 'g', 12));
+        return makeError(
+            QStringLiteral("no multiple of 1/rate lies within [%1, %2] s; use align=false or a higher rate")
+                .arg(t.front(), 0, 'g', 12)
+                .arg(t.back(), 0, 'g', 12));
     return {};
 }
 
@@ -116,9 +123,15 @@ StreamData Resampler::makeOutput(int columns) const {
 
 void Resampler::resampleOrdinary(const StreamData& in, int column, StreamData& out) const {
     switch (params_.method) {
-    case Method::Linear: linear(in, column, out); break;
-    case Method::Nearest: nearest(in, column, out); break;
-    case Method::Cubic: cubic(in, column, out); break;
+        case Method::Linear:
+            linear(in, column, out);
+            break;
+        case Method::Nearest:
+            nearest(in, column, out);
+            break;
+        case Method::Cubic:
+            cubic(in, column, out);
+            break;
     }
 }
 
@@ -164,8 +177,8 @@ void Resampler::cubic(const StreamData& in, int column, StreamData& out) const {
         // Cubic Hermite basis on [t_i, t_i+1] with s ∈ (0, 1) and h = t_i+1 − t_i.
         const double h = tIn_[row + 1] - tIn_[row];
         const double s2 = s * s, s3 = s2 * s;
-        out.at(k, column) = (2 * s3 - 3 * s2 + 1) * y0 + (s3 - 2 * s2 + s) * h * m0 + (-2 * s3 + 3 * s2) * y1
-                          + (s3 - s2) * h * m1;
+        out.at(k, column) =
+            (2 * s3 - 3 * s2 + 1) * y0 + (s3 - 2 * s2 + s) * h * m0 + (-2 * s3 + 3 * s2) * y1 + (s3 - s2) * h * m1;
     }
 }
 

@@ -26,10 +26,10 @@ public:
     enum class Method { Linear, Nearest, Cubic };
 
     struct Params {
-        double rate = 0.0;     // Hz, > 0
+        double rate = 0.0;  // Hz, > 0
         Method method = Method::Linear;
-        double maxGap = 0.0;   // s; 0 = off
-        bool align = false;    // grid on integer multiples of 1/rate instead of starting at t_begin
+        double maxGap = 0.0;  // s; 0 = off
+        bool align = false;   // grid on integer multiples of 1/rate instead of starting at t_begin
     };
 
     // Largest output the resampler agrees to produce (rows), to turn a typo in rate into an error

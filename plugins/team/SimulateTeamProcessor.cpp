@@ -14,9 +14,10 @@ constexpr Translator tr{"athlos::team"};
 QString SimulateTeamProcessor::name() const { return tr("Simulate team match"); }
 
 QString SimulateTeamProcessor::description() const {
-    return tr("Simulates a football match: 22 players (two teams in a 4-4-2 with goalkeepers) on a 105 × 68 m "
-              "pitch, with standing, walking, jogging, running and sprinting phases, bounded accelerations and "
-              "the team blocks shifting with the ball. One position stream per player.");
+    return tr(
+        "Simulates a football match: 22 players (two teams in a 4-4-2 with goalkeepers) on a 105 × 68 m "
+        "pitch, with standing, walking, jogging, running and sprinting phases, bounded accelerations and "
+        "the team blocks shifting with the ball. One position stream per player.");
 }
 
 ParameterSpecs SimulateTeamProcessor::parameters() const {
@@ -25,7 +26,8 @@ ParameterSpecs SimulateTeamProcessor::parameters() const {
     return {
         PS::integer(QStringLiteral("seed"), 1, 0, std::numeric_limits<int>::max(), tr("Random seed (deterministic).")),
         PS::number(QStringLiteral("duration"), d.duration, 1.0, 4.0 * 3600.0, QStringLiteral("s"), tr("Playing time.")),
-        PS::number(QStringLiteral("rate"), d.rate, 1.0, 100.0, QStringLiteral("Hz"), tr("Sampling rate of the positions.")),
+        PS::number(QStringLiteral("rate"), d.rate, 1.0, 100.0, QStringLiteral("Hz"),
+                   tr("Sampling rate of the positions.")),
         PS::number(QStringLiteral("accel_max"), d.accelMax, 1.0, 12.0, QStringLiteral("m/s^2"),
                    tr("Largest acceleration of a player (vector norm).")),
         PS::number(QStringLiteral("top_speed_min"), d.topSpeedMin, 4.0, 11.0, QStringLiteral("m/s"),
@@ -43,8 +45,7 @@ QString SimulateTeamProcessor::suffixOf(const QString& team, int number) {
 
 QList<OutputSpec> SimulateTeamProcessor::outputs() const {
     QList<OutputSpec> specs;
-    for (const auto& player : TeamSimulator::roster())
-    {
+    for (const auto& player : TeamSimulator::roster()) {
         OutputSpec spec;  // by field: OutputSpec grows members
         spec.kind = QStringLiteral("lps-position");
         spec.suffix = suffixOf(player.team, player.number);

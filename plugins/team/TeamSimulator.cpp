@@ -14,12 +14,12 @@ using Vec2 = Eigen::Vector2d;
 enum Phase { Stand, Walk, Jog, Run, Sprint, PhaseCount };
 
 constexpr std::array<double, PhaseCount> kPhaseMeanDuration{5.0, 10.0, 5.0, 3.0, 2.5};  // s
-constexpr double kPlanDecel = 2.5;    // m/s², braking assumed when planning arrival and lines
-constexpr double kBallSpeed = 14.0;   // m/s of a pass
-constexpr double kLineMargin = 1.0;   // m, targets stay this far inside the lines
-constexpr double kRoamSd = 3.5;       // m, individual roaming offset (stationary SD)
-constexpr double kRoamTau = 20.0;     // s
-constexpr double kBurstEvery = 300.0; // s, mean time between an outfield player's sprint runs
+constexpr double kPlanDecel = 2.5;     // m/s², braking assumed when planning arrival and lines
+constexpr double kBallSpeed = 14.0;    // m/s of a pass
+constexpr double kLineMargin = 1.0;    // m, targets stay this far inside the lines
+constexpr double kRoamSd = 3.5;        // m, individual roaming offset (stationary SD)
+constexpr double kRoamTau = 20.0;      // s
+constexpr double kBurstEvery = 300.0;  // s, mean time between an outfield player's sprint runs
 
 // 4-4-2 slots in the frame of a team attacking +x: shirt number → (x, y). Right side is −y.
 struct Slot {
@@ -122,10 +122,14 @@ struct PlayerState {
 // Next intensity phase given the distance to the target: far targets call for running.
 Phase choosePhase(double distance, double intensity, std::mt19937_64& rng) {
     std::array<double, PhaseCount> w;
-    if (distance < 2.0) w = {0.50, 0.45, 0.05, 0.0, 0.0};
-    else if (distance < 6.0) w = {0.20, 0.55, 0.20, 0.05, 0.0};
-    else if (distance < 15.0) w = {0.0, 0.30, 0.35, 0.25, 0.10};
-    else w = {0.0, 0.0, 0.15, 0.40, 0.45};
+    if (distance < 2.0)
+        w = {0.50, 0.45, 0.05, 0.0, 0.0};
+    else if (distance < 6.0)
+        w = {0.20, 0.55, 0.20, 0.05, 0.0};
+    else if (distance < 15.0)
+        w = {0.0, 0.30, 0.35, 0.25, 0.10};
+    else
+        w = {0.0, 0.0, 0.15, 0.40, 0.45};
     w[Run] *= intensity;
     w[Sprint] *= intensity;
     std::discrete_distribution<int> pick(w.begin(), w.end());
@@ -134,11 +138,16 @@ Phase choosePhase(double distance, double intensity, std::mt19937_64& rng) {
 
 double phaseCap(Phase phase, double topSpeed) {
     switch (phase) {
-    case Stand: return 0.0;
-    case Walk: return 1.5;
-    case Jog: return 3.2;
-    case Run: return 5.2;
-    default: return topSpeed;
+        case Stand:
+            return 0.0;
+        case Walk:
+            return 1.5;
+        case Jog:
+            return 3.2;
+        case Run:
+            return 5.2;
+        default:
+            return topSpeed;
     }
 }
 
@@ -276,7 +285,8 @@ TeamSimulator::Result TeamSimulator::simulate(const Params& params) {
             // Arrival control: the speed that still lets the player stop at the target, capped by the phase.
             Vec2 vDes = Vec2::Zero();
             if (distance > 0.3) {
-                const double speed = std::min(phaseCap(phase, st.topSpeed), std::sqrt(2.0 * kPlanDecel * (distance - 0.3)));
+                const double speed =
+                    std::min(phaseCap(phase, st.topSpeed), std::sqrt(2.0 * kPlanDecel * (distance - 0.3)));
                 vDes = toTarget / distance * speed;
             }
             // Brake in time before each line.

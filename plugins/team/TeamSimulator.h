@@ -31,14 +31,14 @@ public:
 
     struct Params {
         std::uint64_t seed = 1;
-        double duration = 5400.0;   // s of play
-        double rate = 10.0;         // Hz
-        double pitchLength = 105.0; // m (x)
-        double pitchWidth = 68.0;   // m (y)
-        double accelMax = 6.0;      // m/s², bound of |a|
-        double topSpeedMin = 7.8;   // m/s, range of the players' sprint speed
+        double duration = 5400.0;    // s of play
+        double rate = 10.0;          // Hz
+        double pitchLength = 105.0;  // m (x)
+        double pitchWidth = 68.0;    // m (y)
+        double accelMax = 6.0;       // m/s², bound of |a|
+        double topSpeedMin = 7.8;    // m/s, range of the players' sprint speed
         double topSpeedMax = 9.0;
-        double intensity = 1.0;     // scales how readily players choose faster phases
+        double intensity = 1.0;  // scales how readily players choose faster phases
     };
 
     struct Player {
@@ -54,7 +54,7 @@ public:
     };
 
     struct Result {
-        std::vector<double> t;      // s, shared by all tracks
+        std::vector<double> t;  // s, shared by all tracks
         std::vector<Player> players;
         std::vector<Track> tracks;  // kPlayers, same order as players
         std::vector<double> ballX, ballY;

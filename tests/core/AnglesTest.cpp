@@ -25,8 +25,8 @@ TEST(Angles, WrapKeepsAnglesInRangeUnchanged) {
 }
 
 TEST(Angles, WrapRangeIsHalfOpen) {
-    EXPECT_EQ(wrapAngle(pi), pi);    // π stays
-    EXPECT_EQ(wrapAngle(-pi), pi);   // −π becomes π
+    EXPECT_EQ(wrapAngle(pi), pi);   // π stays
+    EXPECT_EQ(wrapAngle(-pi), pi);  // −π becomes π
     EXPECT_NEAR(wrapAngle(3 * pi), pi, 1e-12);
     EXPECT_NEAR(wrapAngle(-3 * pi), pi, 1e-12);
 }

@@ -45,7 +45,8 @@ TEST_F(Labels, TextLabelsBecomeRunsNotAColumn) {
     const Stream& s = std::get<Stream>(r->items.at(0).item);
     EXPECT_EQ(s.info().columns.size(), 1u);  // acc_x only
     ASSERT_EQ(r->annotations.count("rec"), 1u);
-    EXPECT_EQ(r->annotations.at("rec"), (Annotations{ann("walk", 0, 0.2), ann("run", 0.3, 0.5), ann("walk", 0.5, 0.5)}));
+    EXPECT_EQ(r->annotations.at("rec"),
+              (Annotations{ann("walk", 0, 0.2), ann("run", 0.3, 0.5), ann("walk", 0.5, 0.5)}));
 
     auto project = Project::create(path("p.athlos"));
     ASSERT_TRUE(applyImport(*project, *r, false).ok());
@@ -68,7 +69,8 @@ TEST_F(Labels, NumberLabelsWithNamesFollowTheTimeRepair) {
     EXPECT_EQ(r->annotations.at("rec"), (Annotations{ann("rest", 0, 0.2), ann("run", 0.2, 0.3)}));
     const auto bad = import("t,acc_x,label\n0,1,0\n0.1,1,7\n");
     ASSERT_FALSE(bad.ok());
-    EXPECT_TRUE(bad.message().contains("walk.csv:3:3 (column 'label'): label '7' has no name in the label names (0=rest, 1=run)"))
+    EXPECT_TRUE(bad.message().contains(
+        "walk.csv:3:3 (column 'label'): label '7' has no name in the label names (0=rest, 1=run)"))
         << qPrintable(bad.message());
 }
 
@@ -89,8 +91,9 @@ TEST_F(Labels, AnnotationFilesRoundTrip) {
     ASSERT_TRUE(exportAnnotations(list, path("a.json")).ok());
     QFile csv(path("a.csv"));
     ASSERT_TRUE(csv.open(QIODevice::ReadOnly));
-    EXPECT_EQ(csv.readAll(), QByteArray("start,end,label,confidence,source,annotator\n1.5,3.25,\"sprint, fast\",1,import,coach\n"
-                                        "4,4,jump,0.75,gait-events,model\n"));
+    EXPECT_EQ(csv.readAll(),
+              QByteArray("start,end,label,confidence,source,annotator\n1.5,3.25,\"sprint, fast\",1,import,coach\n"
+                         "4,4,jump,0.75,gait-events,model\n"));
     EXPECT_EQ(*readAnnotationsCsv(path("a.csv")), list);
     EXPECT_EQ(*readAnnotationsJson(path("a.json")), list);
     // Imported onto a recording, auto-detected.
@@ -114,11 +117,14 @@ TEST_F(Labels, AnnotationFileErrors) {
     EXPECT_TRUE(r.message().endsWith("c.csv:2: end 1 s is before start 2 s")) << qPrintable(r.message());
     r = readAnnotationsCsv(write("d.csv", "start,stop,label\n0,1,walk\n"));
     ASSERT_FALSE(r.ok());
-    EXPECT_TRUE(r.message().endsWith("d.csv:1:2: unknown column 'stop' (columns: start, end, label, confidence, source, annotator)"))
+    EXPECT_TRUE(r.message().endsWith(
+        "d.csv:1:2: unknown column 'stop' (columns: start, end, label, confidence, source, annotator)"))
         << qPrintable(r.message());
-    r = readAnnotationsJson(write("e.json", "{\"annotations\": [{\"start\": 0, \"end\": 1, \"label\": \"a\"}, {\"start\": \"x\"}]}"));
+    r = readAnnotationsJson(
+        write("e.json", "{\"annotations\": [{\"start\": 0, \"end\": 1, \"label\": \"a\"}, {\"start\": \"x\"}]}"));
     ASSERT_FALSE(r.ok());
-    EXPECT_TRUE(r.message().endsWith("e.json: annotations[1]: \"start\" must be a number (s)")) << qPrintable(r.message());
+    EXPECT_TRUE(r.message().endsWith("e.json: annotations[1]: \"start\" must be a number (s)"))
+        << qPrintable(r.message());
     r = readAnnotationsJson(write("f.json", "{\"annotations\": [\n{\"start\": 0,,}]}"));
     ASSERT_FALSE(r.ok());
     EXPECT_TRUE(r.message().contains("f.json:2:")) << qPrintable(r.message());

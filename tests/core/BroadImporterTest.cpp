@@ -44,7 +44,8 @@ std::vector<signed char> readMovement(const QString& file) {
     return out;
 }
 
-Expected<ImportResult> importBroad(const QString& file, const QString& format = "broad", const QString& target = "trial") {
+Expected<ImportResult> importBroad(const QString& file, const QString& format = "broad",
+                                   const QString& target = "trial") {
     ImportOptions options;
     options.format = format;
     options.target = target;
@@ -74,7 +75,8 @@ TEST(BroadImport, ImportsImuAndReferenceOfTheRealTrial) {
 
     EXPECT_EQ(imu.info().kind, "imu");
     EXPECT_EQ(imu.info().frame, "sensor");
-    EXPECT_EQ(imu.info().columnNames(), (QStringList{"acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z", "mag_x", "mag_y", "mag_z"}));
+    EXPECT_EQ(imu.info().columnNames(),
+              (QStringList{"acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z", "mag_x", "mag_y", "mag_z"}));
     EXPECT_EQ(imu.info().columns[0].unit, "m/s^2");
     EXPECT_EQ(imu.info().columns[4].unit, "rad/s");
     EXPECT_EQ(imu.info().columns[8].unit, "uT");
@@ -106,7 +108,8 @@ TEST(BroadImport, ImportsImuAndReferenceOfTheRealTrial) {
             ASSERT_EQ(d.at(r, c), acc[r * 3 + c]) << r;
             ASSERT_EQ(d.at(r, 3 + c), gyr[r * 3 + c]) << r;
             ASSERT_EQ(d.at(r, 6 + c), mag[r * 3 + c]) << r;
-            ASSERT_TRUE(q.at(r, 5 + c) == pos[r * 3 + c] || (std::isnan(q.at(r, 5 + c)) && std::isnan(pos[r * 3 + c]))) << r;
+            ASSERT_TRUE(q.at(r, 5 + c) == pos[r * 3 + c] || (std::isnan(q.at(r, 5 + c)) && std::isnan(pos[r * 3 + c])))
+                << r;
         }
         for (int c = 0; c < 4; ++c) {
             quatNaN += std::isnan(quat[r * 4 + c]);

@@ -28,14 +28,16 @@ protected:
     static const Stream& stream(const ImportResult& r) { return std::get<Stream>(r.items.at(0).item); }
     static void expectError(const Expected<ImportResult>& r, const QString& part) {
         ASSERT_FALSE(r.ok()) << "should fail with: " << part.toStdString();
-        EXPECT_TRUE(r.message().contains(part)) << "'" << r.message().toStdString() << "' lacks '" << part.toStdString() << "'";
+        EXPECT_TRUE(r.message().contains(part))
+            << "'" << r.message().toStdString() << "' lacks '" << part.toStdString() << "'";
     }
     // A sensor export: time in ms, acc in g, gyro in deg/s, an angle in deg, a text date column.
     QString exportFile() {
-        return write("export.csv", "Time;AccX;Gyro Z;Angle;Date\n"
-                                   "0;1;90;180;2024-05-01\n"
-                                   "10;0.5;-45;90;2024-05-01\n"
-                                   "20;-2;0;-90;2024-05-01\n");
+        return write("export.csv",
+                     "Time;AccX;Gyro Z;Angle;Date\n"
+                     "0;1;90;180;2024-05-01\n"
+                     "10;0.5;-45;90;2024-05-01\n"
+                     "20;-2;0;-90;2024-05-01\n");
     }
 
     QTemporaryDir dir_;
@@ -45,8 +47,10 @@ TEST_F(ColumnMap, RenamesAndConvertsToSi) {
     ImportOptions o = csv("imu");
     o.timeColumn = "Time";
     o.timeUnit = "ms";
-    o.columns = {{"AccX", "acc_x", "g", false}, {"Gyro Z", "gyr_z", "deg/s", false},
-                 {"Angle", "pitch", "deg", false}, {"Date", {}, {}, true}};
+    o.columns = {{"AccX", "acc_x", "g", false},
+                 {"Gyro Z", "gyr_z", "deg/s", false},
+                 {"Angle", "pitch", "deg", false},
+                 {"Date", {}, {}, true}};
     const auto r = importFile(exportFile(), o);
     ASSERT_TRUE(r.ok()) << qPrintable(r.message());
     const Stream& s = stream(*r);
@@ -77,8 +81,8 @@ TEST_F(ColumnMap, RenamesAndConvertsToSi) {
 TEST_F(ColumnMap, KindIsInferredFromMappedNames) {
     ImportOptions o = csv();
     o.timeColumn = "Time";
-    o.columns = {{"AccX", "acc_x", "g", false}, {"Gyro Z", "gyr_z", {}, false}, {"Angle", {}, {}, true},
-                 {"Date", {}, {}, true}};
+    o.columns = {
+        {"AccX", "acc_x", "g", false}, {"Gyro Z", "gyr_z", {}, false}, {"Angle", {}, {}, true}, {"Date", {}, {}, true}};
     const auto r = importFile(exportFile(), o);
     ASSERT_TRUE(r.ok()) << qPrintable(r.message());
     EXPECT_EQ(stream(*r).kind(), QStringLiteral("imu"));
@@ -119,7 +123,8 @@ TEST_F(ColumnMap, BadMappingsNameTheParameter) {
     expectError(importFile(file, o), "export.csv:1:3 (column 'Gyro Z'): duplicate channel 'acc_x' (also column 2)");
 
     o.columns = {{"AccX", "acc_x", "deg/s", false}, {"Date", {}, {}, true}};
-    expectError(importFile(file, o), "export.csv:1:2 (column 'AccX'): unit 'deg/s' (angular rate) cannot be converted to 'm/s^2'");
+    expectError(importFile(file, o),
+                "export.csv:1:2 (column 'AccX'): unit 'deg/s' (angular rate) cannot be converted to 'm/s^2'");
 
     o.columns = {{"AccZ", "acc_z", {}, false}};
     expectError(importFile(file, o), "column mapping: the file has no column 'AccZ'");

@@ -39,7 +39,8 @@ private:
 }  // namespace
 
 TEST_F(CsvFriction, PandasIndexColumnsAreIgnored) {
-    for (const QByteArray& header : {QByteArray(",t,acc_x"), QByteArray("Unnamed: 0,t,acc_x"), QByteArray("t,acc_x,")}) {
+    for (const QByteArray& header :
+         {QByteArray(",t,acc_x"), QByteArray("Unnamed: 0,t,acc_x"), QByteArray("t,acc_x,")}) {
         const QByteArray rows = header.endsWith(',') ? "0,1,\n0.01,2,\n" : "0,0,1\n1,0.01,2\n";
         const auto r = import(header + '\n' + rows);  // the kind is inferred without the index
         ASSERT_TRUE(r.ok()) << header.constData() << ": " << qPrintable(r.message());
@@ -61,7 +62,8 @@ TEST_F(CsvFriction, KnownChannelNamesInAnyCase) {
     // Two spellings of one channel are a duplicate, named with the column.
     r = import("t,acc_x,ACC_X\n0,1,2\n");
     ASSERT_FALSE(r.ok());
-    EXPECT_TRUE(r.message().contains("f.csv:1:3 (column 'ACC_X'): duplicate column name (also column 2)")) << qPrintable(r.message());
+    EXPECT_TRUE(r.message().contains("f.csv:1:3 (column 'ACC_X'): duplicate column name (also column 2)"))
+        << qPrintable(r.message());
     // The time column is never guessed: "Time" is not t.
     r = import("Time,acc_x\n0,1\n", "imu");
     ASSERT_FALSE(r.ok());
@@ -93,13 +95,26 @@ TEST_F(CsvFriction, UnitsOfSportsDevices) {
         double expected;  // in si
     };
     const Case cases[] = {
-        {"km/h", "m/s", 36.0, 10.0},        {"mph", "m/s", 10.0, 4.4704},     {"kmh", "m/s", 3.6, 1.0},
-        {"hPa", "Pa", 1013.25, 101325.0},   {"Pa", "Pa", 5.0, 5.0},           {"mbar", "Pa", 1.0, 100.0},
-        {"lux", "lx", 300.0, 300.0},        {"bpm", "Hz", 120.0, 2.0},        {"%", "1", 55.0, 0.55},
-        {"g", "m/s^2", 2.0, 19.6133},       {"mg", "m/s^2", 1000.0, 9.80665}, {"deg", "rad", 180.0, std::numbers::pi},
-        {"\u00B0", "rad", 90.0, std::numbers::pi / 2}, {"d", "s", 1.0, 86400.0},          {"h", "s", 1.0, 3600.0},
-        {"min", "s", 2.0, 120.0},           {"ms", "s", 5.0, 0.005},          {"\u00B5s", "s", 5.0, 5e-6},
-        {"us", "s", 5.0, 5e-6},             {"ns", "s", 5.0, 5e-9},
+        {"km/h", "m/s", 36.0, 10.0},
+        {"mph", "m/s", 10.0, 4.4704},
+        {"kmh", "m/s", 3.6, 1.0},
+        {"hPa", "Pa", 1013.25, 101325.0},
+        {"Pa", "Pa", 5.0, 5.0},
+        {"mbar", "Pa", 1.0, 100.0},
+        {"lux", "lx", 300.0, 300.0},
+        {"bpm", "Hz", 120.0, 2.0},
+        {"%", "1", 55.0, 0.55},
+        {"g", "m/s^2", 2.0, 19.6133},
+        {"mg", "m/s^2", 1000.0, 9.80665},
+        {"deg", "rad", 180.0, std::numbers::pi},
+        {"\u00B0", "rad", 90.0, std::numbers::pi / 2},
+        {"d", "s", 1.0, 86400.0},
+        {"h", "s", 1.0, 3600.0},
+        {"min", "s", 2.0, 120.0},
+        {"ms", "s", 5.0, 0.005},
+        {"\u00B5s", "s", 5.0, 5e-6},
+        {"us", "s", 5.0, 5e-6},
+        {"ns", "s", 5.0, 5e-9},
     };
     for (const Case& c : cases) {
         options.columns = {{QStringLiteral("v"), QStringLiteral("value"), QString::fromUtf8(c.unit), false}};
@@ -113,7 +128,8 @@ TEST_F(CsvFriction, UnitsOfSportsDevices) {
 TEST_F(CsvFriction, UnknownUnitsListTheAcceptedOnes) {
     auto r = import("t,acc_x [furlong/fortnight]\n0,1\n", "imu");
     ASSERT_FALSE(r.ok());
-    EXPECT_TRUE(r.message().contains("f.csv:1:2 (column 'acc_x'): unknown unit 'furlong/fortnight' (accepted for m/s^2: g, m/s^2, mg)"))
+    EXPECT_TRUE(r.message().contains(
+        "f.csv:1:2 (column 'acc_x'): unknown unit 'furlong/fortnight' (accepted for m/s^2: g, m/s^2, mg)"))
         << qPrintable(r.message());
     options.columns = {{QStringLiteral("v"), QStringLiteral("value"), QStringLiteral("parsec"), false}};
     r = import("t,v\n0,1\n", "custom");

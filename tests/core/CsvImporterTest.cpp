@@ -34,12 +34,14 @@ protected:
     static QByteArray imuLines(int n) {
         QByteArray text = "t,acc_x,acc_y,acc_z\n";
         for (int i = 0; i < n; ++i)
-            text += QByteArray::number(i / 100.0) + ',' + QByteArray::number(i) + ',' + QByteArray::number(-i) + ",9.81\n";
+            text +=
+                QByteArray::number(i / 100.0) + ',' + QByteArray::number(i) + ',' + QByteArray::number(-i) + ",9.81\n";
         return text;
     }
     static void expectError(const Expected<ImportResult>& r, const QString& part) {
         ASSERT_FALSE(r.ok()) << "should fail with: " << part.toStdString();
-        EXPECT_TRUE(r.message().contains(part)) << "'" << r.message().toStdString() << "' lacks '" << part.toStdString() << "'";
+        EXPECT_TRUE(r.message().contains(part))
+            << "'" << r.message().toStdString() << "' lacks '" << part.toStdString() << "'";
     }
 
     QTemporaryDir dir_;
@@ -112,20 +114,21 @@ TEST_F(CsvImport, LineNumbersCountCommentsAndBlankLines) {
 
 TEST_F(CsvImport, WrongFieldCount) {
     expectError(import(write("few.csv", "t,acc_x,acc_y\n0,1,2\n0.1,1\n"), "imu"), "few.csv:3:3");
-    expectError(import(write("few.csv", "t,acc_x,acc_y\n0,1,2\n0.1,1\n"), "imu"), "line has 2 fields, the header has 3");
+    expectError(import(write("few.csv", "t,acc_x,acc_y\n0,1,2\n0.1,1\n"), "imu"),
+                "line has 2 fields, the header has 3");
     expectError(import(write("many.csv", "t,acc_x,acc_y\n0,1,2\n0.1,1,2,3\n"), "imu"), "many.csv:3:4");
     expectError(import(write("many.csv", "t,acc_x,acc_y\n0,1,2\n0.1,1,2,3\n"), "imu"), "line has 4 fields");
 }
 
 TEST_F(CsvImport, HeaderErrors) {
     expectError(import(write("not.csv", "time,acc_x\n0,1\n"), "imu"), "not.csv:1: no 't' column");
-    expectError(import(write("dup.csv", "t,acc_x,acc_x\n0,1,2\n"), "imu"), "dup.csv:1:3 (column 'acc_x'): duplicate column name");
+    expectError(import(write("dup.csv", "t,acc_x,acc_x\n0,1,2\n"), "imu"),
+                "dup.csv:1:3 (column 'acc_x'): duplicate column name");
     expectError(import(write("empty.csv", ""), "imu"), "empty.csv: empty file");
     expectError(import(write("blank.csv", "\n\n# only a comment\n"), "imu"), "blank.csv: empty file");
     expectError(import(write("head.csv", "t,acc_x\n"), "imu"), "head.csv: no data rows");
     expectError(import(write("q.csv", "t,qw,qx\n0,1,0\n"), "orientation"), "needs a column 'qy'");
     expectError(import(write("g.csv", "t,alt\n0,1\n"), "gnss"), "lat, lon");
-
 }
 
 TEST_F(CsvImport, BadUnitNamesColumnAndFile) {
@@ -137,8 +140,9 @@ TEST_F(CsvImport, BadUnitNamesColumnAndFile) {
 }
 
 TEST_F(CsvImport, ConvertsUnitsToSi) {
-    const auto r = import(write("u.csv", "t [ms],acc_x (g),gyr_x [deg/s],mag_x [G],temp_board [degF]\n"
-                                         "0,1,180,0.5,70\n10,-2,-90,1,71\n"),
+    const auto r = import(write("u.csv",
+                                "t [ms],acc_x (g),gyr_x [deg/s],mag_x [G],temp_board [degF]\n"
+                                "0,1,180,0.5,70\n10,-2,-90,1,71\n"),
                           "imu");
     ASSERT_TRUE(r.ok()) << r.message().toStdString();
     const Stream& s = stream(*r);
@@ -210,8 +214,10 @@ TEST_F(CsvImport, EmptyCellsAndNonFiniteValues) {
     EXPECT_TRUE(std::isnan(data(stream(*r)).at(0, 0)));
     EXPECT_TRUE(std::isnan(data(stream(*r)).at(1, 0)));
     expectError(import(write("t.csv", "t,acc_x\n0,1\n,2\n"), "imu"), "t.csv:3:1 (column 't'): empty time");
-    expectError(import(write("tn.csv", "t,acc_x\n0,1\nnan,2\n"), "imu"), "tn.csv:3:1 (column 't'): 'nan' is not a finite number");
-    expectError(import(write("inf.csv", "t,acc_x\n0,1\n1,-inf\n"), "imu"), "inf.csv:3:2 (column 'acc_x'): '-inf' is not a finite number");
+    expectError(import(write("tn.csv", "t,acc_x\n0,1\nnan,2\n"), "imu"),
+                "tn.csv:3:1 (column 't'): 'nan' is not a finite number");
+    expectError(import(write("inf.csv", "t,acc_x\n0,1\n1,-inf\n"), "imu"),
+                "inf.csv:3:2 (column 'acc_x'): '-inf' is not a finite number");
 }
 
 TEST_F(CsvImport, TimeRepairReject) {
@@ -230,7 +236,8 @@ TEST_F(CsvImport, TimeRepairSortDropsExactDuplicates) {
     EXPECT_EQ(d.values, (std::vector<double>{1, 3, 2, 4}));
     ASSERT_EQ(r->warnings.size(), 2);
     EXPECT_TRUE(r->warnings.join(' ').contains("1 exact duplicate")) << r->warnings.join('|').toStdString();
-    expectError(import(write("c.csv", "t,acc_x\n0,1\n0.2,2\n0.2,5\n"), "imu", "sort"), "lines 3 and 4 have the same time 0.2");
+    expectError(import(write("c.csv", "t,acc_x\n0,1\n0.2,2\n0.2,5\n"), "imu", "sort"),
+                "lines 3 and 4 have the same time 0.2");
 }
 
 TEST_F(CsvImport, TimeRepairDropKeepsIncreasingSamples) {
@@ -268,7 +275,8 @@ TEST_F(CsvImport, TdoaLongFormatBecomesWideStream) {
     EXPECT_EQ(d.at(2, 2), 2.75e-9);
 
     expectError(import(write("tb.csv", "t,beacon,dt\n0,1,1e-9\n0,1,2e-9\n"), "lps-tdoa"), "tb.csv:3");
-    expectError(import(write("te.csv", "t,beacon,dt\n0,1,1e-9\n0.1,,2e-9\n"), "lps-tdoa"), "te.csv:3:2 (column 'beacon'): empty id");
+    expectError(import(write("te.csv", "t,beacon,dt\n0,1,1e-9\n0.1,,2e-9\n"), "lps-tdoa"),
+                "te.csv:3:2 (column 'beacon'): empty id");
     expectError(import(write("tx.csv", "t,beacon,dt,rssi\n0,1,1e-9,3\n"), "lps-tdoa"), "t, beacon, dt");
     const auto ns = import(write("ns.csv", "t,beacon,dt [ns]\n0.2,7,1.5\n0.1,7,2\n"), "lps-tdoa", "sort");
     ASSERT_TRUE(ns.ok()) << ns.message().toStdString();
@@ -293,7 +301,8 @@ TEST_F(CsvImport, BeaconsBecomeATable) {
     const auto mm = import(write("b.csv", "id,x [mm],y [mm]\n\"1\",1500,-250\n"), "beacons");
     ASSERT_TRUE(mm.ok()) << mm.message().toStdString();
     EXPECT_EQ(std::get<Table>(mm->items[0].item).column("x")->numbers[0], 1.5);
-    expectError(import(write("bb.csv", "id,x,y\nA,1,oops\n"), "beacons"), "bb.csv:2:3 (column 'y'): 'oops' is not a number");
+    expectError(import(write("bb.csv", "id,x,y\nA,1,oops\n"), "beacons"),
+                "bb.csv:2:3 (column 'y'): 'oops' is not a number");
     expectError(import(write("bc.csv", "id,x,y\nA,1\n"), "beacons"), "bc.csv:2:3");
 }
 
@@ -314,7 +323,8 @@ TEST_F(CsvImport, ReportsProgressAndHonoursCancellation) {
     const QString file = write("big.csv", big);
 
     std::vector<double> fractions;
-    const auto r = import(file, "imu", "reject", "rec", Progress([&](double f, const QString&) { fractions.push_back(f); }));
+    const auto r =
+        import(file, "imu", "reject", "rec", Progress([&](double f, const QString&) { fractions.push_back(f); }));
     ASSERT_TRUE(r.ok()) << r.message().toStdString();
     ASSERT_GE(fractions.size(), 3u);  // start, at least one block of a few MB, end
     EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));

@@ -21,9 +21,7 @@ QByteArray readAll(const QString& path) {
     return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
 }
 
-bool sameBits(double a, double b) {
-    return std::memcmp(&a, &b, sizeof a) == 0 || (std::isnan(a) && std::isnan(b));
-}
+bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0 || (std::isnan(a) && std::isnan(b)); }
 
 Expected<ImportResult> importCsv(const QString& file, const QString& kind) {
     ImportOptions options;
@@ -35,11 +33,13 @@ Expected<ImportResult> importCsv(const QString& file, const QString& kind) {
 
 // Random doubles across the whole range: tiny, subnormal, huge, negative, zero, NaN.
 double randomValue(std::mt19937_64& rng) {
-    constexpr double kSpecial[] = {0.0, -0.0, 5e-324, -2.2250738585072014e-308, 1e-300, 1.7976931348623157e308,
-                                   -1e300, 0.1, 1.0 / 3.0, std::numeric_limits<double>::quiet_NaN()};
+    constexpr double kSpecial[] = {0.0,       -0.0,
+                                   5e-324,    -2.2250738585072014e-308,
+                                   1e-300,    1.7976931348623157e308,
+                                   -1e300,    0.1,
+                                   1.0 / 3.0, std::numeric_limits<double>::quiet_NaN()};
     std::uniform_int_distribution<int> pick(0, 9);
-    if (pick(rng) == 0)
-        return kSpecial[pick(rng)];
+    if (pick(rng) == 0) return kSpecial[pick(rng)];
     std::uniform_real_distribution<double> mantissa(-1.0, 1.0);
     std::uniform_int_distribution<int> exponent(-320, 307);
     return mantissa(rng) * std::pow(10.0, exponent(rng));
@@ -57,8 +57,7 @@ TEST(CsvRoundTrip, RandomDoublesSurviveExportAndImportBitForBit) {
     for (int r = 0; r < rows; ++r) {
         t += step(rng);
         data.t[r] = t;
-        for (int c = 0; c < columns; ++c)
-            data.at(r, c) = randomValue(rng);
+        for (int c = 0; c < columns; ++c) data.at(r, c) = randomValue(rng);
     }
     StreamInfo info;
     info.name = "imu";
@@ -80,8 +79,8 @@ TEST(CsvRoundTrip, RandomDoublesSurviveExportAndImportBitForBit) {
     for (int r = 0; r < rows; ++r) {
         ASSERT_TRUE(sameBits(d.t[r], data.t[r])) << "t row " << r;
         for (int c = 0; c < columns; ++c)
-            ASSERT_TRUE(sameBits(d.at(r, c), data.at(r, c))) << "row " << r << " col " << c << ": " << data.at(r, c)
-                                                             << " came back as " << d.at(r, c);
+            ASSERT_TRUE(sameBits(d.at(r, c), data.at(r, c)))
+                << "row " << r << " col " << c << ": " << data.at(r, c) << " came back as " << d.at(r, c);
     }
     const QString second = dir.filePath("b.csv");
     ASSERT_TRUE(exportStreamCsv(s, second).ok());
@@ -138,8 +137,7 @@ TEST(CsvRoundTrip, TableTextIsQuotedWhereNeeded) {
     const Table& t = std::get<Table>(back->items[0].item);
     ASSERT_EQ(t.rows(), 5);
     EXPECT_EQ(t.column("id")->texts, id.texts);
-    for (int r = 0; r < 5; ++r)
-        EXPECT_TRUE(sameBits(t.column("x")->numbers[r], x.numbers[r])) << r;
+    for (int r = 0; r < 5; ++r) EXPECT_TRUE(sameBits(t.column("x")->numbers[r], x.numbers[r])) << r;
     EXPECT_EQ(t.column("y")->numbers, y.numbers);
 
     table.columns[2].numbers.pop_back();
@@ -157,8 +155,7 @@ TEST(CsvRoundTrip, ExportIsAtomicAndCancellable) {
     StreamData data(200000, 3);
     for (size_t r = 0; r < data.rows(); ++r) {
         data.t[r] = double(r) * 0.01;
-        for (int c = 0; c < 3; ++c)
-            data.at(r, c) = std::sin(double(r + c));
+        for (int c = 0; c < 3; ++c) data.at(r, c) = std::sin(double(r + c));
     }
     StreamInfo info;
     info.name = "imu";

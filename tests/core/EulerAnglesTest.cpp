@@ -54,8 +54,10 @@ TEST(EulerAngles, GimbalLockReproducesRotation) {
             for (double middle : middles) {
                 const Quat q = quaternionFromEuler(Vec3(0.4, middle, -0.9), seq);
                 const Vec3 a = eulerFromQuaternion(q, seq);
-                EXPECT_LT(angleBetween(quaternionFromEuler(a, seq), q), 1e-7) << qPrintable(name) << " middle " << middle;
-                EXPECT_TRUE(std::abs(a[0]) < 1e-9 || std::abs(a[2]) < 1e-9) << qPrintable(name);  // one outer angle zero
+                EXPECT_LT(angleBetween(quaternionFromEuler(a, seq), q), 1e-7)
+                    << qPrintable(name) << " middle " << middle;
+                EXPECT_TRUE(std::abs(a[0]) < 1e-9 || std::abs(a[2]) < 1e-9)
+                    << qPrintable(name);  // one outer angle zero
             }
         }
     }

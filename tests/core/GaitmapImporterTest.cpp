@@ -22,8 +22,7 @@ struct Raw {
     std::vector<std::vector<double>> rows;
     int column(const QString& sensor, const QString& axis) const {
         for (int i = 0; i < sensors.size(); ++i)
-            if (sensors[i] == sensor && axes[i] == axis)
-                return i;
+            if (sensors[i] == sensor && axes[i] == axis) return i;
         return -1;
     }
 };
@@ -37,8 +36,7 @@ Raw readRaw(const QString& path) {
     raw.axes = QString::fromUtf8(lines[1].trimmed()).split(',');
     for (int i = 2; i < lines.size(); ++i) {
         std::vector<double> row;
-        for (const QByteArray& cell : lines[i].trimmed().split(','))
-            row.push_back(cell.toDouble());
+        for (const QByteArray& cell : lines[i].trimmed().split(',')) row.push_back(cell.toDouble());
         raw.rows.push_back(row);
     }
     return raw;
@@ -54,7 +52,8 @@ Expected<ImportResult> importGaitmap(const QString& file, const QString& format 
 // Every sample of both feet equals the raw column of the same sensor and axis (gyr in rad/s).
 void expectMatchesRaw(const ImportResult& result, const Raw& raw) {
     ASSERT_EQ(result.items.size(), 2u);
-    const std::pair<const char*, const char*> feet[] = {{"walk/left-foot", "left_sensor"}, {"walk/right-foot", "right_sensor"}};
+    const std::pair<const char*, const char*> feet[] = {{"walk/left-foot", "left_sensor"},
+                                                        {"walk/right-foot", "right_sensor"}};
     for (size_t i = 0; i < 2; ++i) {
         EXPECT_EQ(result.items[i].path, feet[i].first);
         const Stream& s = std::get<Stream>(result.items[i].item);
@@ -71,7 +70,8 @@ void expectMatchesRaw(const ImportResult& result, const Raw& raw) {
             ASSERT_GT(rawColumn, 0) << axis.toStdString();
             const double scale = axis.startsWith("gyr") ? std::numbers::pi / 180.0 : 1.0;
             for (size_t r = 0; r < d.rows(); ++r)
-                ASSERT_DOUBLE_EQ(d.at(r, c), raw.rows[r][rawColumn] * scale) << feet[i].first << " " << axis.toStdString() << " row " << r;
+                ASSERT_DOUBLE_EQ(d.at(r, c), raw.rows[r][rawColumn] * scale)
+                    << feet[i].first << " " << axis.toStdString() << " row " << r;
         }
     }
 }
@@ -103,8 +103,7 @@ TEST(GaitmapImport, StairFileWithTimeInSecondsAndGroupedColumns) {
     const Stream& right = std::get<Stream>(r->items[1].item);
     EXPECT_DOUBLE_EQ(right.info().attributes["sampling_rate"].toDouble(), 204.8);
     const StreamData& d = **right.data();
-    for (size_t i = 0; i < d.rows(); ++i)
-        ASSERT_EQ(d.t[i], raw.rows[i][0]) << i;  // time column taken as is
+    for (size_t i = 0; i < d.rows(); ++i) ASSERT_EQ(d.t[i], raw.rows[i][0]) << i;  // time column taken as is
     EXPECT_EQ(right.info().provenance.processorId, "import:gaitmap");
 }
 
@@ -126,7 +125,8 @@ TEST(GaitmapImport, ErrorsNameFileLineAndColumn) {
     const QByteArray header = ",left_sensor,right_sensor\n,gyr_x,gyr_x\n";
     const auto bad = importGaitmap(write("bad.csv", header + "0,1,2\n1,1,x\n"));
     ASSERT_FALSE(bad.ok());
-    EXPECT_TRUE(bad.message().contains("bad.csv:4:3 (column 'right_sensor/gyr_x'): 'x' is not a number")) << bad.message().toStdString();
+    EXPECT_TRUE(bad.message().contains("bad.csv:4:3 (column 'right_sensor/gyr_x'): 'x' is not a number"))
+        << bad.message().toStdString();
     const auto few = importGaitmap(write("few.csv", header + "0,1,2\n1,1\n"));
     ASSERT_FALSE(few.ok());
     EXPECT_TRUE(few.message().contains("few.csv:4:3")) << few.message().toStdString();
@@ -139,7 +139,8 @@ TEST(GaitmapImport, ErrorsNameFileLineAndColumn) {
     EXPECT_FALSE(importGaitmap(write("empty.csv", "")).ok());
 
     // Explicit units in the axis row win over gaitmap's deg/s.
-    const auto rad = importGaitmap(write("rad.csv", ",left_sensor,left_sensor\n,gyr_x [rad/s],acc_z (g)\n0,1,1\n1,2,2\n"));
+    const auto rad =
+        importGaitmap(write("rad.csv", ",left_sensor,left_sensor\n,gyr_x [rad/s],acc_z (g)\n0,1,1\n1,2,2\n"));
     ASSERT_TRUE(rad.ok()) << rad.message().toStdString();
     const StreamData& d = **std::get<Stream>(rad->items[0].item).data();
     EXPECT_EQ(d.at(1, 1), 2.0);  // columns in canonical order: acc_z, then gyr_x

@@ -39,7 +39,8 @@ TEST(Geodesy, ProjectOriginIsSharedByEveryGnssStream) {
     options.kind = QStringLiteral("gnss");
     options.target = QStringLiteral("a");
     // Names in any case; fix quality, satellites and HDOP kept as columns.
-    const QString a = test::writeFile(dir, "a.csv", "t,Latitude,Longitude,Altitude,fix,sats,HDOP\n0,0,0,0,4,12,0.7\n1,0.001,0,0,4,12,0.8\n");
+    const QString a = test::writeFile(
+        dir, "a.csv", "t,Latitude,Longitude,Altitude,fix,sats,HDOP\n0,0,0,0,4,12,0.7\n1,0.001,0,0,4,12,0.8\n");
     auto r = importFile(a, options);
     ASSERT_TRUE(r.ok()) << qPrintable(r.message());
     ASSERT_TRUE(applyImport(*project, *r, false).ok());
@@ -70,7 +71,8 @@ TEST(Geodesy, ProjectOriginIsSharedByEveryGnssStream) {
     ASSERT_TRUE(r.ok());
     const Status refused = applyImport(*project, *r, false);
     ASSERT_FALSE(refused.ok());
-    EXPECT_TRUE(refused.message().contains("geodetic origin is 0, 0, 0 m; it cannot change")) << qPrintable(refused.message());
+    EXPECT_TRUE(refused.message().contains("geodetic origin is 0, 0, 0 m; it cannot change"))
+        << qPrintable(refused.message());
     EXPECT_EQ(project->stream("c/gnss"), nullptr);
 }
 

@@ -87,9 +87,10 @@ TEST_F(Preview, CsvWithHeaderUnits) {
 }
 
 TEST_F(Preview, ForeignExportIsMappedAndImportsInSi) {
-    const QString file = write("watch.csv", "Date;Timestamp [ms];AccX [g];Gyro Y [deg/s];Heart Rate\n"
-                                            "2024-05-01;1000;0.5;180;120\n"
-                                            "2024-05-01;1010;1;-90;121\n");
+    const QString file = write("watch.csv",
+                               "Date;Timestamp [ms];AccX [g];Gyro Y [deg/s];Heart Rate\n"
+                               "2024-05-01;1000;0.5;180;120\n"
+                               "2024-05-01;1010;1;-90;121\n");
     const auto p = previewFile(file);
     ASSERT_TRUE(p.ok()) << qPrintable(p.message());
     EXPECT_EQ(p->kind, QStringLiteral("imu"));
@@ -186,7 +187,8 @@ TEST_F(Preview, CheckReportsErrorsWithoutImporting) {
     const QString bad = write("bad.csv", "t,acc_x,acc_y\n0,1,2\n0.01,1,2\n0.02,1,abc\n");
     const ImportCheck check = checkImport(bad, o);
     ASSERT_EQ(check.errors.size(), 1);
-    EXPECT_TRUE(check.errors[0].endsWith("bad.csv:4:3 (column 'acc_y'): 'abc' is not a number")) << qPrintable(check.errors[0]);
+    EXPECT_TRUE(check.errors[0].endsWith("bad.csv:4:3 (column 'acc_y'): 'abc' is not a number"))
+        << qPrintable(check.errors[0]);
     EXPECT_TRUE(check.items.isEmpty());
     EXPECT_FALSE(check.cancelled);
 }

@@ -14,7 +14,8 @@ TEST(IsolatedRun, SuccessPassesThrough) {
 }
 
 TEST(IsolatedRun, ErrorMessageComesBackFromTheChild) {
-    const Status status = runIsolated(QStringLiteral("the file"), [] { return Status(makeError(QStringLiteral("row 7: bad ünïcode"))); });
+    const Status status =
+        runIsolated(QStringLiteral("the file"), [] { return Status(makeError(QStringLiteral("row 7: bad ünïcode"))); });
     ASSERT_FALSE(status.ok());
     EXPECT_EQ(status.message(), QStringLiteral("row 7: bad ünïcode"));
 }
@@ -25,7 +26,8 @@ TEST(IsolatedRun, CrashBecomesAnErrorNamingTheInput) {
         return {};
     });
     ASSERT_FALSE(status.ok());
-    EXPECT_TRUE(status.message().contains(QStringLiteral("project 'x.athlos' is damaged"))) << status.message().toStdString();
+    EXPECT_TRUE(status.message().contains(QStringLiteral("project 'x.athlos' is damaged")))
+        << status.message().toStdString();
 }
 
 TEST(IsolatedRun, AbortBecomesAnError) {

@@ -62,7 +62,8 @@ TEST(LpsRange, LongCsvIsStoredWideAndExportedLong) {
     // Errors: the long form only, an empty range, a centimetre header converted.
     r = importFile(test::writeFile(dir, "wide.csv", "t,beacon,range,rssi\n0,A,1,2\n"), optionsFor("lps-range", "rec"));
     ASSERT_FALSE(r.ok());
-    EXPECT_TRUE(r.message().contains("wide.csv:1: kind 'lps-range' has the columns t, beacon, range (long format)")) << qPrintable(r.message());
+    EXPECT_TRUE(r.message().contains("wide.csv:1: kind 'lps-range' has the columns t, beacon, range (long format)"))
+        << qPrintable(r.message());
     r = importFile(test::writeFile(dir, "gap.csv", "t,beacon,range\n0,A,1\n0.1,A,\n"), optionsFor("lps-range", "rec"));
     ASSERT_FALSE(r.ok());
     EXPECT_TRUE(r.message().contains("gap.csv:3:3 (column 'range'): empty range")) << qPrintable(r.message());
@@ -127,7 +128,8 @@ TEST(LpsRange, MergeErrorsNameTheFiles) {
                                            "1000,1000,7,1.0,2.0,0.5,3.0\n2000,2000,7,1.5,2.0,0.5,3.1\n");
     auto r = importFile(moving, optionsFor("beacons"));
     ASSERT_FALSE(r.ok());
-    EXPECT_TRUE(r.message().contains("A7.csv:3:4 (column 'x'): anchor '7' has x = 1.5 here but 1 on line 2")) << qPrintable(r.message());
+    EXPECT_TRUE(r.message().contains("A7.csv:3:4 (column 'x'): anchor '7' has x = 1.5 here but 1 on line 2"))
+        << qPrintable(r.message());
     // Two files giving one beacon different positions.
     const QString a = test::writeFile(dir, "a.csv", "id,x,y\nB1,0,0\n");
     const QString b = test::writeFile(dir, "b.csv", "id,x,y\nB1,0,1\n");
@@ -148,8 +150,10 @@ TEST(LpsRange, MergeErrorsNameTheFiles) {
     const QString g = test::writeFile(dir, "g.csv", "t,gyr_x\n5,1\n");
     r = importFiles({p1, g}, optionsFor({}));  // both imu, different columns
     ASSERT_FALSE(r.ok());
-    EXPECT_TRUE(r.message().contains("uwb/imu: p1.csv has the columns acc_x, g.csv has gyr_x; only files with the same "
-                                     "columns make one stream")) << qPrintable(r.message());
+    EXPECT_TRUE(
+        r.message().contains("uwb/imu: p1.csv has the columns acc_x, g.csv has gyr_x; only files with the same "
+                             "columns make one stream"))
+        << qPrintable(r.message());
 }
 
 TEST(FolderImport, OneStreamPerFileWithTheRoster) {
@@ -159,9 +163,10 @@ TEST(FolderImport, OneStreamPerFileWithTheRoster) {
     test::writeFile(dir, "team/anna.csv", "t,x,y\n0,1,2\n1,2,3\n");
     test::writeFile(dir, "team/ben lee.csv", "t,x,y\n0,5,5\n1,6,6\n");
     test::writeFile(dir, "team/notes.md", "not data\n");
-    const QString roster = test::writeFile(dir, "roster.csv",
-                                           "file,athlete,number,team,position,mass_kg\nanna.csv,Anna Berg,7,home,FW,61.5\n"
-                                           "carl,Carl Dahl,9,away,GK,80\n");
+    const QString roster =
+        test::writeFile(dir, "roster.csv",
+                        "file,athlete,number,team,position,mass_kg\nanna.csv,Anna Berg,7,home,FW,61.5\n"
+                        "carl,Carl Dahl,9,away,GK,80\n");
     auto r = importFolder(folder, optionsFor("lps-position", "match"), roster);
     ASSERT_TRUE(r.ok()) << qPrintable(r.message());
     ASSERT_EQ(r->items.size(), 2u);
@@ -182,7 +187,8 @@ TEST(FolderImport, OneStreamPerFileWithTheRoster) {
     const QString bad = test::writeFile(dir, "bad.csv", "file,athlete,mass_kg\nanna.csv,Anna,heavy\n");
     r = importFolder(folder, optionsFor("lps-position", "match"), bad);
     ASSERT_FALSE(r.ok());
-    EXPECT_TRUE(r.message().contains("bad.csv:2:3 (column 'mass_kg'): 'heavy' is not a number")) << qPrintable(r.message());
+    EXPECT_TRUE(r.message().contains("bad.csv:2:3 (column 'mass_kg'): 'heavy' is not a number"))
+        << qPrintable(r.message());
     const QString nofile = test::writeFile(dir, "nofile.csv", "name,athlete\nanna.csv,Anna\n");
     r = importFolder(folder, optionsFor("lps-position", "match"), nofile);
     ASSERT_FALSE(r.ok());

@@ -40,12 +40,12 @@ TEST(NmeaImporter, MergesRmcGgaVtgPerEpoch) {
     EXPECT_NEAR(data->at(0, 2), 545.4, 1e-12);            // alt
     EXPECT_NEAR(data->at(0, 3), 0.0, 1e-9);               // vn: course 90° = east
     EXPECT_NEAR(data->at(0, 4), 10.0 * 1852.0 / 3600.0, 1e-9);
-    EXPECT_TRUE(std::isnan(data->at(0, 5)));              // vd unknown
+    EXPECT_TRUE(std::isnan(data->at(0, 5)));  // vd unknown
     EXPECT_EQ(s.info().columns[6].name, QStringLiteral("fix"));
-    EXPECT_NEAR(data->at(0, 6), 1.0, 1e-12);              // fix quality
-    EXPECT_NEAR(data->at(0, 7), 8.0, 1e-12);              // sats
-    EXPECT_NEAR(data->at(0, 8), 0.9, 1e-12);              // hdop
-    EXPECT_NEAR(data->at(1, 3), 2.0, 1e-9);               // VTG 7.2 km/h due north
+    EXPECT_NEAR(data->at(0, 6), 1.0, 1e-12);  // fix quality
+    EXPECT_NEAR(data->at(0, 7), 8.0, 1e-12);  // sats
+    EXPECT_NEAR(data->at(0, 8), 0.9, 1e-12);  // hdop
+    EXPECT_NEAR(data->at(1, 3), 2.0, 1e-9);   // VTG 7.2 km/h due north
     EXPECT_NEAR(data->at(1, 7), 9.0, 1e-12);
     EXPECT_TRUE(r->warnings.isEmpty()) << qPrintable(r->warnings.join('\n'));
 }
@@ -97,8 +97,11 @@ TEST(NmeaImporter, BinaryPrefixAndNoFixBeforeMidnightDoNotShiftTheDay) {
     text += QByteArray("\xa0\xa2") + sentence("GPGGA,235959.00,,,,,0,00,99.9,,M,,M,,");
     text += sentence("GPRMC,235959.00,V,,,,,,,311223,,");
     for (int s = 0; s <= 3600; ++s) {
-        const QByteArray hhmmss = QStringLiteral("%1%2%3.00").arg(s / 3600, 2, 10, QLatin1Char('0'))
-                                      .arg(s / 60 % 60, 2, 10, QLatin1Char('0')).arg(s % 60, 2, 10, QLatin1Char('0')).toLatin1();
+        const QByteArray hhmmss = QStringLiteral("%1%2%3.00")
+                                      .arg(s / 3600, 2, 10, QLatin1Char('0'))
+                                      .arg(s / 60 % 60, 2, 10, QLatin1Char('0'))
+                                      .arg(s % 60, 2, 10, QLatin1Char('0'))
+                                      .toLatin1();
         text += sentence("GPGGA," + hhmmss + ",4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,");
         text += sentence("GPRMC," + hhmmss + ",A,4807.038,N,01131.000,E,0.0,0.0,010124,,");
     }
@@ -154,7 +157,8 @@ TEST(NmeaImporter, BadDateNamesLineAndColumn) {
     const auto r = NmeaImporter::parse(sentence("GPRMC,120000.00,A,4807.038,N,01131.000,E,0.0,0.0,321399,,"),
                                        QStringLiteral("d.nmea"));
     ASSERT_FALSE(r.ok());
-    EXPECT_TRUE(r.message().startsWith(QStringLiteral("d.nmea:1:51: RMC sentence: cannot read date"))) << qPrintable(r.message());
+    EXPECT_TRUE(r.message().startsWith(QStringLiteral("d.nmea:1:51: RMC sentence: cannot read date")))
+        << qPrintable(r.message());
 }
 
 // The gpsd regression logs: dates from RMC, the start at the first fix, the duration of the fixes.

@@ -22,7 +22,8 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kLength = 100.0, kWidth = 64.0;
 
 // Corners of a true pitch (ENU), counter-clockwise from (−L/2, −W/2) in the pitch frame.
-std::vector<Vector2d> trueCorners(const Vector2d& centre, double rotation, double length = kLength, double width = kWidth) {
+std::vector<Vector2d> trueCorners(const Vector2d& centre, double rotation, double length = kLength,
+                                  double width = kWidth) {
     const Eigen::Rotation2Dd r(rotation);
     std::vector<Vector2d> c;
     for (const auto& q : {Vector2d(-1, -1), Vector2d(1, -1), Vector2d(1, 1), Vector2d(-1, 1)})
@@ -109,7 +110,8 @@ TEST(PitchGeometry, AnyCyclicOrderAndDirectionGiveTheSamePitch) {
 
 TEST(PitchGeometry, ClosedFormIsTheLeastSquaresOptimum) {
     // Sum of squared distances of the corners to the nearest corner of a rectangle (centre, rotation, L, W).
-    auto cost = [](const std::vector<Vector2d>& c, const Vector2d& centre, double rotation, double length, double width) {
+    auto cost = [](const std::vector<Vector2d>& c, const Vector2d& centre, double rotation, double length,
+                   double width) {
         const Eigen::Rotation2Dd r(rotation);
         double sum = 0.0;
         for (const Vector2d& p : c) {
@@ -135,8 +137,10 @@ TEST(PitchGeometry, ClosedFormIsTheLeastSquaresOptimum) {
         EXPECT_NEAR(best, reported, 1e-9);  // the residuals are those of the fit
         // Every step of any of the 5 parameters costs more.
         for (const double h : {-1e-3, 1e-3}) {
-            EXPECT_GT(cost(c, pitch->centre() + Vector2d(h, 0), pitch->rotation(), pitch->length(), pitch->width()), best);
-            EXPECT_GT(cost(c, pitch->centre() + Vector2d(0, h), pitch->rotation(), pitch->length(), pitch->width()), best);
+            EXPECT_GT(cost(c, pitch->centre() + Vector2d(h, 0), pitch->rotation(), pitch->length(), pitch->width()),
+                      best);
+            EXPECT_GT(cost(c, pitch->centre() + Vector2d(0, h), pitch->rotation(), pitch->length(), pitch->width()),
+                      best);
             EXPECT_GT(cost(c, pitch->centre(), pitch->rotation() + h, pitch->length(), pitch->width()), best);
             EXPECT_GT(cost(c, pitch->centre(), pitch->rotation(), pitch->length() + h, pitch->width()), best);
             EXPECT_GT(cost(c, pitch->centre(), pitch->rotation(), pitch->length(), pitch->width() + h), best);
@@ -173,7 +177,8 @@ TEST(PitchGeometry, RefusesWhatIsNotNearARectangle) {
     EXPECT_TRUE(r.message().contains("crosses itself")) << qPrintable(r.message());
 
     // Not convex (a dart).
-    r = PitchGeometry::fit({Vector2d(0, 0), Vector2d(100, 0), Vector2d(20, 10), Vector2d(0, 60)}, PitchGeometry::Kind::Rectangle);
+    r = PitchGeometry::fit({Vector2d(0, 0), Vector2d(100, 0), Vector2d(20, 10), Vector2d(0, 60)},
+                           PitchGeometry::Kind::Rectangle);
     ASSERT_FALSE(r.ok());
     EXPECT_TRUE(r.message().contains("not convex at corner 3")) << qPrintable(r.message());
 
@@ -199,7 +204,8 @@ TEST(PitchGeometry, RefusesBadInputNamingTheParameter) {
     r = PitchGeometry::fitGeodetic({{48.1, 11.5}, {48.1, 11.501}, {95.0, 11.501}, {48.101, 11.5}}, {48.1, 11.5, 0},
                                    PitchGeometry::Kind::Football);
     ASSERT_FALSE(r.ok());
-    EXPECT_TRUE(r.message().contains("corner 3 (95, 11.501): latitude must be in [-90, 90]")) << qPrintable(r.message());
+    EXPECT_TRUE(r.message().contains("corner 3 (95, 11.501): latitude must be in [-90, 90]"))
+        << qPrintable(r.message());
     r = PitchGeometry::fitGeodetic({{8.1, 11.5}, {8.1, 11.501}, {8.101, 11.501}, {8.101, 11.5}}, {48.1, 11.5, 0},
                                    PitchGeometry::Kind::Football);
     ASSERT_FALSE(r.ok());
@@ -220,7 +226,8 @@ TEST(PitchGeometry, NotesDimensionsOutsideTheLaws) {
     auto small = PitchGeometry::fit(trueCorners({0, 0}, 0.0, 60.0, 40.0), PitchGeometry::Kind::Football);
     ASSERT_TRUE(small.ok());
     ASSERT_EQ(small->notes().size(), 2);
-    EXPECT_TRUE(small->notes()[0].contains("length 60.0 m is outside IFAB Law 1 (90-120 m)")) << qPrintable(small->notes()[0]);
+    EXPECT_TRUE(small->notes()[0].contains("length 60.0 m is outside IFAB Law 1 (90-120 m)"))
+        << qPrintable(small->notes()[0]);
     auto rect = PitchGeometry::fit(trueCorners({0, 0}, 0.0, 60.0, 40.0), PitchGeometry::Kind::Rectangle);
     EXPECT_TRUE(rect->notes().isEmpty());
 }
@@ -263,7 +270,8 @@ TEST(PitchGeometry, JsonRoundTripAndProjectStore) {
 
     QJsonObject broken = json;
     broken.insert("kind", "cricket");
-    EXPECT_TRUE(PitchGeometry::fromJson(broken).message().contains("kind 'cricket' is not one of football, rugby, rectangle"));
+    EXPECT_TRUE(
+        PitchGeometry::fromJson(broken).message().contains("kind 'cricket' is not one of football, rugby, rectangle"));
     broken = json;
     broken.insert("length", -3);
     EXPECT_TRUE(PitchGeometry::fromJson(broken).message().contains("length and width must be positive"));

@@ -73,11 +73,13 @@ protected:
         ASSERT_TRUE(dir_.isValid());
         project_ = Project::create(dir_.filePath(QStringLiteral("p.athlos")));
         project_->putStream(QStringLiteral("walk/imu"), makeStream(5.0));
-        project_->recording(QStringLiteral("walk"))->annotations.push_back(
-            {QStringLiteral("step"), 0.5, 0.7, QStringLiteral("me"), 1.0, QStringLiteral("manual")});
+        project_->recording(QStringLiteral("walk"))
+            ->annotations.push_back(
+                {QStringLiteral("step"), 0.5, 0.7, QStringLiteral("me"), 1.0, QStringLiteral("manual")});
     }
     Expected<RunOutcome> run(const QString& output, QVariantMap params = {}) {
-        return runProcessor(*project_, RunRequest{QStringLiteral("test-predict"), {QStringLiteral("walk/imu")}, output, params});
+        return runProcessor(*project_,
+                            RunRequest{QStringLiteral("test-predict"), {QStringLiteral("walk/imu")}, output, params});
     }
     QTemporaryDir dir_;
     std::unique_ptr<Project> project_;
@@ -103,7 +105,10 @@ TEST_F(AnnotationOutput, RunnerTagsClampsAndRecordsProvenance) {
     }
     EXPECT_EQ(rec.annotations[1].confidence, 1.0);
     EXPECT_EQ(rec.annotations[2].confidence, 0.4);
-    const QJsonObject prov = rec.metadata.value(QStringLiteral("annotation_provenance")).toObject().value(QStringLiteral("walk/pred")).toObject();
+    const QJsonObject prov = rec.metadata.value(QStringLiteral("annotation_provenance"))
+                                 .toObject()
+                                 .value(QStringLiteral("walk/pred"))
+                                 .toObject();
     const Provenance p = Provenance::fromJson(prov);
     EXPECT_EQ(p.processorId, QStringLiteral("test-predict"));
     EXPECT_EQ(p.processorVersion, QStringLiteral("3"));
@@ -133,17 +138,18 @@ TEST_F(AnnotationOutput, FailedPipelineRestoresAnnotationsAndMetadata) {
     project_->setModified(false);
     const QJsonObject pipeline{
         {QStringLiteral("steps"),
-         QJsonArray{QJsonObject{{QStringLiteral("processor"), QStringLiteral("test-predict")},
-                                {QStringLiteral("input"), QStringLiteral("walk/imu")},
-                                {QStringLiteral("output"), QStringLiteral("walk/pred")},
-                                {QStringLiteral("params"), QJsonObject{{QStringLiteral("label"), QStringLiteral("new")}}}},
-                    QJsonObject{{QStringLiteral("processor"), QStringLiteral("test-predict")},
-                                {QStringLiteral("input"), QStringLiteral("walk/imu")},
-                                {QStringLiteral("output"), QStringLiteral("walk/more")}},
-                    QJsonObject{{QStringLiteral("processor"), QStringLiteral("test-predict")},
-                                {QStringLiteral("input"), QStringLiteral("walk/imu")},
-                                {QStringLiteral("output"), QStringLiteral("walk/x")},
-                                {QStringLiteral("params"), QJsonObject{{QStringLiteral("fail"), true}}}}}}};
+         QJsonArray{
+             QJsonObject{{QStringLiteral("processor"), QStringLiteral("test-predict")},
+                         {QStringLiteral("input"), QStringLiteral("walk/imu")},
+                         {QStringLiteral("output"), QStringLiteral("walk/pred")},
+                         {QStringLiteral("params"), QJsonObject{{QStringLiteral("label"), QStringLiteral("new")}}}},
+             QJsonObject{{QStringLiteral("processor"), QStringLiteral("test-predict")},
+                         {QStringLiteral("input"), QStringLiteral("walk/imu")},
+                         {QStringLiteral("output"), QStringLiteral("walk/more")}},
+             QJsonObject{{QStringLiteral("processor"), QStringLiteral("test-predict")},
+                         {QStringLiteral("input"), QStringLiteral("walk/imu")},
+                         {QStringLiteral("output"), QStringLiteral("walk/x")},
+                         {QStringLiteral("params"), QJsonObject{{QStringLiteral("fail"), true}}}}}}};
     auto result = runPipeline(*project_, pipeline);
     ASSERT_FALSE(result.ok());
     const Recording& after = *project_->recording(QStringLiteral("walk"));
@@ -157,8 +163,9 @@ TEST_F(AnnotationOutput, FailedPipelineRestoresAnnotationsAndMetadata) {
     ok[QStringLiteral("steps")] = steps;
     ASSERT_TRUE(runPipeline(*project_, ok).ok());
     const QJsonObject last = project_->pipelineHistory().last().toObject();
-    EXPECT_EQ(last.value(QStringLiteral("steps")).toArray()[1].toObject().value(QStringLiteral("annotations")).toArray(),
-              QJsonArray{QStringLiteral("walk/more")});
+    EXPECT_EQ(
+        last.value(QStringLiteral("steps")).toArray()[1].toObject().value(QStringLiteral("annotations")).toArray(),
+        QJsonArray{QStringLiteral("walk/more")});
     EXPECT_EQ(countSource(*project_->recording(QStringLiteral("walk")), QStringLiteral("walk/pred")), 5);
 }
 
@@ -169,5 +176,6 @@ TEST_F(AnnotationOutput, AnnotationsAndProvenanceSurviveSave) {
     ASSERT_TRUE(reopened.ok()) << qPrintable(reopened.message());
     const Recording& rec = *(*reopened)->recording(QStringLiteral("walk"));
     EXPECT_EQ(rec.annotations, project_->recording(QStringLiteral("walk"))->annotations);
-    EXPECT_TRUE(rec.metadata.value(QStringLiteral("annotation_provenance")).toObject().contains(QStringLiteral("walk/pred")));
+    EXPECT_TRUE(
+        rec.metadata.value(QStringLiteral("annotation_provenance")).toObject().contains(QStringLiteral("walk/pred")));
 }

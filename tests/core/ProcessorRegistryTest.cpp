@@ -20,7 +20,9 @@ public:
     ParameterSpecs parameters() const override { return {}; }
     QList<InputSpec> inputs() const override { return {}; }
     QList<OutputSpec> outputs() const override { return {}; }
-    Expected<std::vector<ProcessorOutput>> run(const RunContext&) const override { return std::vector<ProcessorOutput>{}; }
+    Expected<std::vector<ProcessorOutput>> run(const RunContext&) const override {
+        return std::vector<ProcessorOutput>{};
+    }
 
 private:
     QString id_;
@@ -38,7 +40,8 @@ TEST(ProcessorRegistry, PluginWhoseProcessorsDifferFromItsMetadataIsRefused) {
                        processors({QStringLiteral("resample"), QStringLiteral("rm-rf")}));
     EXPECT_TRUE(registry.ids().isEmpty());
     ASSERT_EQ(registry.loadErrors().size(), 1);
-    EXPECT_TRUE(registry.loadErrors()[0].contains(QStringLiteral("/x/evil.so"))) << registry.loadErrors()[0].toStdString();
+    EXPECT_TRUE(registry.loadErrors()[0].contains(QStringLiteral("/x/evil.so")))
+        << registry.loadErrors()[0].toStdString();
     EXPECT_TRUE(registry.loadErrors()[0].contains(QStringLiteral("rm-rf")));
 }
 

@@ -24,16 +24,20 @@ public:
     QString name() const override { return id(); }
     QString description() const override { return id(); }
     QString version() const override { return QStringLiteral("1"); }
-    ParameterSpecs parameters() const override { return {ParameterSpec::integer(QStringLiteral("min_rows"), 2, 0, 1000, {})}; }
+    ParameterSpecs parameters() const override {
+        return {ParameterSpec::integer(QStringLiteral("min_rows"), 2, 0, 1000, {})};
+    }
     QList<InputSpec> inputs() const override {
-        return {InputSpec{QStringLiteral("signal"), {}, false, false, {}}, InputSpec{QStringLiteral("extra"), {}, false, true, {}}};
+        return {InputSpec{QStringLiteral("signal"), {}, false, false, {}},
+                InputSpec{QStringLiteral("extra"), {}, false, true, {}}};
     }
     QList<OutputSpec> outputs() const override { return {OutputSpec{{}, false, QString(), {}}}; }
     Status prepare(const RunContext& c) const override {
         ++prepared;
         auto input = c.samples(0);
         if (!input) return input.error();
-        if (int(input->data->rows()) < c.integer(QStringLiteral("min_rows"))) return input->error(QStringLiteral("too short"));
+        if (int(input->data->rows()) < c.integer(QStringLiteral("min_rows")))
+            return input->error(QStringLiteral("too short"));
         return {};
     }
     Expected<std::vector<ProcessorOutput>> run(const RunContext& c) const override {
@@ -75,12 +79,14 @@ protected:
         // A stream whose samples cannot be read (as if its file had gone).
         StreamInfo info = signalStream(1).info();
         info.rows = 5;
-        project_->putStream(QStringLiteral("rec/lost"),
-                            Stream(info, FileSource{QStringLiteral("gone.athlos"), QStringLiteral("/recordings/rec/lost")},
-                                   [] { return Expected<StreamData>(makeError(QStringLiteral("gone.athlos: no such file"))); }));
+        project_->putStream(
+            QStringLiteral("rec/lost"),
+            Stream(info, FileSource{QStringLiteral("gone.athlos"), QStringLiteral("/recordings/rec/lost")},
+                   [] { return Expected<StreamData>(makeError(QStringLiteral("gone.athlos: no such file"))); }));
     }
     Expected<RunOutcome> run(const QString& input, QVariantMap params = {}) {
-        return runProcessor(*project_, processor_, RunRequest{processor_.id(), {input}, QStringLiteral("rec/out"), params});
+        return runProcessor(*project_, processor_,
+                            RunRequest{processor_.id(), {input}, QStringLiteral("rec/out"), params});
     }
     QTemporaryDir dir_;
     std::unique_ptr<Project> project_;
@@ -100,8 +106,9 @@ TEST_F(ProcessorSdk, DefaultValidateRunsPrepare) {
 TEST_F(ProcessorSdk, UnreadableSamplesNameProcessorInputAndStream) {
     auto outcome = run(QStringLiteral("rec/lost"));
     ASSERT_FALSE(outcome.ok());
-    EXPECT_EQ(outcome.message(),
-              QStringLiteral("test-double: input 'rec/lost' (signal): cannot read its samples: gone.athlos: no such file"));
+    EXPECT_EQ(
+        outcome.message(),
+        QStringLiteral("test-double: input 'rec/lost' (signal): cannot read its samples: gone.athlos: no such file"));
 }
 
 TEST_F(ProcessorSdk, DerivedStreamKeepsDescriptionAndGetsFreshProvenance) {
@@ -129,11 +136,12 @@ TEST(ProcessorSdkStreams, OutputStreamOnTheInputTimeAxis) {
     EXPECT_EQ(d.columns, 2);
     EXPECT_EQ(d.values, std::vector<double>(8, 0.0));
     d.at(3, 1) = 1.5;
-    const Stream s = outputStream(QStringLiteral("orientation"), QStringLiteral("ENU"),
-                                  columnsOf({"a", "b"}, {"rad"}), std::move(d), QJsonObject{{"mode", "6d"}});
+    const Stream s = outputStream(QStringLiteral("orientation"), QStringLiteral("ENU"), columnsOf({"a", "b"}, {"rad"}),
+                                  std::move(d), QJsonObject{{"mode", "6d"}});
     EXPECT_EQ(s.info().kind, QStringLiteral("orientation"));
     EXPECT_EQ(s.info().frame, QStringLiteral("ENU"));
-    EXPECT_EQ(s.info().columns, (Columns{{QStringLiteral("a"), QStringLiteral("rad")}, {QStringLiteral("b"), QStringLiteral("1")}}));
+    EXPECT_EQ(s.info().columns,
+              (Columns{{QStringLiteral("a"), QStringLiteral("rad")}, {QStringLiteral("b"), QStringLiteral("1")}}));
     EXPECT_EQ(s.info().rows, 4);
     EXPECT_DOUBLE_EQ(s.info().tEnd, 0.3);
     EXPECT_TRUE(s.info().provenance.processorId.isEmpty());

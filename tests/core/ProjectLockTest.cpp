@@ -16,8 +16,9 @@ protected:
         test::quietHdf5();
         path_ = dir_.filePath(QStringLiteral("team.athlos"));
         auto project = Project::create(path_, QStringLiteral("football"));
-        project->putStream(QStringLiteral("match/p1"),
-                           test::makeStream(QStringLiteral("lps-position"), {{"x", "m"}, {"y", "m"}}, test::makeSamples(300, 2, 5)));
+        project->putStream(
+            QStringLiteral("match/p1"),
+            test::makeStream(QStringLiteral("lps-position"), {{"x", "m"}, {"y", "m"}}, test::makeSamples(300, 2, 5)));
         ASSERT_TRUE(project->save().ok());
     }
     QTemporaryDir dir_;

@@ -122,7 +122,11 @@ TEST_F(ProjectStoreTest, RoundTripsEveryKindOfContent) {
     EXPECT_EQ(samples(*opened->stream(QStringLiteral("run1/events")))->rows(), 7u);
     EXPECT_EQ(opened->stream(QStringLiteral("run2/lps"))->info().rows, 300000);
     EXPECT_EQ(opened->table(QStringLiteral("run1/beacons"))->columns[0].texts.at(1), QStringLiteral("Bäke 2"));
-    EXPECT_EQ(opened->stream(QStringLiteral("run2/filtered"))->info().provenance.parameters.value(QStringLiteral("order")).toInt(), 4);
+    EXPECT_EQ(opened->stream(QStringLiteral("run2/filtered"))
+                  ->info()
+                  .provenance.parameters.value(QStringLiteral("order"))
+                  .toInt(),
+              4);
 }
 
 TEST_F(ProjectStoreTest, EmptyProjectRoundTrips) {
@@ -218,8 +222,8 @@ TEST_F(ProjectStoreTest, CancelledSaveLeavesTheFileUntouched) {
     const QByteArray before = fileBytes(path_);
     auto opened = reopen(path_);
     ASSERT_TRUE(opened);
-    opened->putStream(QStringLiteral("run3/big"), test::makeStream(QStringLiteral("imu"), test::imuColumns(),
-                                                                   test::makeSamples(400000, 6, 9)));
+    opened->putStream(QStringLiteral("run3/big"),
+                      test::makeStream(QStringLiteral("imu"), test::imuColumns(), test::makeSamples(400000, 6, 9)));
     CancelToken token;
     int reports = 0;
     double cancelledAt = -1;
@@ -253,7 +257,8 @@ TEST_F(ProjectStoreTest, FailedWriteLeavesNoTemporaryFile) {
     auto opened = reopen(path_);
     ASSERT_TRUE(opened);
     // Samples with two columns under three column names: the store refuses while writing.
-    Stream bad = test::makeStream(QStringLiteral("imu"), {{"a", "1"}, {"b", "1"}, {"c", "1"}}, test::makeSamples(10, 2, 5));
+    Stream bad =
+        test::makeStream(QStringLiteral("imu"), {{"a", "1"}, {"b", "1"}, {"c", "1"}}, test::makeSamples(10, 2, 5));
     opened->putStream(QStringLiteral("run1/zz-bad"), std::move(bad));
     const Status saved = opened->save();
     ASSERT_FALSE(saved.ok());
@@ -264,7 +269,8 @@ TEST_F(ProjectStoreTest, FailedWriteLeavesNoTemporaryFile) {
 
 TEST_F(ProjectStoreTest, RefusesNamesThatAreNotHdf5Links) {
     auto project = Project::create(path_);
-    project->putStream(QStringLiteral("run1/a/b"), test::makeStream(QStringLiteral("imu"), {{"x", "m"}}, test::makeSamples(3, 1, 1)));
+    project->putStream(QStringLiteral("run1/a/b"),
+                       test::makeStream(QStringLiteral("imu"), {{"x", "m"}}, test::makeSamples(3, 1, 1)));
     const QString target = dir_.filePath(QStringLiteral("direct.athlos"));
     const Status written = ProjectFile::write(*project, target);
     ASSERT_FALSE(written.ok());

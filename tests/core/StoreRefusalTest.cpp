@@ -39,7 +39,8 @@ protected:
 
 // Raw HDF5 edits of a saved project.
 struct RawFile {
-    explicit RawFile(const QString& path) : id(H5Fopen(QFile::encodeName(path).constData(), H5F_ACC_RDWR, H5P_DEFAULT)) {}
+    explicit RawFile(const QString& path)
+        : id(H5Fopen(QFile::encodeName(path).constData(), H5F_ACC_RDWR, H5P_DEFAULT)) {}
     ~RawFile() {
         if (id >= 0) H5Fclose(id);
     }

@@ -20,8 +20,9 @@ std::unique_ptr<Project> makeSmallProject(const QString& path) {
     project->meta().extra = QJsonObject{{QStringLiteral("venue"), QStringLiteral("Twickenham")}};
     project->putStream(QStringLiteral("run1/imu"),
                        test::makeStream(QStringLiteral("imu"), test::imuColumns(), test::makeSamples(2000, 6, 11)));
-    project->putStream(QStringLiteral("run1/lps"),
-                       test::makeStream(QStringLiteral("lps-position"), {{"x", "m"}, {"y", "m"}}, test::makeSamples(500, 2, 12)));
+    project->putStream(
+        QStringLiteral("run1/lps"),
+        test::makeStream(QStringLiteral("lps-position"), {{"x", "m"}, {"y", "m"}}, test::makeSamples(500, 2, 12)));
     Table beacons;
     beacons.kind = QStringLiteral("beacons");
     beacons.columns = {{QStringLiteral("id"), {}, true, {}, {QStringLiteral("B1"), QStringLiteral("Bäke 2")}},
@@ -108,14 +109,15 @@ TEST_F(StoreRobustnessTest, Version2HasFixedStringsChecksumsAndTheNewFileFormat)
     EXPECT_EQ(visit.variableStrings, 0);
     EXPECT_GT(visit.datasets, 6);
     EXPECT_EQ(visit.checksummed, visit.datasets);  // every non-empty dataset
-    EXPECT_GE(superblockVersion(path_), 3u);        // HDF5 1.10 format: metadata checksums
+    EXPECT_GE(superblockVersion(path_), 3u);       // HDF5 1.10 format: metadata checksums
     auto opened = Project::open(path_);
     ASSERT_TRUE(opened.ok()) << opened.message().toStdString();
     EXPECT_EQ((*opened)->meta().formatVersion, 2);
     const Table* beacons = (*opened)->table(QStringLiteral("run1/beacons"));
     ASSERT_TRUE(beacons);
     EXPECT_EQ(beacons->columns[0].texts, (QStringList{QStringLiteral("B1"), QStringLiteral("Bäke 2")}));
-    EXPECT_EQ((*opened)->recording(QStringLiteral("run1"))->annotations, makeSmallProject(path_)->recording(QStringLiteral("run1"))->annotations);
+    EXPECT_EQ((*opened)->recording(QStringLiteral("run1"))->annotations,
+              makeSmallProject(path_)->recording(QStringLiteral("run1"))->annotations);
     EXPECT_EQ((*opened)->meta().extra.value(QStringLiteral("venue")).toString(), QStringLiteral("Twickenham"));
 }
 
@@ -158,7 +160,8 @@ TEST_F(StoreRobustnessTest, DamagedSampleChunkIsDetectedByItsChecksum) {
     auto opened = Project::open(path_);
     ASSERT_FALSE(opened.ok());
     EXPECT_TRUE(opened.message().contains(QStringLiteral("match.athlos"))) << opened.message().toStdString();
-    EXPECT_TRUE(opened.message().contains(QStringLiteral("checksum"), Qt::CaseInsensitive)) << opened.message().toStdString();
+    EXPECT_TRUE(opened.message().contains(QStringLiteral("checksum"), Qt::CaseInsensitive))
+        << opened.message().toStdString();
 }
 
 // Mutation fuzzing as a unit test: a few hundred files with 1–24 random bytes replaced. Each is
@@ -182,7 +185,8 @@ TEST_F(StoreRobustnessTest, RandomlyDamagedFilesAreRefusedOrReadNeverCrash) {
         auto project = Project::open(mutant);
         if (!project) {
             ++refused;
-            EXPECT_TRUE(project.message().contains(QStringLiteral("mutant-%1.athlos").arg(trial))) << project.message().toStdString();
+            EXPECT_TRUE(project.message().contains(QStringLiteral("mutant-%1.athlos").arg(trial)))
+                << project.message().toStdString();
             continue;
         }
         ++opened;
@@ -260,7 +264,8 @@ void writeVersion1Project(const QString& path) {
     writeVariableString(stream, "type", "stream");
     writeVariableString(stream, "kind", "imu");
     writeVariableString(stream, "frame", "sensor");
-    writeVariableString(stream, "columns", "[{\"name\":\"acc_x\",\"unit\":\"m/s^2\"},{\"name\":\"acc_y\",\"unit\":\"m/s^2\"}]");
+    writeVariableString(stream, "columns",
+                        "[{\"name\":\"acc_x\",\"unit\":\"m/s^2\"},{\"name\":\"acc_y\",\"unit\":\"m/s^2\"}]");
     writeVariableString(stream, "attributes", "{}");
     writeVariableString(stream, "provenance", "{}");
     const long long rows = 4;
@@ -294,7 +299,8 @@ TEST_F(StoreRobustnessTest, Version1ProjectIsReadAndUpgradedBySaving) {
         Project& project = **opened;
         EXPECT_EQ(project.meta().formatVersion, 1);
         EXPECT_EQ(project.meta().extra.value(QStringLiteral("venue")).toString(), QStringLiteral("Bislett"));
-        EXPECT_EQ(project.recording(QStringLiteral("run1"))->metadata.value(QStringLiteral("athlete")).toString(), QStringLiteral("Zoë"));
+        EXPECT_EQ(project.recording(QStringLiteral("run1"))->metadata.value(QStringLiteral("athlete")).toString(),
+                  QStringLiteral("Zoë"));
         ASSERT_EQ(project.recording(QStringLiteral("run1"))->annotations.size(), 1u);
         EXPECT_EQ(project.recording(QStringLiteral("run1"))->annotations[0].annotator, QStringLiteral("anna"));
         ASSERT_TRUE(project.save().ok());
@@ -335,7 +341,8 @@ TEST_F(StoreRobustnessTest, DamagedGlobalHeapOfAVersion1FileIsRefusedNotACrash) 
         auto project = Project::open(mutant);
         if (!project) {
             ++refused;
-            EXPECT_TRUE(project.message().contains(QStringLiteral("heap-%1.athlos").arg(trial))) << project.message().toStdString();
+            EXPECT_TRUE(project.message().contains(QStringLiteral("heap-%1.athlos").arg(trial)))
+                << project.message().toStdString();
         }
     }
     EXPECT_GT(refused, 10);

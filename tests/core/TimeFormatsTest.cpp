@@ -22,8 +22,7 @@ qint64 isoNs(const char* text) {
 
 void expectTimes(const std::vector<double>& t, const std::vector<double>& expected) {
     ASSERT_EQ(t.size(), expected.size());
-    for (size_t i = 0; i < t.size(); ++i)
-        EXPECT_NEAR(t[i], expected[i], 1e-12) << "sample " << i;
+    for (size_t i = 0; i < t.size(); ++i) EXPECT_NEAR(t[i], expected[i], 1e-12) << "sample " << i;
 }
 
 class TimeImport : public ::testing::Test {
@@ -68,7 +67,8 @@ TEST(TimeFormats, NamesAndErrors) {
     EXPECT_EQ(parseTimeFormat("uptime_ms")->kind, TimeKind::Uptime);
     const auto bad = parseTimeFormat("fortnights");
     ASSERT_FALSE(bad.ok());
-    EXPECT_TRUE(bad.message().contains("unknown time format 'fortnights' (accepted: s, ms")) << qPrintable(bad.message());
+    EXPECT_TRUE(bad.message().contains("unknown time format 'fortnights' (accepted: s, ms"))
+        << qPrintable(bad.message());
     EXPECT_FALSE(parseTimeFormat("m").ok());  // metres are no time
 }
 
@@ -86,7 +86,8 @@ TEST(TimeFormats, TimeColumnSpecSplitsAtTheFormat) {
 TEST(TimeFormats, ParsesAndFormatsInstants) {
     EXPECT_EQ(formatUtc(0), QStringLiteral("1970-01-01T00:00:00Z"));
     EXPECT_EQ(formatUtc(isoNs("2024-02-29T23:59:59.5Z")), QStringLiteral("2024-02-29T23:59:59.500Z"));
-    EXPECT_EQ(formatUtc(isoNs("2024-05-01 13:45:01.123456789+02:00")), QStringLiteral("2024-05-01T11:45:01.123456789Z"));
+    EXPECT_EQ(formatUtc(isoNs("2024-05-01 13:45:01.123456789+02:00")),
+              QStringLiteral("2024-05-01T11:45:01.123456789Z"));
     EXPECT_EQ(formatUtc(isoNs("2024-05-01T13:45-0130")), QStringLiteral("2024-05-01T15:15:00Z"));
     EXPECT_EQ(formatUtc(-1000000), QStringLiteral("1969-12-31T23:59:59.999Z"));
     qint64 ns = 0;
@@ -110,8 +111,9 @@ TEST(TimeFormats, ParsesAndFormatsInstants) {
 }
 
 TEST_F(TimeImport, ClockTimesTakeTheDateFromAColumn) {
-    const auto r = import("Date,Time,acc_x\n2024-05-01,23:59:59.500,1\n2024-05-02,00:00:00.000,2\n2024-05-02,00:00:00.500,3\n",
-                          "Time", "hh:mm:ss.fff");
+    const auto r =
+        import("Date,Time,acc_x\n2024-05-01,23:59:59.500,1\n2024-05-02,00:00:00.000,2\n2024-05-02,00:00:00.500,3\n",
+               "Time", "hh:mm:ss.fff");
     ASSERT_TRUE(r.ok()) << qPrintable(r.message());
     expectTimes(times(*r), {0.0, 0.5, 1.0});
     EXPECT_EQ(attribute(*r, "t0_utc"), QStringLiteral("2024-05-01T23:59:59.500Z"));
@@ -182,13 +184,16 @@ TEST_F(TimeImport, DurationsAndUptimeKeepTheirOrigin) {
     start = QStringLiteral("not a time");
     const auto bad = import("t,acc_x\n0,1\n1,2\n", "", "");
     ASSERT_FALSE(bad.ok());
-    EXPECT_TRUE(bad.message().contains("start: 'not a time' is not an ISO 8601 date-time")) << qPrintable(bad.message());
+    EXPECT_TRUE(bad.message().contains("start: 'not a time' is not an ISO 8601 date-time"))
+        << qPrintable(bad.message());
 }
 
 TEST_F(TimeImport, HeaderUnitIsATimeFormatToo) {
-    const auto r = import("Time (hh:mm:ss.fff),Date,acc_x\n10:00:00.000,2024-05-01,1\n10:00:00.020,2024-05-01,2\n", "", "");
+    const auto r =
+        import("Time (hh:mm:ss.fff),Date,acc_x\n10:00:00.000,2024-05-01,1\n10:00:00.020,2024-05-01,2\n", "", "");
     ASSERT_FALSE(r.ok());  // the time column is not 't'
-    const auto named = import("t (hh:mm:ss.fff),Date,acc_x\n10:00:00.000,2024-05-01,1\n10:00:00.020,2024-05-01,2\n", "", "");
+    const auto named =
+        import("t (hh:mm:ss.fff),Date,acc_x\n10:00:00.000,2024-05-01,1\n10:00:00.020,2024-05-01,2\n", "", "");
     ASSERT_TRUE(named.ok()) << qPrintable(named.message());
     EXPECT_EQ(attribute(*named, "t0_utc"), QStringLiteral("2024-05-01T10:00:00Z"));
 }
@@ -196,20 +201,24 @@ TEST_F(TimeImport, HeaderUnitIsATimeFormatToo) {
 TEST_F(TimeImport, BadCellsNameFileLineAndColumn) {
     auto r = import("Date,Time,acc_x\n2024-05-01,10:00:00,1\n2024-05-01,10:0x:01,2\n", "Time", "hh:mm:ss");
     ASSERT_FALSE(r.ok());
-    EXPECT_TRUE(r.message().endsWith("f.csv:3:2 (column 'Time'): '10:0x:01' is not a clock time hh:mm:ss[.fff] (time format 'hh:mm:ss')"))
+    EXPECT_TRUE(r.message().endsWith(
+        "f.csv:3:2 (column 'Time'): '10:0x:01' is not a clock time hh:mm:ss[.fff] (time format 'hh:mm:ss')"))
         << qPrintable(r.message());
     r = import("Date,Time,acc_x\n2024-05-01,10:00:00,1\n2024-13-01,10:00:01,2\n", "Time", "hh:mm:ss");
     ASSERT_FALSE(r.ok());
-    EXPECT_TRUE(r.message().endsWith("f.csv:3:1 (column 'Date'): '2024-13-01' is not a date YYYY-MM-DD")) << qPrintable(r.message());
+    EXPECT_TRUE(r.message().endsWith("f.csv:3:1 (column 'Date'): '2024-13-01' is not a date YYYY-MM-DD"))
+        << qPrintable(r.message());
     r = import("when,acc_x\n2024-05-01T10:00:00Z,1\nsoon,2\n", "when", "iso");
     ASSERT_FALSE(r.ok());
-    EXPECT_TRUE(r.message().contains("f.csv:3:1 (column 'when'): 'soon' is not an ISO 8601 date-time")) << qPrintable(r.message());
+    EXPECT_TRUE(r.message().contains("f.csv:3:1 (column 'when'): 'soon' is not an ISO 8601 date-time"))
+        << qPrintable(r.message());
     r = import("stamp,acc_x\n1714557600000,1\n,2\n", "stamp", "unix_ms");
     ASSERT_FALSE(r.ok());
     EXPECT_TRUE(r.message().contains("f.csv:3:1 (column 'stamp'): empty time")) << qPrintable(r.message());
     r = import("stamp,acc_x\n1714557600000,1\nabc,2\n", "stamp", "unix_ms");
     ASSERT_FALSE(r.ok());
-    EXPECT_TRUE(r.message().contains("f.csv:3:1 (column 'stamp'): 'abc' is not a number (time format 'unix_ms')")) << qPrintable(r.message());
+    EXPECT_TRUE(r.message().contains("f.csv:3:1 (column 'stamp'): 'abc' is not a number (time format 'unix_ms')"))
+        << qPrintable(r.message());
     r = import("stamp,acc_x\n1,1\n2,2\n", "stamp", "furlongs");
     ASSERT_FALSE(r.ok());
     EXPECT_TRUE(r.message().contains("unknown time format 'furlongs'")) << qPrintable(r.message());
@@ -229,11 +238,13 @@ TEST_F(TimeImport, AbsurdSamplingRateWarns) {
     auto r = import(slow, "", "");
     ASSERT_TRUE(r.ok());
     ASSERT_EQ(r->warnings.size(), 1);
-    EXPECT_TRUE(r->warnings[0].contains("samples are 7.2e+03 s apart (2 h); is the time format right?")) << qPrintable(r->warnings[0]);
+    EXPECT_TRUE(r->warnings[0].contains("samples are 7.2e+03 s apart (2 h); is the time format right?"))
+        << qPrintable(r->warnings[0]);
     r = import(fast, "t", "us");
     ASSERT_TRUE(r.ok());
     ASSERT_EQ(r->warnings.size(), 1);
-    EXPECT_TRUE(r->warnings[0].contains("with time format 'us' the samples are 1e-05 s apart (100 kHz)")) << qPrintable(r->warnings[0]);
+    EXPECT_TRUE(r->warnings[0].contains("with time format 'us' the samples are 1e-05 s apart (100 kHz)"))
+        << qPrintable(r->warnings[0]);
     r = import(fast, "t", "ms");  // 100 Hz: fine
     ASSERT_TRUE(r.ok());
     EXPECT_TRUE(r->warnings.isEmpty());

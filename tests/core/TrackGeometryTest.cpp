@@ -27,7 +27,7 @@ TEST(TrackGeometry, Iaaf400mLapLengthsAndLanes) {
 
 TEST(TrackGeometry, HeadingOnStraightsAndBends) {
     const TrackGeometry t = TrackGeometry::iaaf400m();
-    EXPECT_NEAR(t.headingAt({0, -36.8}), 0.0, 1e-12);  // home straight towards +x
+    EXPECT_NEAR(t.headingAt({0, -36.8}), 0.0, 1e-12);                               // home straight towards +x
     EXPECT_NEAR(angleDiff(t.headingAt({10, 36.8}), std::numbers::pi), 0.0, 1e-12);  // back straight
     EXPECT_DOUBLE_EQ(t.curvatureAt({0, -36.8}), 0.0);
     // Bend 1 (centre (42.195, 0)): tangent of a counter-clockwise circle, curvature 1/ρ.

@@ -37,7 +37,8 @@ TEST(TrackPlacement, OvalPoseFromTheHomeStraight) {
 
     auto refused = athlos::placeOval(TrackGeometry::iaaf400m(), a, a + Vector2d(70.0, 0.0), 1.0);
     ASSERT_FALSE(refused.ok());
-    EXPECT_TRUE(refused.message().contains("the home straight of 'iaaf-400m' is 84.39 m")) << qPrintable(refused.message());
+    EXPECT_TRUE(refused.message().contains("the home straight of 'iaaf-400m' is 84.39 m"))
+        << qPrintable(refused.message());
     EXPECT_TRUE(refused.message().contains("max_residual 1 m")) << qPrintable(refused.message());
     EXPECT_FALSE(athlos::placeOval(TrackGeometry::iaaf400m(), a, a, 1.0).ok());
 }
@@ -47,6 +48,8 @@ TEST(TrackPlacement, PolylineFromPoints) {
     ASSERT_TRUE(placed.ok());
     EXPECT_EQ(placed->track.kind(), TrackGeometry::Kind::Polyline);
     EXPECT_NEAR(placed->track.referenceLength(), 100.0 + 50.0 + std::hypot(100.0, 50.0), 1e-9);
-    EXPECT_TRUE(athlos::placePolyline({{0, 0}}, false, "x").message().contains("points: a polyline needs at least 2 points"));
-    EXPECT_TRUE(athlos::placePolyline({{0, 0}, {0, 0}}, false, "x").message().contains("points: points 1 and 2 coincide"));
+    EXPECT_TRUE(
+        athlos::placePolyline({{0, 0}}, false, "x").message().contains("points: a polyline needs at least 2 points"));
+    EXPECT_TRUE(
+        athlos::placePolyline({{0, 0}, {0, 0}}, false, "x").message().contains("points: points 1 and 2 coincide"));
 }

@@ -57,7 +57,7 @@ TEST(Units, ConvertsToSi) {
     check("rad", "deg", 180.0 / std::numbers::pi);
     check("K", "degC", 1.0, -273.15);
     check("km/h", "m/s", 1.0 / 3.6);
-    check("", "rad/s", 1.0);        // no unit given: already in the target
+    check("", "rad/s", 1.0);  // no unit given: already in the target
     check("rad/s", "rad/s", 1.0);
 }
 
@@ -73,10 +73,16 @@ TEST(Units, RefusesIncompatibleAndUnknownUnits) {
 }
 
 TEST(StreamKinds, DefaultNamesFramesAndUnits) {
-    struct Expect { const char* kind; const char* name; const char* frame; bool table; };
-    for (const auto& e : {Expect{"imu", "imu", "sensor", false}, Expect{"lps-position", "lps", "lps", false},
-                          Expect{"lps-tdoa", "tdoa", "lps", false}, Expect{"gnss", "gnss", "WGS84", false},
-                          Expect{"beacons", "beacons", "lps", true}, Expect{"orientation", "orientation", "ENU", false}}) {
+    struct Expect {
+        const char* kind;
+        const char* name;
+        const char* frame;
+        bool table;
+    };
+    for (const auto& e :
+         {Expect{"imu", "imu", "sensor", false}, Expect{"lps-position", "lps", "lps", false},
+          Expect{"lps-tdoa", "tdoa", "lps", false}, Expect{"gnss", "gnss", "WGS84", false},
+          Expect{"beacons", "beacons", "lps", true}, Expect{"orientation", "orientation", "ENU", false}}) {
         const StreamKind* k = findStreamKind(e.kind);
         ASSERT_NE(k, nullptr) << e.kind;
         EXPECT_EQ(k->defaultName, e.name);

@@ -50,13 +50,20 @@ private:
 
 TEST_F(Vendor, StatsportsWholeSessionAsGnss) {
     // A session over midnight at 10 Hz: every row imports, t runs on past 00:00.
-    QByteArray text = "Player Display Name,Time,Elapsed Time (s),Lat,Lon,Speed (m/s),Instantaneous Acceleration Impulse,Heart Rate (bpm)\n";
+    QByteArray text =
+        "Player Display Name,Time,Elapsed Time (s),Lat,Lon,Speed (m/s),Instantaneous Acceleration Impulse,Heart Rate "
+        "(bpm)\n";
     for (int i = 0; i < 30; ++i) {
         const int tenths = 23 * 36000 + 59 * 600 + 590 + i;  // from 23:59:59.0
         const int s = (tenths / 10) % 86400;
         text += QStringLiteral("Anna Berg,%1:%2:%3.%4,%5,53.2707,-6.2011,%6,0.1,%7\n")
-                    .arg(s / 3600, 2, 10, QLatin1Char('0')).arg(s / 60 % 60, 2, 10, QLatin1Char('0'))
-                    .arg(s % 60, 2, 10, QLatin1Char('0')).arg(tenths % 10).arg(i / 10.0).arg(3.5).arg(150)
+                    .arg(s / 3600, 2, 10, QLatin1Char('0'))
+                    .arg(s / 60 % 60, 2, 10, QLatin1Char('0'))
+                    .arg(s % 60, 2, 10, QLatin1Char('0'))
+                    .arg(tenths % 10)
+                    .arg(i / 10.0)
+                    .arg(3.5)
+                    .arg(150)
                     .toLatin1();
     }
     const auto r = import("session.csv", text, "statsports");
@@ -115,7 +122,8 @@ TEST_F(Vendor, KinexonPlayersBecomeStreams) {
                             "1714557600000,102,9,Ben Lee,-5.0,abc,0.0,2.0\n",
                             "kinexon");
     ASSERT_FALSE(bad.ok());
-    EXPECT_TRUE(bad.message().contains("kinexon-bad.csv:3:6 (column 'y in m'): 'abc' is not a number")) << qPrintable(bad.message());
+    EXPECT_TRUE(bad.message().contains("kinexon-bad.csv:3:6 (column 'y in m'): 'abc' is not a number"))
+        << qPrintable(bad.message());
 }
 
 TEST_F(Vendor, MetricaBothHeaderRows) {
@@ -152,7 +160,8 @@ TEST_F(Vendor, Gpx) {
     <trkpt lat="47.3701" lon="8.5401"><ele>408.5</ele><time>2024-05-01T06:00:01Z</time></trkpt>
   </trkseg></trk>
 </gpx>
-)", "gpx");
+)",
+                          "gpx");
     ASSERT_TRUE(r.ok()) << qPrintable(r.message());
     const Stream& s = stream(*r);
     EXPECT_EQ(columns(s), (QStringList{"lat[deg]", "lon[deg]", "alt[m]", "hr[Hz]", "cad[Hz]"}));
@@ -161,10 +170,16 @@ TEST_F(Vendor, Gpx) {
     EXPECT_EQ(d->t, (std::vector<double>{0.0, 1.0}));
     EXPECT_EQ(d->at(0, 3), 2.0);
     EXPECT_TRUE(std::isnan(d->at(1, 3)));
-    const auto bad = import("bad.gpx", "<gpx>\n<trk><trkseg>\n  <trkpt lat=\"47.37\" lon=\"east\"><time>2024-05-01T06:00:00Z</time></trkpt>\n</trkseg></trk></gpx>\n", "gpx");
+    const auto bad = import("bad.gpx",
+                            "<gpx>\n<trk><trkseg>\n  <trkpt lat=\"47.37\" "
+                            "lon=\"east\"><time>2024-05-01T06:00:00Z</time></trkpt>\n</trkseg></trk></gpx>\n",
+                            "gpx");
     ASSERT_FALSE(bad.ok());
-    EXPECT_TRUE(bad.message().contains("bad.gpx:3:") && bad.message().contains("lon 'east' is not a longitude")) << qPrintable(bad.message());
-    const auto untimed = import("untimed.gpx", "<gpx>\n<trk><trkseg><trkpt lat=\"1\" lon=\"2\"/></trkseg></trk></gpx>\n", "gpx");
+    EXPECT_TRUE(bad.message().contains("bad.gpx:3:") && bad.message().contains("lon 'east' is not a longitude"))
+        << qPrintable(bad.message());
+    const auto untimed =
+        import("untimed.gpx", "<gpx>\n<trk><trkseg><trkpt lat=\"1\" lon=\"2\"/></trkseg></trk></gpx>\n", "gpx");
     ASSERT_FALSE(untimed.ok());
-    EXPECT_TRUE(untimed.message().contains("untimed.gpx:2:") && untimed.message().contains("has no <time>")) << qPrintable(untimed.message());
+    EXPECT_TRUE(untimed.message().contains("untimed.gpx:2:") && untimed.message().contains("has no <time>"))
+        << qPrintable(untimed.message());
 }

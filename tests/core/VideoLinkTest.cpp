@@ -14,8 +14,7 @@ using namespace athlos;
 
 namespace {
 
-TEST(VideoLinkTest, OffsetFromAnEventPairMapsBothWays)
-{
+TEST(VideoLinkTest, OffsetFromAnEventPairMapsBothWays) {
     // A clap at 3.2 s in the video appears as an acceleration spike at 15.7 s in the recording.
     const double offset = VideoLink::offsetFromEvent(3.2, 15.7);
     EXPECT_NEAR(offset, 12.5, 1e-12);
@@ -27,8 +26,7 @@ TEST(VideoLinkTest, OffsetFromAnEventPairMapsBothWays)
     EXPECT_NEAR(VideoLink::offsetFromEvent(10.0, 4.0), -6.0, 1e-12);
 }
 
-TEST(VideoLinkTest, AttachStoresRelativePathAndSurvivesSaveAndReopen)
-{
+TEST(VideoLinkTest, AttachStoresRelativePathAndSurvivesSaveAndReopen) {
     QTemporaryDir dir;
     ASSERT_TRUE(QDir(dir.path()).mkpath(QStringLiteral("clips")));
     const QString video = dir.filePath(QStringLiteral("clips/run.avi"));
@@ -79,8 +77,7 @@ TEST(VideoLinkTest, AttachStoresRelativePathAndSurvivesSaveAndReopen)
     EXPECT_FALSE(VideoLink::detach(**reopened, QStringLiteral("rec")));
 }
 
-TEST(VideoLinkTest, ProjectMovedAloneFallsBackToAbsolutePath)
-{
+TEST(VideoLinkTest, ProjectMovedAloneFallsBackToAbsolutePath) {
     QTemporaryDir dir, other;
     const QString video = dir.filePath(QStringLiteral("v.avi"));
     FrameCodeVideo spec;
@@ -95,8 +92,7 @@ TEST(VideoLinkTest, ProjectMovedAloneFallsBackToAbsolutePath)
     EXPECT_EQ(*resolved, QFileInfo(video).absoluteFilePath());
 }
 
-TEST(VideoLinkTest, AttachRefusesBadInput)
-{
+TEST(VideoLinkTest, AttachRefusesBadInput) {
     QTemporaryDir dir;
     auto project = Project::create(dir.filePath(QStringLiteral("p.athlos")));
     project->ensureRecording(QStringLiteral("rec"));

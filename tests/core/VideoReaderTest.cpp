@@ -22,8 +22,7 @@ struct Codec {
 
 class VideoReaderCodecTest : public ::testing::TestWithParam<Codec> {};
 
-TEST_P(VideoReaderCodecTest, RandomSeeksReturnTheExactFrame)
-{
+TEST_P(VideoReaderCodecTest, RandomSeeksReturnTheExactFrame) {
     QTemporaryDir dir;
     ASSERT_TRUE(dir.isValid());
     const QString path = dir.filePath(QStringLiteral("pattern") + QLatin1String(GetParam().extension));
@@ -69,8 +68,7 @@ TEST_P(VideoReaderCodecTest, RandomSeeksReturnTheExactFrame)
     EXPECT_FALSE(r.frameAt(spec.frames));
 }
 
-TEST_P(VideoReaderCodecTest, SequentialReadingDoesNotSeek)
-{
+TEST_P(VideoReaderCodecTest, SequentialReadingDoesNotSeek) {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("seq") + QLatin1String(GetParam().extension));
     FrameCodeVideo spec;
@@ -101,16 +99,14 @@ INSTANTIATE_TEST_SUITE_P(Codecs, VideoReaderCodecTest,
                                            Codec{"FFV1", ".avi"}),
                          [](const auto& info) { return std::string(info.param.fourcc); });
 
-TEST(VideoReaderTest, MissingFileNamesTheFile)
-{
+TEST(VideoReaderTest, MissingFileNamesTheFile) {
     auto reader = VideoReader::open(QStringLiteral("/nonexistent/clip.mp4"));
     ASSERT_FALSE(reader);
     EXPECT_TRUE(reader.message().contains(QLatin1String("/nonexistent/clip.mp4"))) << qPrintable(reader.message());
     EXPECT_TRUE(reader.message().contains(QLatin1String("does not exist")));
 }
 
-TEST(VideoReaderTest, GarbageIsNotAVideo)
-{
+TEST(VideoReaderTest, GarbageIsNotAVideo) {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("garbage.mp4"));
     QFile f(path);
@@ -123,8 +119,7 @@ TEST(VideoReaderTest, GarbageIsNotAVideo)
     EXPECT_TRUE(reader.message().contains(QLatin1String("not a video"))) << qPrintable(reader.message());
 }
 
-TEST(VideoReaderTest, UnknownCodecIsNamed)
-{
+TEST(VideoReaderTest, UnknownCodecIsNamed) {
     // An AVI whose video FourCC no FFmpeg decoder knows: the MJPG tags patched to "ZZZZ".
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("odd.avi"));
@@ -150,8 +145,7 @@ TEST(VideoReaderTest, UnknownCodecIsNamed)
     EXPECT_TRUE(reader.message().contains(QLatin1String("no decoder"))) << qPrintable(reader.message());
 }
 
-TEST(VideoReaderTest, FpsOverrideScalesTimeNotFrames)
-{
+TEST(VideoReaderTest, FpsOverrideScalesTimeNotFrames) {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("slow.avi"));
     FrameCodeVideo spec;

@@ -15,8 +15,9 @@
 namespace athlos::fuzz {
 
 inline const QString& scratchDir() {
-    static QTemporaryDir dir(QDir(QDir(QStringLiteral("/dev/shm")).exists() ? QStringLiteral("/dev/shm") : QDir::tempPath())
-                                 .filePath(QStringLiteral("athlos-fuzz-XXXXXX")));
+    static QTemporaryDir dir(
+        QDir(QDir(QStringLiteral("/dev/shm")).exists() ? QStringLiteral("/dev/shm") : QDir::tempPath())
+            .filePath(QStringLiteral("athlos-fuzz-XXXXXX")));
     static const QString path = [] {
         if (!dir.isValid()) std::abort();  // no place for inputs: nothing can be fuzzed
         return dir.path();

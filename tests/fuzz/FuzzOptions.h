@@ -20,12 +20,18 @@ inline ImportOptions optionsFromInput(const QByteArray& input) {
     for (const QString& item : line.split(QLatin1Char(';'), Qt::SkipEmptyParts)) {
         const QString key = item.section(QLatin1Char('='), 0, 0).trimmed();
         const QString value = item.section(QLatin1Char('='), 1).trimmed();
-        if (key == u"kind") options.kind = value;
-        else if (key == u"repair") options.timeRepair = value;
-        else if (key == u"frame") options.frame = value;
-        else if (key == u"time-column") options.timeColumn = value;
-        else if (key == u"time-unit") options.timeUnit = value;
-        else if (key == u"skip") options.columns.push_back({value, {}, {}, true});
+        if (key == u"kind")
+            options.kind = value;
+        else if (key == u"repair")
+            options.timeRepair = value;
+        else if (key == u"frame")
+            options.frame = value;
+        else if (key == u"time-column")
+            options.timeColumn = value;
+        else if (key == u"time-unit")
+            options.timeUnit = value;
+        else if (key == u"skip")
+            options.columns.push_back({value, {}, {}, true});
         else if (key == u"map") {  // source>channel:unit
             ColumnMapping m;
             m.source = value.section(QLatin1Char('>'), 0, 0);

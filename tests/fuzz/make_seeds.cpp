@@ -95,8 +95,10 @@ bool writeProject(const QString& path, bool full) {
         run.metadata = QJsonObject{{"athlete", "Anna Berg"}};
         run.annotations = {annotation("tackle", 0.02), annotation("pass", 0.05)};
         project->annotationClasses() << QStringLiteral("tackle") << QStringLiteral("pass");
-        project->geometry()[QStringLiteral("pitch")] = QJsonObject{{"type", "football"}, {"length", 105}, {"width", 68}};
-        project->pipelineHistory().append(QJsonObject{{"steps", QJsonArray{QJsonObject{{"processor", "butterworth"}}}}});
+        project->geometry()[QStringLiteral("pitch")] =
+            QJsonObject{{"type", "football"}, {"length", 105}, {"width", 68}};
+        project->pipelineHistory().append(
+            QJsonObject{{"steps", QJsonArray{QJsonObject{{"processor", "butterworth"}}}}});
     }
     const Status s = project->save();
     if (!s) std::fprintf(stderr, "%s\n", qUtf8Printable(s.message()));

@@ -46,8 +46,7 @@ struct ScriptedEdit {
     Annotation annotation;
 };
 
-ScriptedEdit scriptedEdit(int k, const Annotations& current)
-{
+ScriptedEdit scriptedEdit(int k, const Annotations& current) {
     ScriptedEdit edit;
     const int n = int(current.size());
     if (k % 11 == 10 && n > 0) {
@@ -71,30 +70,31 @@ ScriptedEdit scriptedEdit(int k, const Annotations& current)
 }
 
 // What the editor does with a scripted edit, applied to a plain list.
-void applyScripted(int k, Annotations& list)
-{
+void applyScripted(int k, Annotations& list) {
     const ScriptedEdit edit = scriptedEdit(k, list);
     switch (edit.kind) {
-    case ScriptedEdit::Kind::Create: {
-        const auto at = std::upper_bound(list.begin(), list.end(), edit.annotation.tStart,
-                                         [](double t, const Annotation& a) { return t < a.tStart; });
-        list.insert(at, edit.annotation);
-        break;
-    }
-    case ScriptedEdit::Kind::Change: list[std::size_t(edit.index)] = edit.annotation; break;
-    case ScriptedEdit::Kind::Remove: list.erase(list.begin() + edit.index); break;
+        case ScriptedEdit::Kind::Create: {
+            const auto at = std::upper_bound(list.begin(), list.end(), edit.annotation.tStart,
+                                             [](double t, const Annotation& a) { return t < a.tStart; });
+            list.insert(at, edit.annotation);
+            break;
+        }
+        case ScriptedEdit::Kind::Change:
+            list[std::size_t(edit.index)] = edit.annotation;
+            break;
+        case ScriptedEdit::Kind::Remove:
+            list.erase(list.begin() + edit.index);
+            break;
     }
 }
 
-Annotations expectedAfter(int edits)
-{
+Annotations expectedAfter(int edits) {
     Annotations list;
     for (int k = 0; k < edits; ++k) applyScripted(k, list);
     return list;
 }
 
-void say(const QByteArray& line)
-{
+void say(const QByteArray& line) {
     // One write per line, flushed: what the parent reads was complete when the child said it.
     std::fputs((line + '\n').constData(), stdout);
     std::fflush(stdout);
@@ -103,8 +103,7 @@ void say(const QByteArray& line)
 // --- the child: an annotating user ------------------------------------------------------------
 
 // Arguments: <project> <settings dir> <autosave every N edits, 0 = never>.
-int runChild(const QStringList& args)
-{
+int runChild(const QStringList& args) {
     if (args.size() < 5) return 2;
     testing::isolateSettings(args[3]);
     const int autosaveEvery = args[4].toInt();
@@ -148,17 +147,23 @@ int runChild(const QStringList& args)
             QElapsedTimer clock;
             clock.start();
             const bool ok = window.autosave();
-            say("autosave-end " + QByteArray::number(done) + ' ' + QByteArray::number(ok ? 1 : 0) + ' '
-                + QByteArray::number(clock.elapsed()));
+            say("autosave-end " + QByteArray::number(done) + ' ' + QByteArray::number(ok ? 1 : 0) + ' ' +
+                QByteArray::number(clock.elapsed()));
             return;
         }
         const Annotations& list = window.project()->recording(kRecording)->annotations;
         const ScriptedEdit edit = scriptedEdit(done, list);
         bool ok = false;
         switch (edit.kind) {
-        case ScriptedEdit::Kind::Create: ok = bool(editor->create(kRecording, edit.annotation)); break;
-        case ScriptedEdit::Kind::Change: ok = bool(editor->change(kRecording, edit.index, edit.annotation)); break;
-        case ScriptedEdit::Kind::Remove: ok = bool(editor->remove(kRecording, edit.index)); break;
+            case ScriptedEdit::Kind::Create:
+                ok = bool(editor->create(kRecording, edit.annotation));
+                break;
+            case ScriptedEdit::Kind::Change:
+                ok = bool(editor->change(kRecording, edit.index, edit.annotation));
+                break;
+            case ScriptedEdit::Kind::Remove:
+                ok = bool(editor->remove(kRecording, edit.index));
+                break;
         }
         if (!ok) {
             say("error edit " + QByteArray::number(done) + " failed");
@@ -211,14 +216,12 @@ private:
     int killsInsideSave_ = 0;
 };
 
-void GuiAnnotationCrashTest::initTestCase()
-{
+void GuiAnnotationCrashTest::initTestCase() {
     QVERIFY(dir_.isValid());
     testing::isolateSettings(dir_.filePath(QStringLiteral("settings")));
 }
 
-QString GuiAnnotationCrashTest::makeProject(const QString& name)
-{
+QString GuiAnnotationCrashTest::makeProject(const QString& name) {
     const QString path = dir_.filePath(name);
     auto project = testing::makeProject(path);
     project->annotationClasses() = kClasses;
@@ -227,8 +230,7 @@ QString GuiAnnotationCrashTest::makeProject(const QString& name)
     return project->save() ? path : QString();
 }
 
-void GuiAnnotationCrashTest::start(Child& child, const QString& project, int autosaveEvery)
-{
+void GuiAnnotationCrashTest::start(Child& child, const QString& project, int autosaveEvery) {
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
     child.process.setProcessEnvironment(env);
@@ -239,22 +241,24 @@ void GuiAnnotationCrashTest::start(Child& child, const QString& project, int aut
     QVERIFY2(child.process.waitForStarted(10000), qPrintable(child.process.errorString()));
 }
 
-void GuiAnnotationCrashTest::parse(Child& child, const QByteArray& raw)
-{
+void GuiAnnotationCrashTest::parse(Child& child, const QByteArray& raw) {
     const QByteArray line = raw.trimmed();
     const QList<QByteArray> words = line.split(' ');
-    if (words.value(0) == "ack") child.acks = words.value(1).toInt();
-    else if (words.value(0) == "autosave-begin") child.autosaveBegins << words.value(1).toInt();
-    else if (words.value(0) == "autosave-running") child.autosaveRunning << words.value(1).toInt();
+    if (words.value(0) == "ack")
+        child.acks = words.value(1).toInt();
+    else if (words.value(0) == "autosave-begin")
+        child.autosaveBegins << words.value(1).toInt();
+    else if (words.value(0) == "autosave-running")
+        child.autosaveRunning << words.value(1).toInt();
     else if (words.value(0) == "autosave-end") {
         child.autosaveEnds << words.value(1).toInt();
         if (words.value(2) != "1") child.errors << QStringLiteral("autosave failed at %1").arg(words.value(1).toInt());
         qInfo("autosave after %d edits took %d ms", words.value(1).toInt(), words.value(3).toInt());
-    } else if (words.value(0) == "error") child.errors << QString::fromUtf8(line);
+    } else if (words.value(0) == "error")
+        child.errors << QString::fromUtf8(line);
 }
 
-bool GuiAnnotationCrashTest::readUntil(Child& child, const std::function<bool()>& done, int timeoutMs)
-{
+bool GuiAnnotationCrashTest::readUntil(Child& child, const std::function<bool()>& done, int timeoutMs) {
     QElapsedTimer clock;
     clock.start();
     while (!done()) {
@@ -270,8 +274,7 @@ bool GuiAnnotationCrashTest::readUntil(Child& child, const std::function<bool()>
     return true;
 }
 
-void GuiAnnotationCrashTest::killAndDrain(Child& child)
-{
+void GuiAnnotationCrashTest::killAndDrain(Child& child) {
     child.process.kill();  // SIGKILL: no handler, no cleanup, no last flush
     QVERIFY(child.process.waitForFinished(10000));
     QCOMPARE(child.process.exitStatus(), QProcess::CrashExit);
@@ -280,8 +283,7 @@ void GuiAnnotationCrashTest::killAndDrain(Child& child)
     QVERIFY2(child.errors.isEmpty(), qPrintable(child.errors.join(QLatin1Char('\n'))));
 }
 
-void GuiAnnotationCrashTest::verifyRecovery(const QString& path, const Child& child, QList<int> savedCounts)
-{
+void GuiAnnotationCrashTest::verifyRecovery(const QString& path, const Child& child, QList<int> savedCounts) {
     // The file alone: opens, samples intact, annotations exactly one saved state.
     auto opened = Project::open(path);
     QVERIFY2(opened, qPrintable(opened ? QString() : opened.message()));
@@ -298,8 +300,8 @@ void GuiAnnotationCrashTest::verifyRecovery(const QString& path, const Child& ch
     int fileState = -1;
     for (int count : savedCounts)
         if (inFile == expectedAfter(count)) fileState = count;
-    QVERIFY2(fileState >= 0, qPrintable(QStringLiteral("the file holds %1 annotations, no saved state")
-                                            .arg(inFile.size())));
+    QVERIFY2(fileState >= 0,
+             qPrintable(QStringLiteral("the file holds %1 annotations, no saved state").arg(inFile.size())));
     if (!child.autosaveBegins.isEmpty() && fileState < child.autosaveBegins.back()) ++killsInsideSave_;
     opened->reset();
 
@@ -313,9 +315,10 @@ void GuiAnnotationCrashTest::verifyRecovery(const QString& path, const Child& ch
     const Annotations recovered = window.project()->recording(kRecording)->annotations;
     const bool exact = recovered == expectedAfter(child.acks);
     const bool oneMore = recovered == expectedAfter(child.acks + 1);
-    QVERIFY2(exact || oneMore, qPrintable(QStringLiteral("recovered %1 annotations; acknowledged edits: %2")
-                                              .arg(recovered.size())
-                                              .arg(child.acks)));
+    QVERIFY2(
+        exact || oneMore,
+        qPrintable(
+            QStringLiteral("recovered %1 annotations; acknowledged edits: %2").arg(recovered.size()).arg(child.acks)));
     qInfo("%d edits acknowledged, %s recovered; the file alone held the state after %d edits", child.acks,
           exact ? "exactly those" : "one more", fileState);
 
@@ -327,8 +330,7 @@ void GuiAnnotationCrashTest::verifyRecovery(const QString& path, const Child& ch
     QCOMPARE((*reopened)->recording(kRecording)->annotations, recovered);
 }
 
-void GuiAnnotationCrashTest::killWhileEditing()
-{
+void GuiAnnotationCrashTest::killWhileEditing() {
     const QString path = makeProject(QStringLiteral("editing.athlos"));
     QVERIFY(!path.isEmpty());
     Child child;
@@ -340,8 +342,7 @@ void GuiAnnotationCrashTest::killWhileEditing()
     verifyRecovery(path, child, {});
 }
 
-void GuiAnnotationCrashTest::killBetweenAutosaves()
-{
+void GuiAnnotationCrashTest::killBetweenAutosaves() {
     const QString path = makeProject(QStringLiteral("autosaves.athlos"));
     QVERIFY(!path.isEmpty());
     Child child;
@@ -356,16 +357,14 @@ void GuiAnnotationCrashTest::killBetweenAutosaves()
     verifyRecovery(path, child, child.autosaveBegins);
 }
 
-void GuiAnnotationCrashTest::killDuringAutosave_data()
-{
+void GuiAnnotationCrashTest::killDuringAutosave_data() {
     QTest::addColumn<int>("every");
     QTest::newRow("every 6") << 6;
     QTest::newRow("every 10") << 10;
     QTest::newRow("every 16") << 16;
 }
 
-void GuiAnnotationCrashTest::killDuringAutosave()
-{
+void GuiAnnotationCrashTest::killDuringAutosave() {
     QFETCH(int, every);
     const QString path = makeProject(QStringLiteral("during-%1.athlos").arg(every));
     QVERIFY(!path.isEmpty());
@@ -380,15 +379,13 @@ void GuiAnnotationCrashTest::killDuringAutosave()
     verifyRecovery(path, child, child.autosaveBegins);
 }
 
-void GuiAnnotationCrashTest::cleanupTestCase()
-{
+void GuiAnnotationCrashTest::cleanupTestCase() {
     // Not asserted (timing decides): how often the kill hit a save before its rename.
     qInfo("%d of %d kills landed inside a save (the file then still held the old version)", killsInsideSave_,
           projects_);
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     QApplication app(argc, argv);
     if (argc >= 2 && qstrcmp(argv[1], "--child") == 0) return runChild(app.arguments());
     GuiAnnotationCrashTest test;

@@ -38,31 +38,27 @@ private:
     QTemporaryDir dir_;
 };
 
-void GuiAnnotationTest::initTestCase()
-{
+void GuiAnnotationTest::initTestCase() {
     QVERIFY(dir_.isValid());
     testing::isolateSettings(dir_.filePath(QStringLiteral("settings")));
     AnnotationEditor::setAnnotator(QStringLiteral("tester"));
 }
 
-QString GuiAnnotationTest::saveProject(const QString& name, const QStringList& classes)
-{
+QString GuiAnnotationTest::saveProject(const QString& name, const QStringList& classes) {
     const QString path = dir_.filePath(name);
     auto project = testing::makeProject(path);
     project->annotationClasses() = classes;
     return project->save() ? path : QString();
 }
 
-Annotations GuiAnnotationTest::annotationsOf(const QString& path, const QString& recording)
-{
+Annotations GuiAnnotationTest::annotationsOf(const QString& path, const QString& recording) {
     auto project = Project::open(path);
     if (!project) return {};
     const Recording* rec = (*project)->recording(recording);
     return rec ? rec->annotations : Annotations{};
 }
 
-void GuiAnnotationTest::editUndoRedoSaveReopen()
-{
+void GuiAnnotationTest::editUndoRedoSaveReopen() {
     const QString path = saveProject(QStringLiteral("undo.athlos"));
     QVERIFY(!path.isEmpty());
     MainWindow window;
@@ -114,8 +110,7 @@ void GuiAnnotationTest::editUndoRedoSaveReopen()
     QCOMPARE(reopened.project()->annotationClasses(), (QStringList{"run", "walk"}));
 }
 
-void GuiAnnotationTest::journalReplaysAfterCrash()
-{
+void GuiAnnotationTest::journalReplaysAfterCrash() {
     const QString path = saveProject(QStringLiteral("crash.athlos"));
     QVERIFY(!path.isEmpty());
     Annotations expected;
@@ -152,7 +147,9 @@ void GuiAnnotationTest::journalReplaysAfterCrash()
     const QString journal = AnnotationJournal::pathFor(path);
     QFile file(journal);
     QVERIFY(file.open(QIODevice::WriteOnly));
-    file.write(QJsonDocument(AnnotationEdit::addClass(QStringLiteral("sprint")).toJson()).toJson(QJsonDocument::Compact) + "\n");
+    file.write(
+        QJsonDocument(AnnotationEdit::addClass(QStringLiteral("sprint")).toJson()).toJson(QJsonDocument::Compact) +
+        "\n");
     file.write("{\"op\":\"insert\",\"rec\":\"ru");
     file.close();
     auto edits = AnnotationJournal::read(journal);
@@ -160,8 +157,7 @@ void GuiAnnotationTest::journalReplaysAfterCrash()
     QCOMPARE(int(edits->size()), 1);
 }
 
-void GuiAnnotationTest::shiftDragCreatesAndDeleteRemoves()
-{
+void GuiAnnotationTest::shiftDragCreatesAndDeleteRemoves() {
     const QString path = saveProject(QStringLiteral("mouse.athlos"));
     MainWindow window;
     window.setInteractive(false);
@@ -218,8 +214,7 @@ void GuiAnnotationTest::shiftDragCreatesAndDeleteRemoves()
     QCOMPARE(int(list.size()), 0);
 }
 
-void GuiAnnotationTest::reviewAcceptsAndRejects()
-{
+void GuiAnnotationTest::reviewAcceptsAndRejects() {
     const QString path = dir_.filePath(QStringLiteral("review.athlos"));
     {
         auto project = testing::makeProject(path);
@@ -254,8 +249,7 @@ void GuiAnnotationTest::reviewAcceptsAndRejects()
 
 // A processor run that writes annotations (ProcessorLauncher) leaves undo steps that index the old
 // list: they must go, and the views must hear about the change.
-void GuiAnnotationTest::replacedByAProcessorDropsUndo()
-{
+void GuiAnnotationTest::replacedByAProcessorDropsUndo() {
     const QString path = saveProject(QStringLiteral("replaced.athlos"));
     QVERIFY(!path.isEmpty());
     MainWindow window;
@@ -267,7 +261,8 @@ void GuiAnnotationTest::replacedByAProcessorDropsUndo()
     QCOMPARE(editor->undoStack()->count(), 1);
     QSignalSpy changed(editor, &AnnotationEditor::annotationsChanged);
     const QByteArray digest = AnnotationJournal::stateDigest(*window.project());
-    std::map<QString, Annotations> before{{QStringLiteral("run1"), window.project()->recording(QStringLiteral("run1"))->annotations}};
+    std::map<QString, Annotations> before{
+        {QStringLiteral("run1"), window.project()->recording(QStringLiteral("run1"))->annotations}};
     editor->annotationsReplaced({QStringLiteral("run1")}, before, digest);
     QCOMPARE(editor->undoStack()->count(), 0);
     QCOMPARE(changed.count(), 1);
@@ -276,8 +271,7 @@ void GuiAnnotationTest::replacedByAProcessorDropsUndo()
 
 // Annotations a processor run wrote in the GUI are journaled like manual edits: after a crash the
 // journal brings them back onto the file as it was last saved.
-void GuiAnnotationTest::processorAnnotationsAreJournaled()
-{
+void GuiAnnotationTest::processorAnnotationsAreJournaled() {
     const QString path = saveProject(QStringLiteral("journaled.athlos"));
     QVERIFY(!path.isEmpty());
     Annotations predicted;
@@ -288,11 +282,14 @@ void GuiAnnotationTest::processorAnnotationsAreJournaled()
         QVERIFY(window.openProject(path));
         Project* project = window.project();
         const QByteArray digest = AnnotationJournal::stateDigest(*project);
-        std::map<QString, Annotations> before{{QStringLiteral("run1"), project->recording(QStringLiteral("run1"))->annotations}};
+        std::map<QString, Annotations> before{
+            {QStringLiteral("run1"), project->recording(QStringLiteral("run1"))->annotations}};
         // What runProcessor does with an annotation output: replace the predicted ones.
         Annotations& list = project->recording(QStringLiteral("run1"))->annotations;
-        list.push_back({QStringLiteral("stride"), 1.0, 1.5, QStringLiteral("run1/strides"), 0.75, QStringLiteral("gait-events")});
-        list.push_back({QStringLiteral("stride"), 1.5, 2.0, QStringLiteral("run1/strides"), 0.5, QStringLiteral("gait-events")});
+        list.push_back(
+            {QStringLiteral("stride"), 1.0, 1.5, QStringLiteral("run1/strides"), 0.75, QStringLiteral("gait-events")});
+        list.push_back(
+            {QStringLiteral("stride"), 1.5, 2.0, QStringLiteral("run1/strides"), 0.5, QStringLiteral("gait-events")});
         predicted = list;
         window.annotationEditor()->annotationsReplaced({QStringLiteral("run1")}, before, digest);
         QVERIFY(AnnotationJournal::hasPendingEdits(path));
@@ -307,8 +304,7 @@ void GuiAnnotationTest::processorAnnotationsAreJournaled()
     QVERIFY((*reopened)->recording(QStringLiteral("run1"))->annotations == predicted);
 }
 
-void GuiAnnotationTest::autosaveWritesTheFileAndDropsTheJournal()
-{
+void GuiAnnotationTest::autosaveWritesTheFileAndDropsTheJournal() {
     const QString path = saveProject(QStringLiteral("autosave.athlos"));
     MainWindow window;
     window.setInteractive(false);
@@ -329,14 +325,12 @@ void GuiAnnotationTest::autosaveWritesTheFileAndDropsTheJournal()
     QCOMPARE(edits->front().kind, AnnotationEdit::Kind::Remove);
 }
 
-void GuiAnnotationTest::editsRoundTripThroughJson()
-{
+void GuiAnnotationTest::editsRoundTripThroughJson() {
     const Annotation a{QStringLiteral("run"), 0.1 + 0.2, 1.0 / 3.0, QStringLiteral("ä"), 0.75, QStringLiteral("x")};
     const Annotation b{QStringLiteral("walk"), 2.0, 3.0, QStringLiteral("b"), 1.0, QStringLiteral("manual")};
-    for (const AnnotationEdit& edit : {AnnotationEdit::insert(QStringLiteral("r"), 2, a),
-                                       AnnotationEdit::replace(QStringLiteral("r"), 1, a, b),
-                                       AnnotationEdit::remove(QStringLiteral("r"), 0, b),
-                                       AnnotationEdit::addClass(QStringLiteral("c"))}) {
+    for (const AnnotationEdit& edit :
+         {AnnotationEdit::insert(QStringLiteral("r"), 2, a), AnnotationEdit::replace(QStringLiteral("r"), 1, a, b),
+          AnnotationEdit::remove(QStringLiteral("r"), 0, b), AnnotationEdit::addClass(QStringLiteral("c"))}) {
         const QByteArray line = QJsonDocument(edit.toJson()).toJson(QJsonDocument::Compact);
         auto back = AnnotationEdit::fromJson(QJsonDocument::fromJson(line).object());
         QVERIFY(back);

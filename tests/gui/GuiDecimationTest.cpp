@@ -21,21 +21,26 @@ struct BruteExtremes {
     bool empty() const { return argMin < 0; }
 };
 
-BruteExtremes brute(const StreamData& d, int column, std::size_t begin, std::size_t end)
-{
+BruteExtremes brute(const StreamData& d, int column, std::size_t begin, std::size_t end) {
     BruteExtremes e;
     for (std::size_t i = begin; i < end; ++i) {
         const double v = d.at(i, column);
         if (std::isnan(v)) continue;
-        if (v < e.min) { e.min = v; e.argMin = (long long)i; }
-        if (v > e.max) { e.max = v; e.argMax = (long long)i; }
+        if (v < e.min) {
+            e.min = v;
+            e.argMin = (long long)i;
+        }
+        if (v > e.max) {
+            e.max = v;
+            e.argMax = (long long)i;
+        }
     }
     return e;
 }
 
 // Random walk with non-uniform time steps, NaN gaps and isolated spikes of both signs.
-std::shared_ptr<StreamData> randomData(std::size_t rows, int columns, unsigned seed, std::vector<std::size_t>* spikes = nullptr)
-{
+std::shared_ptr<StreamData> randomData(std::size_t rows, int columns, unsigned seed,
+                                       std::vector<std::size_t>* spikes = nullptr) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> step(0.001, 0.02);
     std::normal_distribution<double> noise(0.0, 1.0);
@@ -76,8 +81,7 @@ private slots:
     void edgeCases();
 };
 
-void GuiDecimationTest::combineKeepsTimeOrder()
-{
+void GuiDecimationTest::combineKeepsTimeOrder() {
     const Extremes low{-1, -1, true}, high{5, 5, true};
     QVERIFY(Extremes::combine(low, high).minFirst);
     QVERIFY(!Extremes::combine(high, low).minFirst);
@@ -89,8 +93,7 @@ void GuiDecimationTest::combineKeepsTimeOrder()
     QCOMPARE(Extremes::combine(Extremes(), low).min, -1.0);
 }
 
-void GuiDecimationTest::rangeExtremesMatchBruteForce_data()
-{
+void GuiDecimationTest::rangeExtremesMatchBruteForce_data() {
     QTest::addColumn<int>("rows");
     QTest::addColumn<int>("column");
     QTest::newRow("tiny") << 7 << 0;
@@ -100,8 +103,7 @@ void GuiDecimationTest::rangeExtremesMatchBruteForce_data()
     QTest::newRow("large") << 300001 << 0;
 }
 
-void GuiDecimationTest::rangeExtremesMatchBruteForce()
-{
+void GuiDecimationTest::rangeExtremesMatchBruteForce() {
     QFETCH(int, rows);
     QFETCH(int, column);
     auto data = randomData(std::size_t(rows), 3, 42u + unsigned(rows));
@@ -127,8 +129,7 @@ void GuiDecimationTest::rangeExtremesMatchBruteForce()
     }
 }
 
-void GuiDecimationTest::envelopeMatchesBruteForcePerPixel_data()
-{
+void GuiDecimationTest::envelopeMatchesBruteForcePerPixel_data() {
     QTest::addColumn<int>("rows");
     QTest::addColumn<int>("pixels");
     QTest::addColumn<double>("from");  // fraction of the time span
@@ -140,8 +141,7 @@ void GuiDecimationTest::envelopeMatchesBruteForcePerPixel_data()
     QTest::newRow("narrow, many samples per px") << 500000 << 1280 << 0.5 << 0.56;
 }
 
-void GuiDecimationTest::envelopeMatchesBruteForcePerPixel()
-{
+void GuiDecimationTest::envelopeMatchesBruteForcePerPixel() {
     QFETCH(int, rows);
     QFETCH(int, pixels);
     QFETCH(double, from);
@@ -170,9 +170,18 @@ void GuiDecimationTest::envelopeMatchesBruteForcePerPixel()
         BruteExtremes& c = columns[std::size_t(p)];
         const double v = data->at(i, 0);
         if (std::isnan(v)) continue;
-        if (v < c.min) { c.min = v; c.argMin = (long long)i; }
-        if (v > c.max) { c.max = v; c.argMax = (long long)i; }
-        if (v < all.min) { all.min = v; all.argMin = 0; }
+        if (v < c.min) {
+            c.min = v;
+            c.argMin = (long long)i;
+        }
+        if (v > c.max) {
+            c.max = v;
+            c.argMax = (long long)i;
+        }
+        if (v < all.min) {
+            all.min = v;
+            all.argMin = 0;
+        }
         if (v > all.max) all.max = v;
     }
     QCOMPARE(s.visibleSamples, visible);
@@ -203,8 +212,7 @@ void GuiDecimationTest::envelopeMatchesBruteForcePerPixel()
     }
 }
 
-void GuiDecimationTest::spikesSurviveFullRange()
-{
+void GuiDecimationTest::spikesSurviveFullRange() {
     std::vector<std::size_t> spikes;
     auto data = randomData(1'000'000, 1, 99u, &spikes);
     const MinMaxPyramid pyramid(data, 0);
@@ -227,8 +235,7 @@ void GuiDecimationTest::spikesSurviveFullRange()
     }
 }
 
-void GuiDecimationTest::rawSamplesWhenZoomedIn()
-{
+void GuiDecimationTest::rawSamplesWhenZoomedIn() {
     auto data = randomData(100000, 1, 5u);
     const MinMaxPyramid pyramid(data, 0);
     const double t0 = data->t[50000], t1 = data->t[50300];
@@ -241,13 +248,14 @@ void GuiDecimationTest::rawSamplesWhenZoomedIn()
         const std::size_t i = 49999 + std::size_t(k);
         QCOMPARE(s.keys[k], data->t[i]);
         const double v = data->at(i, 0);
-        if (std::isnan(v)) QVERIFY(std::isnan(s.values[k]));
-        else QCOMPARE(s.values[k], v);
+        if (std::isnan(v))
+            QVERIFY(std::isnan(s.values[k]));
+        else
+            QCOMPARE(s.values[k], v);
     }
 }
 
-void GuiDecimationTest::edgeCases()
-{
+void GuiDecimationTest::edgeCases() {
     QCOMPARE(MinMaxPyramid().decimate(0, 1, 100).keys.size(), 0);
     auto empty = std::make_shared<StreamData>(0, 1);
     QCOMPARE(MinMaxPyramid(empty, 0).decimate(0, 1, 100).keys.size(), 0);

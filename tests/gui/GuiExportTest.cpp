@@ -25,14 +25,12 @@ private:
     QTemporaryDir dir_;
 };
 
-void GuiExportTest::initTestCase()
-{
+void GuiExportTest::initTestCase() {
     QVERIFY(dir_.isValid());
     testing::isolateSettings(dir_.filePath(QStringLiteral("settings")));
 }
 
-void GuiExportTest::writesPngSvgPdf()
-{
+void GuiExportTest::writesPngSvgPdf() {
     MainWindow window;
     window.setInteractive(false);
     window.resize(1280, 800);
@@ -72,8 +70,7 @@ void GuiExportTest::writesPngSvgPdf()
     QVERIFY(unknown.message().contains(QStringLiteral("bmpx")));
 }
 
-void GuiExportTest::followsDarkPalette()
-{
+void GuiExportTest::followsDarkPalette() {
     QCustomPlot plot;
     PlotStyle::apply(&plot);
     QPalette dark = plot.palette();

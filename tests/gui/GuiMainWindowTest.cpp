@@ -21,8 +21,7 @@ using namespace athlos::ui;
 
 namespace {
 
-QString writeFile(const QString& path, const QByteArray& content)
-{
+QString writeFile(const QString& path, const QByteArray& content) {
     QFile file(path);
     if (!file.open(QIODevice::WriteOnly)) return {};
     file.write(content);
@@ -49,15 +48,13 @@ private:
     QTemporaryDir dir_;
 };
 
-void GuiMainWindowTest::initTestCase()
-{
+void GuiMainWindowTest::initTestCase() {
     QVERIFY(dir_.isValid());
     testing::isolateSettings(dir_.filePath(QStringLiteral("settings")));
     RecentProjects::clear();
 }
 
-QString GuiMainWindowTest::saveDemoProject(const QString& name)
-{
+QString GuiMainWindowTest::saveDemoProject(const QString& name) {
     const QString path = dir_.filePath(name);
     auto project = testing::makeProject(path);
     const Status saved = project->save();
@@ -65,8 +62,7 @@ QString GuiMainWindowTest::saveDemoProject(const QString& name)
     return saved ? path : QString();
 }
 
-void GuiMainWindowTest::opensProjectAndPlotsSelection()
-{
+void GuiMainWindowTest::opensProjectAndPlotsSelection() {
     const QString path = saveDemoProject(QStringLiteral("demo.athlos"));
     QVERIFY(!path.isEmpty());
 
@@ -115,8 +111,7 @@ void GuiMainWindowTest::opensProjectAndPlotsSelection()
     QVERIFY(window.detailsView()->toPlainText().contains(QStringLiteral("butterworth 1.0")));
 }
 
-void GuiMainWindowTest::importIsAllOrNothing()
-{
+void GuiMainWindowTest::importIsAllOrNothing() {
     const QString path = saveDemoProject(QStringLiteral("import.athlos"));
     QVERIFY(!path.isEmpty());
     const QString good = writeFile(dir_.filePath(QStringLiteral("good.csv")), "t,x,y\n0,1,2\n0.1,1.5,2.5\n0.2,2,3\n");
@@ -131,7 +126,8 @@ void GuiMainWindowTest::importIsAllOrNothing()
     QVERIFY(!window.importFiles({good, bad}));
     QCOMPARE(errors.count(), 1);
     const QString message = errors.at(0).at(0).toString();
-    QVERIFY2(message.contains(QStringLiteral("bad.csv")) && message.contains(QStringLiteral(":4")), qPrintable(message));
+    QVERIFY2(message.contains(QStringLiteral("bad.csv")) && message.contains(QStringLiteral(":4")),
+             qPrintable(message));
     QCOMPARE(window.project()->streamPaths(), before);
     QVERIFY(!window.project()->isModified());
     QVERIFY(!window.isWindowModified());
@@ -143,12 +139,11 @@ void GuiMainWindowTest::importIsAllOrNothing()
     QVERIFY(errors.at(1).at(0).toString().contains(QStringLiteral("good/lps")));
 }
 
-void GuiMainWindowTest::dropImportsAndSaveKeepsIt()
-{
+void GuiMainWindowTest::dropImportsAndSaveKeepsIt() {
     const QString path = saveDemoProject(QStringLiteral("drop.athlos"));
     QVERIFY(!path.isEmpty());
-    const QString csv = writeFile(dir_.filePath(QStringLiteral("sprint.csv")),
-                                  "t,x,y\n0,0,0\n0.5,3,0.1\n1,7,0.2\n1.5,11,0.2\n");
+    const QString csv =
+        writeFile(dir_.filePath(QStringLiteral("sprint.csv")), "t,x,y\n0,0,0\n0.5,3,0.1\n1,7,0.2\n1.5,11,0.2\n");
     MainWindow window;
     window.setInteractive(false);
     window.show();
@@ -177,8 +172,7 @@ void GuiMainWindowTest::dropImportsAndSaveKeepsIt()
     QCOMPARE(stream->data().value()->at(3, 0), 11.0);
 }
 
-void GuiMainWindowTest::newProjectAndSaveAs()
-{
+void GuiMainWindowTest::newProjectAndSaveAs() {
     MainWindow window;
     window.setInteractive(false);
     const QString created = dir_.filePath(QStringLiteral("fresh.athlos"));
@@ -198,8 +192,7 @@ void GuiMainWindowTest::newProjectAndSaveAs()
     QVERIFY(RecentProjects::list().size() <= RecentProjects::kMaxEntries);
 }
 
-void GuiMainWindowTest::openErrorsAreReported()
-{
+void GuiMainWindowTest::openErrorsAreReported() {
     MainWindow window;
     window.setInteractive(false);
     QSignalSpy errors(&window, &MainWindow::errorReported);
@@ -211,8 +204,7 @@ void GuiMainWindowTest::openErrorsAreReported()
     QVERIFY(!window.importFiles({notAProject}));  // no project open
 }
 
-void GuiMainWindowTest::importsSharedRecordings()
-{
+void GuiMainWindowTest::importsSharedRecordings() {
     const QString broad = QStringLiteral(ATHLOS_SHARED_DATA_DIR "/broad/02_undisturbed_slow_rotation_B.hdf5");
     const QString gaitmap = QStringLiteral(ATHLOS_SHARED_DATA_DIR "/gaitmap/imu_sample_ic_stride.csv");
     if (!QFileInfo::exists(broad) || !QFileInfo::exists(gaitmap)) QSKIP("shared recordings not available");
@@ -236,8 +228,7 @@ void GuiMainWindowTest::importsSharedRecordings()
     QVERIFY(window.saveProject());
 }
 
-void GuiMainWindowTest::versionsNameEveryLibrary()
-{
+void GuiMainWindowTest::versionsNameEveryLibrary() {
     const QString versions = ui::libraryVersions();
     for (const char* library : {"Athlos", "Qt", "Eigen", "Ceres", "OpenCV", "HDF5", "QCustomPlot 2.1"})
         QVERIFY2(versions.contains(QLatin1String(library)), library);

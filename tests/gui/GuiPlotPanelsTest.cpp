@@ -15,14 +15,10 @@ using namespace athlos::ui;
 
 namespace {
 
-std::shared_ptr<const Stream> shared(Stream stream)
-{
-    return std::make_shared<const Stream>(std::move(stream));
-}
+std::shared_ptr<const Stream> shared(Stream stream) { return std::make_shared<const Stream>(std::move(stream)); }
 
 // n samples at 1 kHz of a slow sine with one +100 spike at `spikeAt`.
-Stream bigStream(std::size_t n, std::size_t spikeAt)
-{
+Stream bigStream(std::size_t n, std::size_t spikeAt) {
     StreamInfo info;
     info.kind = QStringLiteral("imu");
     info.columns = {{"acc_x", "m/s^2"}};
@@ -52,8 +48,7 @@ private slots:
     void recognisesPositionStreams();
 };
 
-void GuiPlotPanelsTest::plotsEveryColumnWithUnits()
-{
+void GuiPlotPanelsTest::plotsEveryColumnWithUnits() {
     TimeSeriesPanel panel;
     panel.resize(1000, 600);
     panel.show();
@@ -85,8 +80,7 @@ void GuiPlotPanelsTest::plotsEveryColumnWithUnits()
     QCOMPARE(panel.visibleColumns().size(), 6);
 }
 
-void GuiPlotPanelsTest::groupsColumnsIntoLanes()
-{
+void GuiPlotPanelsTest::groupsColumnsIntoLanes() {
     QCOMPARE(PlotLanes::family(QStringLiteral("acc_x")), QStringLiteral("acc"));
     QCOMPARE(PlotLanes::family(QStringLiteral("left_gyr_z")), QStringLiteral("left_gyr"));
     QCOMPARE(PlotLanes::family(QStringLiteral("Q.W")), QStringLiteral("q"));
@@ -96,12 +90,19 @@ void GuiPlotPanelsTest::groupsColumnsIntoLanes()
     QCOMPARE(PlotLanes::family(QStringLiteral("max")), QString());
 
     // Family and unit: acc | gyr | x, y [m] | lat, lon [deg] | hdop.
-    const auto gnssImu = PlotLanes::assign({{"acc_x", "m/s^2"}, {"acc_y", "m/s^2"}, {"gyr_x", "rad/s"}, {"x", "m"},
-                                            {"y", "m"}, {"lat", "deg"}, {"lon", "deg"}, {"hdop", "1"}});
+    const auto gnssImu = PlotLanes::assign({{"acc_x", "m/s^2"},
+                                            {"acc_y", "m/s^2"},
+                                            {"gyr_x", "rad/s"},
+                                            {"x", "m"},
+                                            {"y", "m"},
+                                            {"lat", "deg"},
+                                            {"lon", "deg"},
+                                            {"hdop", "1"}});
     QCOMPARE(gnssImu.laneOf, (std::vector<int>{0, 0, 1, 2, 2, 3, 3, 4}));
     QCOMPARE(gnssImu.unit, (std::vector<QString>{"m/s^2", "rad/s", "m", "deg", "1"}));
     // The same unit in another family is another lane (acc in g beside acc in m/s^2 too).
-    const auto twoFeet = PlotLanes::assign({{"left_acc_x", "m/s^2"}, {"right_acc_x", "m/s^2"}, {"left_acc_y", "m/s^2"}});
+    const auto twoFeet =
+        PlotLanes::assign({{"left_acc_x", "m/s^2"}, {"right_acc_x", "m/s^2"}, {"left_acc_y", "m/s^2"}});
     QCOMPARE(twoFeet.laneOf, (std::vector<int>{0, 1, 0}));
     // More families than lanes: grouped by unit alone.
     std::vector<PlotLanes::Column> many;
@@ -120,8 +121,7 @@ void GuiPlotPanelsTest::groupsColumnsIntoLanes()
     QCOMPARE(capped.unit.front(), QStringLiteral("m"));
 }
 
-void GuiPlotPanelsTest::stacksLanesSharingTheTimeAxis()
-{
+void GuiPlotPanelsTest::stacksLanesSharingTheTimeAxis() {
     TimeSeriesPanel panel;
     panel.resize(1000, 700);
     panel.show();
@@ -157,8 +157,7 @@ void GuiPlotPanelsTest::stacksLanesSharingTheTimeAxis()
     QCOMPARE(plot->axisRectCount(), 1);
 }
 
-void GuiPlotPanelsTest::labelsTheTimeAxisWithClockTime()
-{
+void GuiPlotPanelsTest::labelsTheTimeAxisWithClockTime() {
     TimeSeriesPanel panel;
     panel.resize(1000, 500);
     panel.show();
@@ -197,8 +196,7 @@ void GuiPlotPanelsTest::labelsTheTimeAxisWithClockTime()
     QCOMPARE(panel.laneRect(panel.laneCount() - 1)->axis(QCPAxis::atBottom)->label(), QStringLiteral("t [s]"));
 }
 
-void GuiPlotPanelsTest::decimatesLargeStreamsWithoutLosingPeaks()
-{
+void GuiPlotPanelsTest::decimatesLargeStreamsWithoutLosingPeaks() {
     const std::size_t n = 2'000'000, spike = 1'234'567;
     TimeSeriesPanel panel;
     panel.resize(1200, 500);
@@ -243,8 +241,7 @@ void GuiPlotPanelsTest::decimatesLargeStreamsWithoutLosingPeaks()
     QCOMPARE(plot->xAxis->range().upper, 1e-3 * double(n - 1));
 }
 
-void GuiPlotPanelsTest::choosesColumns()
-{
+void GuiPlotPanelsTest::choosesColumns() {
     TimeSeriesPanel panel;
     panel.resize(800, 400);
     panel.setStream(shared(testing::makeImuStream()), QStringLiteral("run1/imu"), {QStringLiteral("gyr_x")});
@@ -263,8 +260,7 @@ void GuiPlotPanelsTest::choosesColumns()
     QVERIFY(!panel.isLoading());
 }
 
-void GuiPlotPanelsTest::reportsLoadErrors()
-{
+void GuiPlotPanelsTest::reportsLoadErrors() {
     StreamInfo info;
     info.name = QStringLiteral("broken");
     info.kind = QStringLiteral("imu");
@@ -281,8 +277,7 @@ void GuiPlotPanelsTest::reportsLoadErrors()
     QCOMPARE(panel.plot()->graphCount(), 0);
 }
 
-void GuiPlotPanelsTest::trajectoryHasEqualScalingAndMarkers()
-{
+void GuiPlotPanelsTest::trajectoryHasEqualScalingAndMarkers() {
     TrajectoryPanel panel;
     panel.resize(1000, 500);
     panel.show();
@@ -316,11 +311,11 @@ void GuiPlotPanelsTest::trajectoryHasEqualScalingAndMarkers()
     QCoreApplication::processEvents();
     plot->replot();
     const QRect r2 = plot->axisRect()->rect();
-    QVERIFY(std::abs((plot->xAxis->range().size() / r2.width()) / (plot->yAxis->range().size() / r2.height()) - 1.0) < 0.01);
+    QVERIFY(std::abs((plot->xAxis->range().size() / r2.width()) / (plot->yAxis->range().size() / r2.height()) - 1.0) <
+            0.01);
 }
 
-void GuiPlotPanelsTest::recognisesPositionStreams()
-{
+void GuiPlotPanelsTest::recognisesPositionStreams() {
     QVERIFY(TrajectoryPanel::isPositionStream(testing::makeTrackStream(5).info()));
     QVERIFY(!TrajectoryPanel::isPositionStream(testing::makeImuStream(5).info()));
     StreamInfo gnss;

@@ -19,8 +19,7 @@ private slots:
     void refreshFollowsProjectChanges();
 };
 
-void GuiProjectTreeTest::showsRecordingsAndItems()
-{
+void GuiProjectTreeTest::showsRecordingsAndItems() {
     auto project = testing::makeProject(QDir::temp().filePath(QStringLiteral("tree.athlos")));
     ProjectTreeModel model;
     QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::QtTest);
@@ -48,13 +47,13 @@ void GuiProjectTreeTest::showsRecordingsAndItems()
     QCOMPARE(model.nodeType(beacons), ProjectTreeModel::NodeType::Table);
     QCOMPARE(beacons.siblingAtColumn(ProjectTreeModel::KindColumn).data().toString(), QStringLiteral("beacons"));
     QCOMPARE(beacons.siblingAtColumn(ProjectTreeModel::RowsColumn).data().toString(), QStringLiteral("2"));
-    QVERIFY(beacons.siblingAtColumn(ProjectTreeModel::ColumnsColumn).data().toString().contains(QStringLiteral("x [m]")));
+    QVERIFY(
+        beacons.siblingAtColumn(ProjectTreeModel::ColumnsColumn).data().toString().contains(QStringLiteral("x [m]")));
 
     QCOMPARE(model.headerData(ProjectTreeModel::KindColumn, Qt::Horizontal).toString(), QStringLiteral("Kind"));
 }
 
-void GuiProjectTreeTest::resultsShowProvenance()
-{
+void GuiProjectTreeTest::resultsShowProvenance() {
     auto project = testing::makeProject(QDir::temp().filePath(QStringLiteral("tree.athlos")));
     ProjectTreeModel model;
     model.setProject(project.get());
@@ -74,11 +73,13 @@ void GuiProjectTreeTest::resultsShowProvenance()
     QVERIFY(html.contains(QStringLiteral("&quot;order&quot;: 4")));
     QVERIFY(html.contains(QStringLiteral("0123456789ab")));
     // Imported or hand-made streams are not results.
-    QVERIFY(!model.indexOf(QStringLiteral("run1/imu")).data(Qt::ToolTipRole).toString().contains(QStringLiteral("Result of")));
+    QVERIFY(!model.indexOf(QStringLiteral("run1/imu"))
+                 .data(Qt::ToolTipRole)
+                 .toString()
+                 .contains(QStringLiteral("Result of")));
 }
 
-void GuiProjectTreeTest::refreshFollowsProjectChanges()
-{
+void GuiProjectTreeTest::refreshFollowsProjectChanges() {
     auto project = testing::makeProject(QDir::temp().filePath(QStringLiteral("tree.athlos")));
     ProjectTreeModel model;
     QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::QtTest);

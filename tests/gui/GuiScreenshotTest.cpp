@@ -12,8 +12,7 @@ using namespace athlos;
 namespace {
 
 // Saturated pixels in the given region: the data colours, as opposed to the grey/white chrome.
-int colouredPixels(const QImage& image, const QRect& region)
-{
+int colouredPixels(const QImage& image, const QRect& region) {
     int count = 0;
     for (int y = region.top(); y <= region.bottom(); ++y)
         for (int x = region.left(); x <= region.right(); ++x) {
@@ -23,8 +22,7 @@ int colouredPixels(const QImage& image, const QRect& region)
     return count;
 }
 
-int distinctColours(const QImage& image)
-{
+int distinctColours(const QImage& image) {
     QSet<QRgb> colours;
     for (int y = 0; y < image.height(); y += 2)
         for (int x = 0; x < image.width(); x += 2) colours.insert(image.pixel(x, y));
@@ -48,8 +46,7 @@ private:
     QString project_;
 };
 
-void GuiScreenshotTest::initTestCase()
-{
+void GuiScreenshotTest::initTestCase() {
     QVERIFY(dir_.isValid());
     testing::isolateSettings(dir_.filePath(QStringLiteral("settings")));
     project_ = dir_.filePath(QStringLiteral("shot.athlos"));
@@ -58,8 +55,7 @@ void GuiScreenshotTest::initTestCase()
     QVERIFY2(saved.ok(), saved.ok() ? "" : qPrintable(saved.message()));
 }
 
-void GuiScreenshotTest::mainViewShowsThePlot()
-{
+void GuiScreenshotTest::mainViewShowsThePlot() {
     const QString png = dir_.filePath(QStringLiteral("main.png"));
     const Status s = ui::renderScreenshot(project_, QStringLiteral("main"), png);
     QVERIFY2(s.ok(), s.ok() ? "" : qPrintable(s.message()));
@@ -72,8 +68,7 @@ void GuiScreenshotTest::mainViewShowsThePlot()
     QCOMPARE(colouredPixels(image, QRect(0, 0, 1280, 800)) > plotted - 1, true);
 }
 
-void GuiScreenshotTest::trajectoryViewShowsThePath()
-{
+void GuiScreenshotTest::trajectoryViewShowsThePath() {
     const QString png = dir_.filePath(QStringLiteral("trajectory.png"));
     const Status s = ui::renderScreenshot(project_, QStringLiteral("trajectory"), png, QSize(1280, 800));
     QVERIFY2(s.ok(), s.ok() ? "" : qPrintable(s.message()));
@@ -83,8 +78,7 @@ void GuiScreenshotTest::trajectoryViewShowsThePath()
     QVERIFY2(plotted > 800, qPrintable(QString::number(plotted)));
 }
 
-void GuiScreenshotTest::trajectoryFallsBackWithoutPositions()
-{
+void GuiScreenshotTest::trajectoryFallsBackWithoutPositions() {
     const QString path = dir_.filePath(QStringLiteral("imu-only.athlos"));
     auto project = Project::create(path);
     project->putStream(QStringLiteral("run/imu"), testing::makeImuStream());
@@ -97,17 +91,18 @@ void GuiScreenshotTest::trajectoryFallsBackWithoutPositions()
     QVERIFY(colouredPixels(image, QRect(500, 120, 740, 560)) > 2000);  // the IMU time series instead
 }
 
-void GuiScreenshotTest::refusesUnknownViewsAndMissingProjects()
-{
+void GuiScreenshotTest::refusesUnknownViewsAndMissingProjects() {
     // Built-in views first; tools add theirs after (ATHLOS_REGISTER_VIEW).
     QCOMPARE(ui::screenshotViews().mid(0, 3),
              QStringList({QStringLiteral("main"), QStringLiteral("trajectory"), QStringLiteral("annotate")}));
     const QString png = dir_.filePath(QStringLiteral("never.png"));
     const Status unknown = ui::renderScreenshot(project_, QStringLiteral("3d"), png);
     QVERIFY(!unknown.ok());
-    QVERIFY2(unknown.message().contains(QStringLiteral("3d")) && unknown.message().contains(QStringLiteral("main, trajectory")),
+    QVERIFY2(unknown.message().contains(QStringLiteral("3d")) &&
+                 unknown.message().contains(QStringLiteral("main, trajectory")),
              qPrintable(unknown.message()));
-    const Status missing = ui::renderScreenshot(dir_.filePath(QStringLiteral("missing.athlos")), QStringLiteral("main"), png);
+    const Status missing =
+        ui::renderScreenshot(dir_.filePath(QStringLiteral("missing.athlos")), QStringLiteral("main"), png);
     QVERIFY(!missing.ok());
     QVERIFY2(missing.message().contains(QStringLiteral("missing.athlos")), qPrintable(missing.message()));
     QVERIFY(!QFileInfo::exists(png));

@@ -13,8 +13,7 @@
 
 namespace athlos::testing {
 
-inline Stream makeImuStream(std::size_t rows = 2000, double rate = 100.0)
-{
+inline Stream makeImuStream(std::size_t rows = 2000, double rate = 100.0) {
     StreamInfo info;
     info.kind = QStringLiteral("imu");
     info.frame = QStringLiteral("sensor");
@@ -35,8 +34,7 @@ inline Stream makeImuStream(std::size_t rows = 2000, double rate = 100.0)
 }
 
 // One lap of the 400 m track (straights along x, bend centres at ±42.195 m).
-inline Stream makeTrackStream(std::size_t rows = 800)
-{
+inline Stream makeTrackStream(std::size_t rows = 800) {
     StreamInfo info;
     info.kind = QStringLiteral("lps-position");
     info.frame = QStringLiteral("track");
@@ -70,8 +68,7 @@ inline Stream makeTrackStream(std::size_t rows = 800)
     return Stream(std::move(info), std::move(data));
 }
 
-inline Table makeBeaconTable()
-{
+inline Table makeBeaconTable() {
     Table table;
     table.kind = QStringLiteral("beacons");
     TableColumn id{QStringLiteral("id"), {}, true, {}, {QStringLiteral("B1"), QStringLiteral("B2")}};
@@ -81,8 +78,7 @@ inline Table makeBeaconTable()
     return table;
 }
 
-inline std::unique_ptr<Project> makeProject(const QString& path)
-{
+inline std::unique_ptr<Project> makeProject(const QString& path) {
     std::unique_ptr<Project> project = Project::create(path, QStringLiteral("athletics"));
     project->putStream(QStringLiteral("run1/imu"), makeImuStream());
     project->putStream(QStringLiteral("run1/lps"), makeTrackStream());
@@ -102,8 +98,7 @@ inline std::unique_ptr<Project> makeProject(const QString& path)
 }
 
 // Keeps QSettings (recent projects) of the tests away from the user's.
-inline void isolateSettings(const QString& dir)
-{
+inline void isolateSettings(const QString& dir) {
     QStandardPaths::setTestModeEnabled(true);
     QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, dir);
     QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, dir);

@@ -32,14 +32,12 @@ private:
     QTemporaryDir dir_;
 };
 
-void GuiTimeCursorTest::initTestCase()
-{
+void GuiTimeCursorTest::initTestCase() {
     QVERIFY(dir_.isValid());
     testing::isolateSettings(dir_.filePath(QStringLiteral("settings")));
 }
 
-void GuiTimeCursorTest::panelsShareTheVisibleRange()
-{
+void GuiTimeCursorTest::panelsShareTheVisibleRange() {
     MainWindow window;
     window.setInteractive(false);
     window.resize(1280, 800);
@@ -72,8 +70,7 @@ void GuiTimeCursorTest::panelsShareTheVisibleRange()
     QVERIFY(second->cursorLine()->visible());
 }
 
-void GuiTimeCursorTest::clickSetsCursorAndReadoutFollows()
-{
+void GuiTimeCursorTest::clickSetsCursorAndReadoutFollows() {
     MainWindow window;
     window.setInteractive(false);
     window.resize(1280, 800);
@@ -101,8 +98,7 @@ void GuiTimeCursorTest::clickSetsCursorAndReadoutFollows()
     QVERIFY2(readout.contains(expected), qPrintable(expected + QStringLiteral(" in ") + readout));
 }
 
-void GuiTimeCursorTest::transportKeys()
-{
+void GuiTimeCursorTest::transportKeys() {
     MainWindow window;
     window.setInteractive(false);
     window.setProject(testing::makeProject(dir_.filePath(QStringLiteral("keys.athlos"))));
@@ -158,8 +154,7 @@ void GuiTimeCursorTest::transportKeys()
     QVERIFY(time->cursor() > 2.05);
 }
 
-void GuiTimeCursorTest::statisticsOfARange()
-{
+void GuiTimeCursorTest::statisticsOfARange() {
     StreamData data(5, 1);
     const double values[] = {1.0, 2.0, 3.0, 4.0, std::nan("")};
     for (int i = 0; i < 5; ++i) {
@@ -176,8 +171,7 @@ void GuiTimeCursorTest::statisticsOfARange()
     QVERIFY(std::isnan(RangeStatistics::valueAt(data, 0, -1.0)));
 }
 
-void GuiTimeCursorTest::layoutIsSavedWithTheProject()
-{
+void GuiTimeCursorTest::layoutIsSavedWithTheProject() {
     const QString path = dir_.filePath(QStringLiteral("layout.athlos"));
     {
         auto project = testing::makeProject(path);
@@ -207,8 +201,7 @@ void GuiTimeCursorTest::layoutIsSavedWithTheProject()
     QVERIFY(details && !details->isVisible());
 }
 
-void GuiTimeCursorTest::trajectoryMarkerFollowsCursor()
-{
+void GuiTimeCursorTest::trajectoryMarkerFollowsCursor() {
     MainWindow window;
     window.setInteractive(false);
     window.resize(1280, 800);

@@ -24,14 +24,12 @@ private slots:
     void tsFileIsComplete();
 };
 
-void GuiTranslationTest::initTestCase()
-{
+void GuiTranslationTest::initTestCase() {
     qputenv("ATHLOS_LANG", "de");
     installTranslations(*qApp);
 }
 
-void GuiTranslationTest::translatesKnownStrings()
-{
+void GuiTranslationTest::translatesKnownStrings() {
     QCOMPARE(QCoreApplication::translate("athlos::ui::MainWindow", "&File"), QStringLiteral("&Datei"));
     QCOMPARE(QCoreApplication::translate("athlos::ui::TimeSeriesPanel", "Fit y to visible range"),
              QStringLiteral("y an sichtbaren Bereich anpassen"));
@@ -45,8 +43,7 @@ void GuiTranslationTest::translatesKnownStrings()
     QCOMPARE(QCoreApplication::translate("QPlatformTheme", "Cancel"), QStringLiteral("Abbrechen"));
 }
 
-void GuiTranslationTest::windowIsGerman()
-{
+void GuiTranslationTest::windowIsGerman() {
     MainWindow window;
     const QList<QAction*> menus = window.menuBar()->actions();
     QVERIFY(menus.size() >= 2);
@@ -54,8 +51,7 @@ void GuiTranslationTest::windowIsGerman()
     QCOMPARE(menus.back()->text(), QStringLiteral("&Hilfe"));  // Help stays last
 }
 
-void GuiTranslationTest::tsFileIsComplete()
-{
+void GuiTranslationTest::tsFileIsComplete() {
     QFile file(QStringLiteral(ATHLOS_TEST_DATA_DIR "/../../translations/athlos_de.ts"));
     QVERIFY2(file.open(QIODevice::ReadOnly), qPrintable(file.fileName()));
     QXmlStreamReader xml(&file);
@@ -72,9 +68,11 @@ void GuiTranslationTest::tsFileIsComplete()
             const bool unfinished = !xml.attributes().value(QLatin1String("type")).isEmpty();
             // Plural messages keep their forms in <numerusform> children.
             const QString text = xml.readElementText(QXmlStreamReader::IncludeChildElements);
-            QVERIFY2(!unfinished && !text.trimmed().isEmpty(), qPrintable(QStringLiteral("untranslated: %1").arg(source)));
+            QVERIFY2(!unfinished && !text.trimmed().isEmpty(),
+                     qPrintable(QStringLiteral("untranslated: %1").arg(source)));
             // Placeholders must survive translation.
-            for (const QString& ph : {QStringLiteral("%1"), QStringLiteral("%2"), QStringLiteral("%3"), QStringLiteral("%n")}) {
+            for (const QString& ph :
+                 {QStringLiteral("%1"), QStringLiteral("%2"), QStringLiteral("%3"), QStringLiteral("%n")}) {
                 QVERIFY2(source.contains(ph) == text.contains(ph),
                          qPrintable(QStringLiteral("placeholder %1 in: %2").arg(ph, source)));
             }

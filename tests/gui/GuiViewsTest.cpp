@@ -15,8 +15,7 @@ using namespace athlos;
 
 namespace {
 
-int distinctColours(const QImage& image, const QRect& region)
-{
+int distinctColours(const QImage& image, const QRect& region) {
     QSet<QRgb> colours;
     for (int y = region.top(); y <= region.bottom(); y += 2)
         for (int x = region.left(); x <= region.right(); x += 2) colours.insert(image.pixel(x, y));
@@ -24,14 +23,14 @@ int distinctColours(const QImage& image, const QRect& region)
 }
 
 // Pixels close to a colour (the annotation spans are translucent class colours over white).
-int pixelsNear(const QImage& image, QColor colour, int tolerance)
-{
+int pixelsNear(const QImage& image, QColor colour, int tolerance) {
     int count = 0;
     for (int y = 0; y < image.height(); y += 2)
         for (int x = 0; x < image.width(); x += 2) {
             const QColor c = image.pixelColor(x, y);
-            if (std::abs(c.red() - colour.red()) + std::abs(c.green() - colour.green())
-                    + std::abs(c.blue() - colour.blue()) <= tolerance)
+            if (std::abs(c.red() - colour.red()) + std::abs(c.green() - colour.green()) +
+                    std::abs(c.blue() - colour.blue()) <=
+                tolerance)
                 ++count;
         }
     return count;
@@ -53,8 +52,7 @@ private:
     QString project_;
 };
 
-void GuiViewsTest::initTestCase()
-{
+void GuiViewsTest::initTestCase() {
     QVERIFY(dir_.isValid());
     testing::isolateSettings(dir_.filePath(QStringLiteral("settings")));
     project_ = dir_.filePath(QStringLiteral("views.athlos"));
@@ -66,10 +64,10 @@ void GuiViewsTest::initTestCase()
     QVERIFY(project->save());
 }
 
-void GuiViewsTest::everyViewRenders()
-{
+void GuiViewsTest::everyViewRenders() {
     const QStringList views = ui::screenshotViews();
-    QCOMPARE(views.mid(0, 3), (QStringList{QStringLiteral("main"), QStringLiteral("trajectory"), QStringLiteral("annotate")}));
+    QCOMPARE(views.mid(0, 3),
+             (QStringList{QStringLiteral("main"), QStringLiteral("trajectory"), QStringLiteral("annotate")}));
     for (const ui::ViewEntry& entry : ui::registeredViews()) QVERIFY(views.contains(entry.name));
     QCOMPARE(QSet<QString>(views.begin(), views.end()).size(), views.size());
     // ATHLOS_KEEP_SCREENSHOTS=<dir> keeps the pictures for a look.
@@ -92,8 +90,7 @@ void GuiViewsTest::everyViewRenders()
     }
 }
 
-void GuiViewsTest::annotateShowsSpansAndClasses()
-{
+void GuiViewsTest::annotateShowsSpansAndClasses() {
     const QString png = dir_.filePath(QStringLiteral("annotate-check.png"));
     const Status s = ui::renderScreenshot(project_, QStringLiteral("annotate"), png);
     QVERIFY2(s, qPrintable(s ? QString() : s.message()));
@@ -110,12 +107,12 @@ void GuiViewsTest::annotateShowsSpansAndClasses()
     const QString bare = dir_.filePath(QStringLiteral("bare.athlos"));
     auto project = testing::makeProject(bare);
     QVERIFY(project->save());
-    const Status plain = ui::renderScreenshot(bare, QStringLiteral("annotate"), dir_.filePath(QStringLiteral("bare.png")));
+    const Status plain =
+        ui::renderScreenshot(bare, QStringLiteral("annotate"), dir_.filePath(QStringLiteral("bare.png")));
     QVERIFY2(plain, qPrintable(plain ? QString() : plain.message()));
 }
 
-void GuiViewsTest::viewsWithoutDataFailClearly()
-{
+void GuiViewsTest::viewsWithoutDataFailClearly() {
     const QString empty = dir_.filePath(QStringLiteral("empty.athlos"));
     QVERIFY(Project::create(empty)->save());
     for (const QString& view : {QStringLiteral("main"), QStringLiteral("annotate")}) {

@@ -41,8 +41,7 @@ public:
     QString name() const override { return QStringLiteral("Schema"); }
     QString description() const override { return QStringLiteral("all parameter types"); }
     QString version() const override { return QStringLiteral("1"); }
-    ParameterSpecs parameters() const override
-    {
+    ParameterSpecs parameters() const override {
         ParameterSpec optional = ParameterSpec::number(QStringLiteral("rate"), std::nan(""), 0.5, 100.0,
                                                        QStringLiteral("Hz"), QStringLiteral("output rate"));
         optional.optional = true;
@@ -55,13 +54,11 @@ public:
                 ParameterSpec::text(QStringLiteral("columns"), QStringLiteral("acc_*"), QStringLiteral("columns")),
                 optional};
     }
-    QList<InputSpec> inputs() const override
-    {
+    QList<InputSpec> inputs() const override {
         return {InputSpec{QStringLiteral("signal"), {QStringLiteral("lps-position")}, false, false, {}}};
     }
     QList<OutputSpec> outputs() const override { return {OutputSpec{}}; }
-    Expected<std::vector<ProcessorOutput>> run(const RunContext&) const override
-    {
+    Expected<std::vector<ProcessorOutput>> run(const RunContext&) const override {
         return makeError(QStringLiteral("not meant to run"));
     }
 };
@@ -83,8 +80,7 @@ private:
     QTemporaryDir dir_;
 };
 
-void GuiWorkspaceTest::initTestCase()
-{
+void GuiWorkspaceTest::initTestCase() {
     QVERIFY(dir_.isValid());
     testing::isolateSettings(dir_.filePath(QStringLiteral("settings")));
     ProcessorRegistry::instance().add(std::make_shared<SchemaProcessor>());
@@ -92,8 +88,7 @@ void GuiWorkspaceTest::initTestCase()
              qPrintable(ProcessorRegistry::instance().loadErrors().join(QLatin1Char('\n'))));
 }
 
-void GuiWorkspaceTest::registeredToolsAppearInTheirMenu()
-{
+void GuiWorkspaceTest::registeredToolsAppearInTheirMenu() {
     MainWindow window;
     window.setInteractive(false);
     QAction* action = window.toolAction(QStringLiteral("test-tool"));
@@ -114,8 +109,7 @@ void GuiWorkspaceTest::registeredToolsAppearInTheirMenu()
     QCOMPARE(static_cast<Workspace&>(window).window(), static_cast<QWidget*>(&window));
 }
 
-void GuiWorkspaceTest::formFollowsTheSchema()
-{
+void GuiWorkspaceTest::formFollowsTheSchema() {
     MainWindow window;
     window.setInteractive(false);
     window.setProject(testing::makeProject(dir_.filePath(QStringLiteral("schema.athlos"))));
@@ -158,8 +152,7 @@ void GuiWorkspaceTest::formFollowsTheSchema()
     QVERIFY(dialog.validate());
 }
 
-void GuiWorkspaceTest::dialogRunsResampleIntoTheTree()
-{
+void GuiWorkspaceTest::dialogRunsResampleIntoTheTree() {
     MainWindow window;
     window.setInteractive(false);
     window.resize(1280, 800);
@@ -174,8 +167,8 @@ void GuiWorkspaceTest::dialogRunsResampleIntoTheTree()
     QCOMPARE(dialog.outputEdit()->text(), QStringLiteral("run1/imu-resample"));
     dialog.outputEdit()->setText(QStringLiteral("run1/imu-50hz"));
     qobject_cast<QDoubleSpinBox*>(dialog.parameterForm()->editor(QStringLiteral("rate")))->setValue(50.0);
-    qobject_cast<QComboBox*>(dialog.parameterForm()->editor(QStringLiteral("method")))->setCurrentText(
-        QStringLiteral("cubic"));
+    qobject_cast<QComboBox*>(dialog.parameterForm()->editor(QStringLiteral("method")))
+        ->setCurrentText(QStringLiteral("cubic"));
 
     const Status ran = dialog.run();
     QVERIFY2(ran, qPrintable(ran ? QString() : ran.message()));
@@ -195,12 +188,13 @@ void GuiWorkspaceTest::dialogRunsResampleIntoTheTree()
     QVERIFY(window.menuBar()->isEnabled());  // not left busy
 }
 
-void GuiWorkspaceTest::rerunPrefillsFromProvenance()
-{
+void GuiWorkspaceTest::rerunPrefillsFromProvenance() {
     MainWindow window;
     window.setInteractive(false);
     window.setProject(testing::makeProject(dir_.filePath(QStringLiteral("rerun.athlos"))));
-    RunRequest first{QStringLiteral("resample"), {QStringLiteral("run1/imu")}, QStringLiteral("run1/imu-rs"),
+    RunRequest first{QStringLiteral("resample"),
+                     {QStringLiteral("run1/imu")},
+                     QStringLiteral("run1/imu-rs"),
                      {{QStringLiteral("rate"), 25.0}, {QStringLiteral("method"), QStringLiteral("nearest")}}};
     auto outcome = window.runProcessor(first);
     QVERIFY2(outcome, qPrintable(outcome ? QString() : outcome.message()));
@@ -230,8 +224,7 @@ void GuiWorkspaceTest::rerunPrefillsFromProvenance()
     QVERIFY(std::abs(out->info().rows - 200) <= 1);
 }
 
-void GuiWorkspaceTest::invalidParametersStayInTheDialog()
-{
+void GuiWorkspaceTest::invalidParametersStayInTheDialog() {
     MainWindow window;
     window.setInteractive(false);
     window.setProject(testing::makeProject(dir_.filePath(QStringLiteral("invalid.athlos"))));

@@ -23,7 +23,9 @@ using namespace athlos::ui;
 
 namespace {
 
-Annotation manual(const QString& label, double a, double b) { return {label, a, b, QString(), 1.0, QStringLiteral("manual")}; }
+Annotation manual(const QString& label, double a, double b) {
+    return {label, a, b, QString(), 1.0, QStringLiteral("manual")};
+}
 
 // 3 manual "jump" intervals of 0.5 s, 6 predicted "stride left" of 1.1 s, 2 instants "mark".
 Annotations sampleAnnotations() {
@@ -72,7 +74,8 @@ private slots:
         QVERIFY(!timeline.statsFor("other"));
         // Same colours as the annotation layer's rule: project classes by index.
         QCOMPARE(ActionTimeline::colorFor(project.get(), "jump"), ActionTimeline::colorFor(project.get(), "jump"));
-        QVERIFY(ActionTimeline::colorFor(project.get(), "jump") != ActionTimeline::colorFor(project.get(), "stride left"));
+        QVERIFY(ActionTimeline::colorFor(project.get(), "jump") !=
+                ActionTimeline::colorFor(project.get(), "stride left"));
     }
 
     void manualSolidPredictedTranslucent() {
@@ -80,7 +83,8 @@ private slots:
         time.setBounds(0, 20);
         time.setVisibleRange(0, 20);
         ActionTimeline timeline(&time);
-        Annotations a{manual("x", 2.0, 6.0), {"x", 10.0, 14.0, "p", 0.1, "detector"}, {"x", 15.0, 19.0, "p", 1.0, "detector"}};
+        Annotations a{
+            manual("x", 2.0, 6.0), {"x", 10.0, 14.0, "p", 0.1, "detector"}, {"x", 15.0, 19.0, "p", 1.0, "detector"}};
         timeline.setAnnotations(a);
         timeline.resize(900, 120);
         time.setCursor(0.0);
@@ -193,7 +197,8 @@ private slots:
         QVERIFY(current >= 0);
         QCOMPARE(all[std::size_t(current)].label, QStringLiteral("stride left"));
         QCOMPARE(all[std::size_t(current)].tStart, 1.0);  // the earliest predicted one
-        QVERIFY2(std::abs(window.timeController()->cursor() - 1.55) < 1e-9, qPrintable(QString::number(window.timeController()->cursor())));
+        QVERIFY2(std::abs(window.timeController()->cursor() - 1.55) < 1e-9,
+                 qPrintable(QString::number(window.timeController()->cursor())));
         // The visible range moved to show it, keeping its span.
         QVERIFY(window.timeController()->visibleBegin() <= 1.0);
         QVERIFY(std::abs(window.timeController()->visibleEnd() - window.timeController()->visibleBegin() - 5.0) < 1e-6);
@@ -222,7 +227,8 @@ private slots:
 
     void toolOpensDockAndScreenshotViewRenders() {
         const auto& tools = registeredTools();
-        auto tool = std::find_if(tools.begin(), tools.end(), [](const ToolEntry& t) { return t.id == "action-timeline"; });
+        auto tool =
+            std::find_if(tools.begin(), tools.end(), [](const ToolEntry& t) { return t.id == "action-timeline"; });
         QVERIFY(tool != tools.end());
         QCOMPARE(QByteArray(tool->menu), QByteArray("View"));
 
@@ -251,7 +257,8 @@ private slots:
             QTest::mouseClick(view->timeline(), Qt::LeftButton, {},
                               QPoint(view->timeline()->xAt(window.timeController()->visibleBegin() + 1.0),
                                      view->timeline()->laneRect(0).center().y()));
-            QVERIFY(std::abs(window.timeController()->cursor() - (window.timeController()->visibleBegin() + 1.0)) < 0.1);
+            QVERIFY(std::abs(window.timeController()->cursor() - (window.timeController()->visibleBegin() + 1.0)) <
+                    0.1);
         }
         QVERIFY(screenshotViews().contains("actions"));
         const QString png = dir_.filePath("actions.png");

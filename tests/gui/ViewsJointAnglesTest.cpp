@@ -72,7 +72,8 @@ private slots:
         for (int i = 0; i < 3; ++i) {
             QCOMPARE(view.plot(i)->graphCount(), 2);
             QCOMPARE(view.plot(i)->graph(0)->dataCount(), 500);
-            QVERIFY2(std::abs(view.rmse()[std::size_t(i)] - expected[i]) < 1e-9, qPrintable(QString::number(view.rmse()[std::size_t(i)])));
+            QVERIFY2(std::abs(view.rmse()[std::size_t(i)] - expected[i]) < 1e-9,
+                     qPrintable(QString::number(view.rmse()[std::size_t(i)])));
             QVERIFY(view.plot(i)->graph(1)->name().contains(QString::number(expected[i], 'f', 2)));
         }
         // Values in degrees: flexion at t = 0 is 30 + 1.
@@ -112,7 +113,8 @@ private slots:
     void registeredAsToolAndScreenshotView() {
         const auto& tools = registeredTools();
         QVERIFY(std::any_of(tools.begin(), tools.end(), [](const ToolEntry& t) {
-            return t.id == "joint-angles-view" && QByteArray(t.menu) == "Inertial" && QByteArray(t.text) == "Joint angles…";
+            return t.id == "joint-angles-view" && QByteArray(t.menu) == "Inertial" &&
+                   QByteArray(t.text) == "Joint angles…";
         }));
         const auto& views = registeredViews();
         auto it = std::find_if(views.begin(), views.end(), [](const ViewEntry& v) { return v.name == "joint-angles"; });

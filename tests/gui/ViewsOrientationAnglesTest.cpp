@@ -70,7 +70,8 @@ private slots:
 
     void eulerAnglesEqualCoreDecomposition() {
         auto project = testing::makeProject(dir_.filePath("a.athlos"));
-        const math::Quat q = math::quaternionFromEuler(math::Vec3(30, -20, 10) * kDeg, *math::EulerSequence::parse("ZYX"));
+        const math::Quat q =
+            math::quaternionFromEuler(math::Vec3(30, -20, 10) * kDeg, *math::EulerSequence::parse("ZYX"));
         project->putStream("still/orientation", quaternionStream("orientation", std::vector<math::Quat>(20, q)));
         OrientationAnglesView view(project.get());
         QCOMPARE(OrientationAnglesView::orientationStreams(*project), QStringList{"still/orientation"});

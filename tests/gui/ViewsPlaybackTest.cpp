@@ -25,8 +25,7 @@ namespace {
 constexpr double kFast = 8.0, kSlow = 1.5;  // m/s
 
 // An athlete running along x at constant speed from x0, at height y, 0–10 s at 10 Hz.
-Stream athlete(const QString& label, const QString& team, double x0, double y, double speed)
-{
+Stream athlete(const QString& label, const QString& team, double x0, double y, double speed) {
     StreamInfo info;
     info.kind = QStringLiteral("lps-position");
     info.frame = QStringLiteral("pitch");
@@ -41,24 +40,21 @@ Stream athlete(const QString& label, const QString& team, double x0, double y, d
     return Stream(info, d);
 }
 
-std::unique_ptr<Project> teamProject(const QString& path)
-{
+std::unique_ptr<Project> teamProject(const QString& path) {
     auto project = testing::makeProject(path);
     project->putStream("team/fast", athlete("F", "home", -30.0, 10.0, kFast));
     project->putStream("team/slow", athlete("S", "away", 20.0, -15.0, kSlow));
     return project;
 }
 
-QImage frame(PlaybackCanvas* canvas)
-{
+QImage frame(PlaybackCanvas* canvas) {
     QImage image(canvas->size(), QImage::Format_ARGB32_Premultiplied);
     QPainter painter(&image);
     canvas->paintFrame(painter);
     return image;
 }
 
-bool near(QColor a, QColor b, int tolerance = 12)
-{
+bool near(QColor a, QColor b, int tolerance = 12) {
     return std::abs(a.red() - b.red()) <= tolerance && std::abs(a.green() - b.green()) <= tolerance &&
            std::abs(a.blue() - b.blue()) <= tolerance;
 }
@@ -71,14 +67,12 @@ class ViewsPlaybackTest : public QObject {
     Q_OBJECT
 
 private slots:
-    void initTestCase()
-    {
+    void initTestCase() {
         QVERIFY(dir_.isValid());
         testing::isolateSettings(dir_.path());
     }
 
-    void followsTheCursor()
-    {
+    void followsTheCursor() {
         auto project = teamProject(dir_.filePath("a.athlos"));
         QCOMPARE(PlaybackTracks::teamRecording(*project, 2), QStringLiteral("team"));
         TimeController time;
@@ -108,8 +102,8 @@ private slots:
             const QPointF slow = canvas->toScreen(20.0 + kSlow * t, -15.0);
             QVERIFY(near(pixelAt(image, slow), QColor(25, 25, 25), 20));
             if (!before.isNull()) {
-                QVERIFY((p - before).manhattanLength() > 50);               // it moved with the cursor
-                QVERIFY(!near(pixelAt(image, before), home));                 // and is gone from there
+                QVERIFY((p - before).manhattanLength() > 50);  // it moved with the cursor
+                QVERIFY(!near(pixelAt(image, before), home));  // and is gone from there
             }
             before = p;
         }
@@ -119,8 +113,7 @@ private slots:
         QVERIFY(w.m11() > 0);
     }
 
-    void trailLengthAndSpeedColours()
-    {
+    void trailLengthAndSpeedColours() {
         auto project = teamProject(dir_.filePath("b.athlos"));
         TimeController time;
         time.setBounds(0.0, 10.0);
@@ -161,8 +154,7 @@ private slots:
         QVERIFY(!near(pixelAt(image, fastAt(1.0)), fast, 40));
     }
 
-    void venuePersistsInMetadata()
-    {
+    void venuePersistsInMetadata() {
         const QString path = dir_.filePath("c.athlos");
         auto project = teamProject(path);
         {
@@ -191,8 +183,7 @@ private slots:
         QCOMPARE(PlaybackView::venueFor(*project, "other"), VenueDrawing::Venue::Track);
     }
 
-    void venueGuessFromExtent()
-    {
+    void venueGuessFromExtent() {
         QCOMPARE(VenueDrawing::guess(QRectF(-50, -30, 100, 60)), VenueDrawing::Venue::Football);
         QCOMPARE(VenueDrawing::guess(QRectF(-59, -34, 118, 68)), VenueDrawing::Venue::Rugby);
         QCOMPARE(VenueDrawing::guess(QRectF(-85, -45, 170, 90)), VenueDrawing::Venue::Track);
@@ -200,8 +191,7 @@ private slots:
         QCOMPARE(VenueDrawing::guess(QRectF(-500, -30, 1000, 60)), VenueDrawing::Venue::None);
     }
 
-    void registeredToolAndScreenshotViews()
-    {
+    void registeredToolAndScreenshotViews() {
         const auto& tools = registeredTools();
         QVERIFY(std::any_of(tools.begin(), tools.end(), [](const ToolEntry& t) {
             return t.id == "team-playback" && QByteArray(t.menu) == "View" && QByteArray(t.text) == "Team playback…";
@@ -228,7 +218,7 @@ private slots:
                     fastTrail += near(c, fast, 6);
                 }
             QVERIFY2(grassPixels > 20000, qPrintable(QString::number(grassPixels)));  // the pitch is drawn
-            QVERIFY2(fastTrail > 5, qPrintable(QString::number(fastTrail)));         // with a trail mid-recording
+            QVERIFY2(fastTrail > 5, qPrintable(QString::number(fastTrail)));          // with a trail mid-recording
             QVERIFY(homeDot > 0);
         }
     }

@@ -24,10 +24,10 @@ namespace {
 constexpr double kRotation = 0.5236;  // rad, about 30°
 const Eigen::Vector2d kCentre(20.0, 10.0);
 
-PitchGeometry surveyedPitch()
-{
+PitchGeometry surveyedPitch() {
     std::vector<Eigen::Vector2d> corners;
-    for (const auto& q : {Eigen::Vector2d(-50, -32), Eigen::Vector2d(50, -32), Eigen::Vector2d(50, 32), Eigen::Vector2d(-50, 32)})
+    for (const auto& q :
+         {Eigen::Vector2d(-50, -32), Eigen::Vector2d(50, -32), Eigen::Vector2d(50, 32), Eigen::Vector2d(-50, 32)})
         corners.push_back(kCentre + Eigen::Rotation2Dd(kRotation) * q);
     auto pitch = PitchGeometry::fit(corners, PitchGeometry::Kind::Football, {}, QStringLiteral("main"));
     return *pitch;
@@ -35,13 +35,13 @@ PitchGeometry surveyedPitch()
 
 // A GNSS athlete (x, y in the project's ENU frame) running along the pitch's x axis at y = 10 m in
 // the pitch frame, from x = −30 m at 6 m/s, 0–10 s at 10 Hz.
-Stream gnssAthlete(const PitchGeometry& pitch)
-{
+Stream gnssAthlete(const PitchGeometry& pitch) {
     StreamInfo info;
     info.kind = QStringLiteral("gnss");
     info.frame = QStringLiteral("WGS84");
     info.columns = {{"lat", "deg"}, {"lon", "deg"}, {"x", "m"}, {"y", "m"}};
-    info.attributes = QJsonObject{{"label", "G"}, {"team", "home"}, {"enu_origin", QJsonObject{{"lat", 53.3}, {"lon", -6.2}}}};
+    info.attributes =
+        QJsonObject{{"label", "G"}, {"team", "home"}, {"enu_origin", QJsonObject{{"lat", 53.3}, {"lon", -6.2}}}};
     StreamData d(101, 4);
     for (std::size_t k = 0; k < d.rows(); ++k) {
         d.t[k] = 0.1 * double(k);
@@ -54,15 +54,14 @@ Stream gnssAthlete(const PitchGeometry& pitch)
     return Stream(info, d);
 }
 
-QImage frame(PlaybackCanvas* canvas)
-{
+QImage frame(PlaybackCanvas* canvas) {
     QImage image(canvas->size(), QImage::Format_ARGB32_Premultiplied);
     QPainter painter(&image);
     canvas->paintFrame(painter);
     return image;
 }
 
-bool isGrass(QColor c) { return c.green() > 135 && c.green() < 160 && c.red() < 95; }      // both stripe colours
+bool isGrass(QColor c) { return c.green() > 135 && c.green() < 160 && c.red() < 95; }       // both stripe colours
 bool isSurround(QColor c) { return c.green() >= 118 && c.green() <= 130 && c.red() < 72; }  // outside the lines
 
 }  // namespace
@@ -71,14 +70,12 @@ class ViewsVenueTest : public QObject {
     Q_OBJECT
 
 private slots:
-    void initTestCase()
-    {
+    void initTestCase() {
         QVERIFY(dir_.isValid());
         testing::isolateSettings(dir_.path());
     }
 
-    void sizesAndBounds()
-    {
+    void sizesAndBounds() {
         QCOMPARE(VenueDrawing::sizeOf(VenueDrawing::Venue::Football), (VenueDrawing::Size{105.0, 68.0}));
         QCOMPARE(VenueDrawing::sizeOf(VenueDrawing::Venue::Football, {100.0, 64.0}), (VenueDrawing::Size{100.0, 64.0}));
         QCOMPARE(VenueDrawing::bounds(VenueDrawing::Venue::Football, {100.0, 64.0}), QRectF(-53, -35, 106, 70));
@@ -88,8 +85,7 @@ private slots:
         QCOMPARE(VenueDrawing::fromId("rectangle"), std::optional(VenueDrawing::Venue::Rectangle));
     }
 
-    void surveyedPitchIsTheVenueInThePitchFrame()
-    {
+    void surveyedPitchIsTheVenueInThePitchFrame() {
         const PitchGeometry pitch = surveyedPitch();
         QVERIFY(std::abs(pitch.length() - 100.0) < 1e-9 && std::abs(pitch.width() - 64.0) < 1e-9);
         auto project = testing::makeProject(dir_.filePath("a.athlos"));
@@ -140,7 +136,8 @@ private slots:
             QVERIFY2(isGrass(inside), qPrintable(inside.name()));
             QVERIFY2(isSurround(outside), qPrintable(outside.name()));
             // Touch line at y = ±32 m (not ±34 m).
-            QVERIFY2(isSurround(image.pixelColor(canvas->toScreen(10.0, s * 33.2).toPoint())), "outside the touch line");
+            QVERIFY2(isSurround(image.pixelColor(canvas->toScreen(10.0, s * 33.2).toPoint())),
+                     "outside the touch line");
             QVERIFY2(isGrass(image.pixelColor(canvas->toScreen(10.0, s * 30.8).toPoint())), "inside the touch line");
         }
         // A white line of the penalty area (16.5 m from the goal line at x = 50 → x = 33.5), at y = 10.

@@ -23,8 +23,7 @@ using namespace athlos::ui;
 namespace {
 
 // The index carried by the picture the dock shows.
-long long indexOnScreen(const VideoDock& dock)
-{
+long long indexOnScreen(const VideoDock& dock) {
     const QImage image = dock.shownImage().convertToFormat(QImage::Format_RGB888);
     if (image.isNull()) return -1;
     return decodeFrameCode(image.constBits(), image.width(), image.height(), 3, int(image.bytesPerLine()));
@@ -36,8 +35,7 @@ class ViewsVideoDockTest : public QObject {
     Q_OBJECT
 
 private slots:
-    void initTestCase()
-    {
+    void initTestCase() {
         QVERIFY(dir_.isValid());
         testing::isolateSettings(dir_.filePath(QStringLiteral("settings")));
         // 25 fps, 8 s, inter-coded (mp4v, GOP 12) when available, else MJPG.
@@ -53,8 +51,7 @@ private slots:
         }
     }
 
-    void frameFollowsCursorAndOffset()
-    {
+    void frameFollowsCursorAndOffset() {
         MainWindow window;
         window.setInteractive(false);
         window.resize(1280, 800);
@@ -137,8 +134,7 @@ private slots:
         QCOMPARE(indexOnScreen(*dock), static_cast<long long>(std::floor(0.13 * 59 * 25 + 1e-6)));
     }
 
-    void markingAnEventPairSetsTheOffset()
-    {
+    void markingAnEventPairSetsTheOffset() {
         MainWindow window;
         window.setInteractive(false);
         window.resize(1280, 800);
@@ -176,8 +172,7 @@ private slots:
         QVERIFY(std::abs(VideoLink::of(**reopened, QStringLiteral("run1"))->offset - 8.5) < 1e-9);
     }
 
-    void missingVideoShowsAMessage()
-    {
+    void missingVideoShowsAMessage() {
         MainWindow window;
         window.setInteractive(false);
         auto project = testing::makeProject(dir_.filePath(QStringLiteral("gone.athlos")));
@@ -194,14 +189,14 @@ private slots:
         QVERIFY(VideoLink::of(*window.project(), QStringLiteral("run1")).has_value());
     }
 
-    void toolAndScreenshotViewAreRegistered()
-    {
+    void toolAndScreenshotViewAreRegistered() {
         const auto& tools = registeredTools();
         QVERIFY(std::any_of(tools.begin(), tools.end(), [](const ToolEntry& t) {
             return t.id == QLatin1String("video") && QLatin1String(t.menu) == QLatin1String("View");
         }));
         const auto& views = registeredViews();
-        auto it = std::find_if(views.begin(), views.end(), [](const ViewEntry& v) { return v.name == QLatin1String("video"); });
+        auto it = std::find_if(views.begin(), views.end(),
+                               [](const ViewEntry& v) { return v.name == QLatin1String("video"); });
         QVERIFY(it != views.end());
 
         MainWindow window;

@@ -36,11 +36,11 @@ public:
 };
 
 // Every item of the project with its row count: equal snapshots mean an unchanged project.
-QStringList snapshot(const Project& project)
-{
+QStringList snapshot(const Project& project) {
     QStringList items;
     for (const auto& [name, rec] : project.recordings()) {
-        for (const auto& [item, stream] : rec.streams) items << name + '/' + item + ':' + QString::number(stream.info().rows);
+        for (const auto& [item, stream] : rec.streams)
+            items << name + '/' + item + ':' + QString::number(stream.info().rows);
         for (const auto& [item, table] : rec.tables) items << name + '/' + item;
         items << name + QStringLiteral(" metadata ") + QString::number(rec.metadata.size());
     }
@@ -56,8 +56,7 @@ private slots:
     void initTestCase() { testing::isolateSettings(dir_.filePath(QStringLiteral("settings"))); }
     void init() { project_ = testing::makeProject(dir_.filePath(QStringLiteral("p.athlos"))); }
 
-    void twoCsvsBecomeTwoRecordingsInSi()
-    {
+    void twoCsvsBecomeTwoRecordingsInSi() {
         const QString a = write(QStringLiteral("a/sprint1.csv"), exportText(1.0));
         const QString b = write(QStringLiteral("a/sprint2.csv"), exportText(2.0));
         RecordingWorkspace ws(project_.get());
@@ -66,7 +65,8 @@ private slots:
         wizard.show();
         wizard.addFiles({a, b});
         QCOMPARE(wizard.filesPage()->table()->rowCount(), 2);
-        QCOMPARE(wizard.filesPage()->table()->item(1, ImportWizardFilesPage::RecordingColumn)->text(), QStringLiteral("sprint2"));
+        QCOMPARE(wizard.filesPage()->table()->item(1, ImportWizardFilesPage::RecordingColumn)->text(),
+                 QStringLiteral("sprint2"));
 
         wizard.next();
         QCOMPARE(wizard.currentId(), int(ImportWizard::MappingPage));
@@ -88,7 +88,9 @@ private slots:
         QCOMPARE(mapping->item(3, ImportWizardMappingPage::StoredColumn)->text(), QStringLiteral("rad/s"));
         page->unitCombo(3)->setCurrentText(QStringLiteral("m"));  // a length is no angular rate
         QCOMPARE(mapping->item(3, ImportWizardMappingPage::StoredColumn)->text(), QStringLiteral("error"));
-        QVERIFY(mapping->item(3, ImportWizardMappingPage::StoredColumn)->toolTip().contains(QStringLiteral("cannot be converted")));
+        QVERIFY(mapping->item(3, ImportWizardMappingPage::StoredColumn)
+                    ->toolTip()
+                    .contains(QStringLiteral("cannot be converted")));
         page->unitCombo(3)->setCurrentText(QStringLiteral("deg/s"));
         QCOMPARE(mapping->item(3, ImportWizardMappingPage::StoredColumn)->text(), QStringLiteral("rad/s"));
         grab(wizard, "import-wizard-mapping.png");
@@ -123,16 +125,17 @@ private slots:
         QVERIFY(std::abs(d1.at(0, 1) - std::numbers::pi) < 1e-12);  // 180 deg/s
         const StreamData& d2 = **s2->data();
         QCOMPARE(d2.at(1, 0), 2.0 * 1.0 * 9.80665);
-        QCOMPARE(project_->recording(QStringLiteral("sprint1"))->metadata.value("athlete").toString(), QStringLiteral("Anna"));
+        QCOMPARE(project_->recording(QStringLiteral("sprint1"))->metadata.value("athlete").toString(),
+                 QStringLiteral("Anna"));
         QCOMPARE(ws.modifications, 1);
         QCOMPARE(ws.shown, QStringLiteral("sprint1/wrist"));
         QVERIFY(project_->isModified());
     }
 
-    void badCellIsListedWithLineAndNothingIsWritten()
-    {
+    void badCellIsListedWithLineAndNothingIsWritten() {
         const QString good = write(QStringLiteral("b/good.csv"), QByteArray("t,acc_x\n0,1\n0.01,2\n"));
-        const QString bad = write(QStringLiteral("b/bad.csv"), QByteArray("t,acc_x,acc_y\n0,1,2\n0.01,1,2\n0.02,1,abc\n"));
+        const QString bad =
+            write(QStringLiteral("b/bad.csv"), QByteArray("t,acc_x,acc_y\n0,1,2\n0.01,1,2\n0.02,1,abc\n"));
         RecordingWorkspace ws(project_.get());
         const QStringList before = snapshot(*project_);
         ImportWizard wizard(ws);
@@ -157,14 +160,16 @@ private slots:
         // Going back and skipping the bad column fixes it.
         wizard.back();
         child<QComboBox>(&wizard, "fileCombo")->setCurrentIndex(1);
-        wizard.mappingPage()->mappingTable()->item(2, ImportWizardMappingPage::ImportColumn)->setCheckState(Qt::Unchecked);
+        wizard.mappingPage()
+            ->mappingTable()
+            ->item(2, ImportWizardMappingPage::ImportColumn)
+            ->setCheckState(Qt::Unchecked);
         wizard.next();
         QVERIFY2(wizard.problems().isEmpty(), qPrintable(wizard.problems().join('\n')));
         QVERIFY(wizard.button(QWizard::FinishButton)->isEnabled());
     }
 
-    void folderIsOneFilePerAthlete()
-    {
+    void folderIsOneFilePerAthlete() {
         write(QStringLiteral("team/anna.csv"), QByteArray("t,acc_x\n0,1\n0.01,2\n"));
         write(QStringLiteral("team/ben.csv"), QByteArray("t,acc_x\n0,3\n0.01,4\n"));
         write(QStringLiteral("team/notes.md"), QByteArray("not data\n"));
@@ -183,21 +188,24 @@ private slots:
         wizard.next();
         QVERIFY2(wizard.problems().isEmpty(), qPrintable(wizard.problems().join('\n')));
         QVERIFY(wizard.importAll());
-        QCOMPARE(project_->recording(QStringLiteral("anna"))->metadata.value("athlete").toString(), QStringLiteral("Anna Berg"));
-        QCOMPARE(project_->recording(QStringLiteral("ben-run"))->metadata.value("athlete").toString(), QStringLiteral("ben"));
+        QCOMPARE(project_->recording(QStringLiteral("anna"))->metadata.value("athlete").toString(),
+                 QStringLiteral("Anna Berg"));
+        QCOMPARE(project_->recording(QStringLiteral("ben-run"))->metadata.value("athlete").toString(),
+                 QStringLiteral("ben"));
         QCOMPARE((**project_->stream(QStringLiteral("ben-run/imu"))->data()).at(1, 0), 4.0);
     }
 
     // Clock times with the date given, a text label column into annotations, a roster naming the
     // athlete: the wizard offers what `athlos import` does (--time-column, --date, --labels,
     // --label-names, --roster).
-    void clockTimesLabelsAndRoster()
-    {
+    void clockTimesLabelsAndRoster() {
         QByteArray text = "Time,acc_x,acc_y,acc_z,label\n";
         for (int i = 0; i < 6; ++i)
-            text += "10:00:00." + QByteArray::number(10 * i).rightJustified(3, '0') + ",0,0,9.81," + (i < 4 ? "0" : "1") + "\n";
+            text += "10:00:00." + QByteArray::number(10 * i).rightJustified(3, '0') + ",0,0,9.81," +
+                    (i < 4 ? "0" : "1") + "\n";
         const QString file = write(QStringLiteral("g/walk.csv"), text);
-        const QString roster = write(QStringLiteral("g/roster.csv"), QByteArray("file,athlete,number\nwalk,Anna Berg,7\nghost.csv,X,1\n"));
+        const QString roster =
+            write(QStringLiteral("g/roster.csv"), QByteArray("file,athlete,number\nwalk,Anna Berg,7\nghost.csv,X,1\n"));
         RecordingWorkspace ws(project_.get());
         ImportWizard wizard(ws);
         wizard.setShowProgress(false);
@@ -212,7 +220,8 @@ private slots:
         QVERIFY(!wizard.applyRoster(file));  // no 'file' column: refused, naming it
 
         wizard.next();
-        child<QComboBox>(&wizard, "kindCombo")->setCurrentIndex(child<QComboBox>(&wizard, "kindCombo")->findData("imu"));
+        child<QComboBox>(&wizard, "kindCombo")
+            ->setCurrentIndex(child<QComboBox>(&wizard, "kindCombo")->findData("imu"));
         auto* timeColumn = child<QComboBox>(&wizard, "timeColumnCombo");
         timeColumn->setCurrentIndex(timeColumn->findText(QStringLiteral("Time")));
         child<QComboBox>(&wizard, "timeUnitCombo")->setCurrentText(QStringLiteral("hh:mm:ss.fff"));
@@ -237,7 +246,8 @@ private slots:
         const Stream* stream = project_->stream(QStringLiteral("walk/imu"));
         QVERIFY(stream);
         QCOMPARE(stream->info().columnNames(), (QStringList{"acc_x", "acc_y", "acc_z"}));
-        QCOMPARE(stream->info().attributes.value(QStringLiteral("t0_utc")).toString(), QStringLiteral("2024-05-01T10:00:00Z"));
+        QCOMPARE(stream->info().attributes.value(QStringLiteral("t0_utc")).toString(),
+                 QStringLiteral("2024-05-01T10:00:00Z"));
         QCOMPARE((**stream->data()).t[5], 0.05);
         const Recording* recording = project_->recording(QStringLiteral("walk"));
         QCOMPARE(recording->metadata.value(QStringLiteral("athlete")).toString(), QStringLiteral("Anna Berg"));
@@ -247,8 +257,7 @@ private slots:
         QCOMPARE(recording->annotations[1].tStart, 0.04);
     }
 
-    void existingNamesAreFlaggedUntilOverwrite()
-    {
+    void existingNamesAreFlaggedUntilOverwrite() {
         const QString file = write(QStringLiteral("c/run1.csv"), QByteArray("t,acc_x\n0,1\n0.01,2\n"));
         RecordingWorkspace ws(project_.get());
         ImportWizard wizard(ws);
@@ -268,8 +277,7 @@ private slots:
         QCOMPARE(project_->stream(QStringLiteral("run1/imu"))->info().rows, 2);
     }
 
-    void beaconTableHasNoTimeColumn()
-    {
+    void beaconTableHasNoTimeColumn() {
         const QString file = write(QStringLiteral("e/anchors.csv"), QByteArray("id,x,y,z\nB1,0,0,2\nB2,10,0,2\n"));
         RecordingWorkspace ws(project_.get());
         ImportWizard wizard(ws);
@@ -288,8 +296,7 @@ private slots:
         QCOMPARE(ws.shown, QString());  // no stream to show
     }
 
-    void cancelLeavesProjectUnchanged()
-    {
+    void cancelLeavesProjectUnchanged() {
         const QString a = write(QStringLiteral("d/x1.csv"), exportText(1.0));
         const QString b = write(QStringLiteral("d/x2.csv"), exportText(2.0));
         RecordingWorkspace ws(project_.get());
@@ -301,7 +308,11 @@ private slots:
         wizard.setTaskRunner([&](const QString&, const BackgroundTask::Job& job) {
             ++jobs;
             CancelToken token;
-            Progress progress([&](double fraction, const QString&) { if (cancelImport && fraction >= 0.5) token.cancel(); }, token);
+            Progress progress(
+                [&](double fraction, const QString&) {
+                    if (cancelImport && fraction >= 0.5) token.cancel();
+                },
+                token);
             BackgroundTask::Outcome outcome;
             outcome.status = job(progress);
             outcome.cancelled = token.isCancelled();
@@ -322,8 +333,7 @@ private slots:
         QVERIFY(!project_->stream(QStringLiteral("x1/imu")));
     }
 
-    void launchesFromFileMenu()
-    {
+    void launchesFromFileMenu() {
         MainWindow window;
         window.setInteractive(false);
         window.setProject(std::shared_ptr<Project>(testing::makeProject(dir_.filePath(QStringLiteral("m.athlos")))));
@@ -338,32 +348,28 @@ private slots:
 
 private:
     template <class T>
-    static T* child(QObject* parent, const char* name)
-    {
+    static T* child(QObject* parent, const char* name) {
         T* w = parent->findChild<T*>(QString::fromLatin1(name));
         if (!w) qFatal("no child %s", name);
         return w;
     }
 
     // ATHLOS_GRAB_DIR=<dir>: saves the page as a PNG there, to look at.
-    static void grab(QWidget& widget, const char* name)
-    {
+    static void grab(QWidget& widget, const char* name) {
         const QString dir = qEnvironmentVariable("ATHLOS_GRAB_DIR");
         if (!dir.isEmpty()) widget.grab().save(QDir(dir).filePath(QString::fromLatin1(name)));
     }
 
     // A sports-watch export: a text date, time in ms, acc in g, gyro in deg/s, and a column no kind knows.
-    static QByteArray exportText(double scale)
-    {
+    static QByteArray exportText(double scale) {
         QByteArray text = "Date;Time [ms];AccX [g];GyroZ [deg/s];Load\n";
         for (int i = 0; i < 3; ++i)
-            text += "2024-05-01;" + QByteArray::number(10 * i) + ';' + QByteArray::number(scale * (0.5 + 0.5 * i)) + ';' +
-                    QByteArray::number(180 - 90 * i) + ';' + QByteArray::number(i) + '\n';
+            text += "2024-05-01;" + QByteArray::number(10 * i) + ';' + QByteArray::number(scale * (0.5 + 0.5 * i)) +
+                    ';' + QByteArray::number(180 - 90 * i) + ';' + QByteArray::number(i) + '\n';
         return text;
     }
 
-    QString write(const QString& name, const QByteArray& content)
-    {
+    QString write(const QString& name, const QByteArray& content) {
         const QString path = dir_.filePath(name);
         QDir().mkpath(QFileInfo(path).absolutePath());
         QFile f(path);

@@ -36,7 +36,8 @@ public:
         if (r.processorId == "lps-calibration") {
             Table beacons = *project_->table(r.inputs[1]);
             for (TableColumn& c : beacons.columns)
-                if (c.name == "x") for (double& v : c.numbers) v += 0.5;
+                if (c.name == "x")
+                    for (double& v : c.numbers) v += 0.5;
             beacons.provenance.processorId = r.processorId;
             project_->putTable(r.output, beacons);
             Table report;
@@ -148,7 +149,8 @@ private slots:
         QVERIFY2(validated.ok(), validated.ok() ? "" : qPrintable(validated.message()));
         QCOMPARE(ws.requests[1].processorId, QStringLiteral("lps-positioning"));
         QCOMPARE(ws.requests[1].inputs, (QStringList{"walk/tdoa", "walk/beacons-calibrated"}));
-        const QStringList items{"walk/beacons-calibrated", "walk/beacons-calibrated-report", "walk/beacons-calibrated-walk"};
+        const QStringList items{"walk/beacons-calibrated", "walk/beacons-calibrated-report",
+                                "walk/beacons-calibrated-walk"};
         QCOMPARE(wizard.resultItems(), items);
         QCOMPARE(wizard.residualPlot()->plottableCount(), 2);  // before and after bars
         QCOMPARE(wizard.resultView()->beaconCurve("calibrated")->dataCount(), 2);

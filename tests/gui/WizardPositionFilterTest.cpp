@@ -57,8 +57,9 @@ public:
         p.inputs = {{request.inputs.front(), input->info().contentHash}};
         StreamInfo info;
         info.kind = QStringLiteral("trajectory");
-        info.columns = {{"x", "m"}, {"y", "m"}, {"speed", "m/s"}, {"heading", "rad"},
-                        {"turn_rate", "rad/s"}, {"accel", "m/s^2"}, {"outlier", "1"}};
+        info.columns = {
+            {"x", "m"},         {"y", "m"},      {"speed", "m/s"}, {"heading", "rad"}, {"turn_rate", "rad/s"},
+            {"accel", "m/s^2"}, {"outlier", "1"}};
         info.provenance = p;
         project.putStream(request.output, Stream(info, std::move(out)));
         StreamInfo flagInfo;
@@ -307,8 +308,10 @@ private slots:
         window.setProject(shared);
         QVERIFY(!it->prepare(window).ok());
 
-        RecordingWorkspace::storeFakeResult(*shared, RunRequest{QStringLiteral("position-filter"), {QStringLiteral("run1/lps")},
-                                                                QStringLiteral("run1/track"), {{"track_x", 2.0}}});
+        RecordingWorkspace::storeFakeResult(*shared, RunRequest{QStringLiteral("position-filter"),
+                                                                {QStringLiteral("run1/lps")},
+                                                                QStringLiteral("run1/track"),
+                                                                {{"track_x", 2.0}}});
         QCOMPARE(TrackTrajectoryView::findResult(*shared), QStringLiteral("run1/track"));
         QCOMPARE(TrackTrajectoryView::trackOf(*shared, QStringLiteral("run1/track")).pose().x, 2.0);
         const Status status = it->prepare(window);

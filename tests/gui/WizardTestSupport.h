@@ -20,8 +20,7 @@ namespace athlos::testing {
 class WorkspaceDouble : public ui::Workspace {
 public:
     explicit WorkspaceDouble(Project* project) : project_(project) {}
-    ~WorkspaceDouble() override
-    {
+    ~WorkspaceDouble() override {
         qDeleteAll(docks);
         qDeleteAll(views);
     }
@@ -35,8 +34,7 @@ public:
     void addView(QWidget* view, const QString&) override { views.append(view); }
     ui::WorkspaceNotifier* notifier() override { return &notifier_; }
     QString currentItem() const override { return selected; }
-    bool selectItem(const QString& path) override
-    {
+    bool selectItem(const QString& path) override {
         selected = path;
         return true;
     }

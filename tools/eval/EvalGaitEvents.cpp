@@ -33,7 +33,8 @@ int main(int argc, char** argv) {
     }
     const bool list = args.contains(QStringLiteral("--list"));  // every stride of the stair files
     double tolMs = 50.0;
-    if (const qsizetype i = args.indexOf(QStringLiteral("--tolerance")); i > 0 && i + 1 < args.size()) tolMs = args[i + 1].toDouble();
+    if (const qsizetype i = args.indexOf(QStringLiteral("--tolerance")); i > 0 && i + 1 < args.size())
+        tolMs = args[i + 1].toDouble();
     const QDir dir(args[1]);
     auto v = validateGaitmap(dir.filePath(QStringLiteral("imu_sample_ic_stride.csv")),
                              dir.filePath(QStringLiteral("stride_borders_sample_ic_stride.csv")), tolMs / 1000.0);
@@ -62,12 +63,15 @@ int main(int argc, char** argv) {
             }
             if (list)
                 for (const auto& s : f.strides)
-                    std::printf("  %8.3f–%8.3f s (%.3f s)  tc %.3f  min_vel %.3f  swing peak %.2f rad/s  rest %.2f rad/s  confidence %.2f\n",
-                                s.tStart, s.tEnd, s.tEnd - s.tStart, s.tTc, s.tMinVel, s.swingPeak, s.restGyr, s.confidence);
+                    std::printf(
+                        "  %8.3f–%8.3f s (%.3f s)  tc %.3f  min_vel %.3f  swing peak %.2f rad/s  rest %.2f rad/s  "
+                        "confidence %.2f\n",
+                        s.tStart, s.tEnd, s.tEnd - s.tStart, s.tTc, s.tMinVel, s.swingPeak, s.restGyr, s.confidence);
             std::sort(times.begin(), times.end());
-            std::printf("%s %-5s (%.1f Hz, swing sign %+d): %zu ICs, %zu strides, median stride %.3f s, mean confidence %.2f\n",
-                        stairs, qUtf8Printable(f.foot), f.rate, f.swingSign, f.ics.size(), f.strides.size(),
-                        times.empty() ? 0.0 : times[times.size() / 2], times.empty() ? 0.0 : conf / double(times.size()));
+            std::printf(
+                "%s %-5s (%.1f Hz, swing sign %+d): %zu ICs, %zu strides, median stride %.3f s, mean confidence %.2f\n",
+                stairs, qUtf8Printable(f.foot), f.rate, f.swingSign, f.ics.size(), f.strides.size(),
+                times.empty() ? 0.0 : times[times.size() / 2], times.empty() ? 0.0 : conf / double(times.size()));
         }
     }
     return 0;

@@ -28,7 +28,9 @@ void printZones(const char* title, const std::array<std::vector<double>, FusionM
         mean /= static_cast<double>(v.size());
         for (double x : v) var += (x - mean) * (x - mean);
         const double sd = std::sqrt(var / static_cast<double>(v.size()));
-        const auto q = [&](double p) { return v[std::min(v.size() - 1, static_cast<std::size_t>(p * static_cast<double>(v.size())))]; };
+        const auto q = [&](double p) {
+            return v[std::min(v.size() - 1, static_cast<std::size_t>(p * static_cast<double>(v.size())))];
+        };
         std::printf("  %.2f±%.2f [%.2f,%.2f]", mean, sd, q(0.05), q(0.95));
     }
     std::printf("\n");
@@ -39,8 +41,10 @@ int main(int argc, char** argv) {
     const int sessions = argc > 1 ? std::max(1, std::atoi(argv[1])) : 6;
     GnssImuEkf::Params params;
     if (argc > 2) {
-        if (!std::strcmp(argv[2], "kalman")) params.attitude = AttitudeSource::Kalman;
-        else if (!std::strcmp(argv[2], "ekf")) params.attitude = AttitudeSource::Ekf;
+        if (!std::strcmp(argv[2], "kalman"))
+            params.attitude = AttitudeSource::Kalman;
+        else if (!std::strcmp(argv[2], "ekf"))
+            params.attitude = AttitudeSource::Ekf;
         else if (std::strcmp(argv[2], "orientation")) {
             std::fprintf(stderr, "attitude: use orientation, kalman or ekf\n");
             return 2;
@@ -58,8 +62,8 @@ int main(int argc, char** argv) {
                     m.gnssSpeedRmse);
         mergeFusionMetrics(all, m, s);
     }
-    std::printf("%-8s %14.3f %14.3f %14.3f %14.3f   (position RMSE %.0f %% below GNSS)\n\n", "MEAN", all.fusedPositionRmse,
-                all.gnssPositionRmse, all.fusedSpeedRmse, all.gnssSpeedRmse,
+    std::printf("%-8s %14.3f %14.3f %14.3f %14.3f   (position RMSE %.0f %% below GNSS)\n\n", "MEAN",
+                all.fusedPositionRmse, all.gnssPositionRmse, all.fusedSpeedRmse, all.gnssSpeedRmse,
                 100.0 * (1.0 - all.fusedPositionRmse / all.gnssPositionRmse));
     std::printf("%-28s  %-22s  %-22s  %-22s  %-22s  %-22s\n", "per 2 m zone of 10 m sprints", "[0,2) m", "[2,4) m",
                 "[4,6) m", "[6,8) m", "[8,10) m");

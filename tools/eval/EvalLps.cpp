@@ -99,27 +99,35 @@ CalibrationRun calibrationRun(std::uint64_t seed, const Perturbation& level) {
     run.etaInitial = LpsCalibration::nrmsr(clean.epochs, guess, kRunHeight) / ref;
     run.etaCalibrated = LpsCalibration::nrmsr(clean.epochs, calibrated, kRunHeight) / ref;
     run.beaconRmse = alignedRmse(calibrated.positions, surveyed.positions);
-    run.tagRmseSurveyed = tagRmse(position(test.epochs, surveyed, BeaconSelection::Method::Irls, kRunHeight), test.truth);
-    run.tagRmseCalibrated = tagRmse(position(test.epochs, calibrated, BeaconSelection::Method::Irls, kRunHeight), test.truth);
-    run.tagRmseGuessGauge = tagRmse(position(test.epochs, guessGauge, BeaconSelection::Method::Irls, kRunHeight), test.truth);
+    run.tagRmseSurveyed =
+        tagRmse(position(test.epochs, surveyed, BeaconSelection::Method::Irls, kRunHeight), test.truth);
+    run.tagRmseCalibrated =
+        tagRmse(position(test.epochs, calibrated, BeaconSelection::Method::Irls, kRunHeight), test.truth);
+    run.tagRmseGuessGauge =
+        tagRmse(position(test.epochs, guessGauge, BeaconSelection::Method::Irls, kRunHeight), test.truth);
     run.trackGauge = result && result->report.gauge.used == LpsCalibration::Gauge::Track;
     run.gaugeError = fitYawAboutPivot(calibrated.positions, surveyed.positions, surveyed.reference);
     run.seconds = seconds;
     if (std::getenv("LPS_EVAL_VERBOSE") && result)
-        std::fprintf(stderr, "seed %llu: surveyed %.3f auto %.3f guess %.3f | %s | theta %.2f mrad, residual yaw %.2f mrad, "
-                             "rms %.3f, coverage %.2f, inliers %.2f\n",
-                     static_cast<unsigned long long>(seed), run.tagRmseSurveyed, run.tagRmseCalibrated, run.tagRmseGuessGauge,
-                     qPrintable(result->report.gauge.reason), 1e3 * result->report.gauge.fit.rotation, 1e3 * run.gaugeError,
-                     result->report.gauge.fit.rms, result->report.gauge.fit.coverage, result->report.gauge.fit.inlierShare);
+        std::fprintf(stderr,
+                     "seed %llu: surveyed %.3f auto %.3f guess %.3f | %s | theta %.2f mrad, residual yaw %.2f mrad, "
+                     "rms %.3f, coverage %.2f, inliers %.2f\n",
+                     static_cast<unsigned long long>(seed), run.tagRmseSurveyed, run.tagRmseCalibrated,
+                     run.tagRmseGuessGauge, qPrintable(result->report.gauge.reason),
+                     1e3 * result->report.gauge.fit.rotation, 1e3 * run.gaugeError, result->report.gauge.fit.rms,
+                     result->report.gauge.fit.coverage, result->report.gauge.fit.inlierShare);
     return run;
 }
 
 void calibrationStudy(int runs, std::uint64_t seed, bool quick) {
     std::printf("## Calibration (Figs. 3.6–3.9): %d runs per perturbation level\n\n", runs);
-    std::printf("| σxy / σz (m) | share η_calib < 1 | η_ini median | η_calib median | η_calib p90 | beacon RMSE median / p90 (m) "
-                "| tag RMSE surveyed (m) | tag RMSE calibrated (m) | Δ median / max (m) | share Δ ≤ 0.10 m "
-                "| gauge=guess: Δ median / max (m) | gauge=guess: share Δ ≤ 0.10 m | track gauge used | |yaw error| median / max (mrad) "
-                "| s per calibration |\n");
+    std::printf(
+        "| σxy / σz (m) | share η_calib < 1 | η_ini median | η_calib median | η_calib p90 | beacon RMSE median / p90 "
+        "(m) "
+        "| tag RMSE surveyed (m) | tag RMSE calibrated (m) | Δ median / max (m) | share Δ ≤ 0.10 m "
+        "| gauge=guess: Δ median / max (m) | gauge=guess: share Δ ≤ 0.10 m | track gauge used | |yaw error| median / "
+        "max (mrad) "
+        "| s per calibration |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     const auto& levels = thesisPerturbations();
     const std::size_t count = quick ? 3 : levels.size();
@@ -142,14 +150,15 @@ void calibrationStudy(int runs, std::uint64_t seed, bool quick) {
             yaw.push_back(1e3 * std::abs(run.gaugeError));
             secs.push_back(run.seconds);
         }
-        std::printf("| %g / %g | %.0f %% | %.2f | %.3f | %.3f | %.3f / %.3f | %.3f | %.3f | %+.3f / %+.3f | %.0f %% "
-                    "| %+.3f / %+.3f | %.0f %% | %d / %d | %.2f / %.2f | %.2f |\n",
-                    levels[l].sigmaXy, levels[l].sigmaZ, 100.0 * below / runs, percentile(etaI, 50), percentile(etaC, 50),
-                    percentile(etaC, 90), percentile(bRmse, 50), percentile(bRmse, 90), percentile(tS, 50),
-                    percentile(tC, 50), percentile(delta, 50), *std::max_element(delta.begin(), delta.end()),
-                    100.0 * within / runs, percentile(deltaGuess, 50), *std::max_element(deltaGuess.begin(), deltaGuess.end()),
-                    100.0 * withinGuess / runs, track, runs, percentile(yaw, 50), *std::max_element(yaw.begin(), yaw.end()),
-                    mean(secs));
+        std::printf(
+            "| %g / %g | %.0f %% | %.2f | %.3f | %.3f | %.3f / %.3f | %.3f | %.3f | %+.3f / %+.3f | %.0f %% "
+            "| %+.3f / %+.3f | %.0f %% | %d / %d | %.2f / %.2f | %.2f |\n",
+            levels[l].sigmaXy, levels[l].sigmaZ, 100.0 * below / runs, percentile(etaI, 50), percentile(etaC, 50),
+            percentile(etaC, 90), percentile(bRmse, 50), percentile(bRmse, 90), percentile(tS, 50), percentile(tC, 50),
+            percentile(delta, 50), *std::max_element(delta.begin(), delta.end()), 100.0 * within / runs,
+            percentile(deltaGuess, 50), *std::max_element(deltaGuess.begin(), deltaGuess.end()),
+            100.0 * withinGuess / runs, track, runs, percentile(yaw, 50), *std::max_element(yaw.begin(), yaw.end()),
+            mean(secs));
         std::fflush(stdout);
     }
     std::printf("\n");
@@ -176,7 +185,8 @@ void selectionStudy(int runs, std::uint64_t seed, bool grossOutliers) {
         const BeaconLayout beacons = sim.venue(VenueParams(), track);
         const double lane = track.laneOffset(1 + r % 8);
         const double speed = 5.0 + 2.0 * (r % 3) / 2.0;
-        const auto run = sim.measure(TdoaSimulator::laps(track, lane, speed, 10.0, r % 2 ? 2.0 : 1.0, kRunHeight), beacons);
+        const auto run =
+            sim.measure(TdoaSimulator::laps(track, lane, speed, 10.0, r % 2 ? 2.0 : 1.0, kRunHeight), beacons);
         for (std::size_t m = 0; m < 4; ++m)
             rmse[m].push_back(tagRmse(position(run.epochs, beacons, methods[m].method, kRunHeight), run.truth));
         // Oracle (method 10's spirit): the simulator's NLOS flags decide.
@@ -208,15 +218,22 @@ int main(int argc, char** argv) {
     bool calibration = true, selection = true;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
-        if (a == "--quick") quick = true;
-        else if (a == "--runs" && i + 1 < argc) runs = std::atoi(argv[++i]);
-        else if (a == "--nlos-runs" && i + 1 < argc) nlosRuns = std::atoi(argv[++i]);
-        else if (a == "--seed" && i + 1 < argc) seed = std::strtoull(argv[++i], nullptr, 10);
-        else if (a == "--only-calibration") selection = false;
-        else if (a == "--only-selection") calibration = false;
+        if (a == "--quick")
+            quick = true;
+        else if (a == "--runs" && i + 1 < argc)
+            runs = std::atoi(argv[++i]);
+        else if (a == "--nlos-runs" && i + 1 < argc)
+            nlosRuns = std::atoi(argv[++i]);
+        else if (a == "--seed" && i + 1 < argc)
+            seed = std::strtoull(argv[++i], nullptr, 10);
+        else if (a == "--only-calibration")
+            selection = false;
+        else if (a == "--only-selection")
+            calibration = false;
         else {
-            std::fprintf(stderr, "usage: athlos-eval-lps [--quick] [--runs N] [--nlos-runs N] [--seed S] "
-                                 "[--only-calibration|--only-selection]\n");
+            std::fprintf(stderr,
+                         "usage: athlos-eval-lps [--quick] [--runs N] [--nlos-runs N] [--seed S] "
+                         "[--only-calibration|--only-selection]\n");
             return 2;
         }
     }

@@ -46,7 +46,8 @@ Expected<Trial> loadTrial(const QString& file) {
             trial.movement = s->info().columnIndex(QStringLiteral("movement"));
         }
     }
-    if (!trial.imu || !trial.ref || trial.acc < 0 || trial.gyr < 0 || trial.mag < 0 || trial.qw < 0 || trial.movement < 0)
+    if (!trial.imu || !trial.ref || trial.acc < 0 || trial.gyr < 0 || trial.mag < 0 || trial.qw < 0 ||
+        trial.movement < 0)
         return makeError(QStringLiteral("%1: not a BROAD trial (imu/reference streams missing)").arg(file));
     trial.ts = trial.imu->medianInterval();
     return trial;
@@ -65,7 +66,8 @@ int main(int argc, char** argv) {
     const int ai = args.indexOf(QStringLiteral("--algorithms"));
     if (ai > 0 && ai + 1 < args.size()) algorithms = args.at(ai + 1).split(QLatin1Char(','));
     QDir dir(args.at(1));
-    const QStringList files = dir.entryList({QStringLiteral("*.hdf5"), QStringLiteral("*.h5")}, QDir::Files, QDir::Name);
+    const QStringList files =
+        dir.entryList({QStringLiteral("*.hdf5"), QStringLiteral("*.h5")}, QDir::Files, QDir::Name);
     if (files.isEmpty()) {
         std::fprintf(stderr, "no *.hdf5 trials in %s\n", qPrintable(args.at(1)));
         return 1;
@@ -94,8 +96,8 @@ int main(int argc, char** argv) {
             std::vector<math::Quat> ref(trial.ref->rows());
             std::vector<bool> maskVec(trial.ref->rows());
             for (std::size_t r = 0; r < ref.size(); ++r) {
-                ref[r] = math::Quat(trial.ref->at(r, trial.qw), trial.ref->at(r, trial.qw + 1), trial.ref->at(r, trial.qw + 2),
-                                    trial.ref->at(r, trial.qw + 3));
+                ref[r] = math::Quat(trial.ref->at(r, trial.qw), trial.ref->at(r, trial.qw + 1),
+                                    trial.ref->at(r, trial.qw + 2), trial.ref->at(r, trial.qw + 3));
                 maskVec[r] = trial.ref->at(r, trial.movement) != 0.0;
             }
             std::unique_ptr<bool[]> mask(new bool[ref.size()]);

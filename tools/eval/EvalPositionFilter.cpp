@@ -31,10 +31,11 @@ struct Options {
 };
 
 void usage() {
-    std::fprintf(stderr,
-                 "usage: athlos-eval-position-filter [--runs N] [--train N] [--seed S] [--quick] [--smoother none|rts]\n"
-                 "  --runs N    test runs (default 30)      --train N   training runs for estimation (default 4)\n"
-                 "  --seed S    base seed (default 2016)    --quick     6 test / 2 training runs, small search\n");
+    std::fprintf(
+        stderr,
+        "usage: athlos-eval-position-filter [--runs N] [--train N] [--seed S] [--quick] [--smoother none|rts]\n"
+        "  --runs N    test runs (default 30)      --train N   training runs for estimation (default 4)\n"
+        "  --seed S    base seed (default 2016)    --quick     6 test / 2 training runs, small search\n");
 }
 
 TrackRunSimulator::Params runParams(std::uint64_t seed) {
@@ -80,11 +81,16 @@ int main(int argc, char** argv) {
             }
             return argv[++i];
         };
-        if (!std::strcmp(argv[i], "--runs")) o.runs = std::atoi(next("--runs"));
-        else if (!std::strcmp(argv[i], "--train")) o.train = std::atoi(next("--train"));
-        else if (!std::strcmp(argv[i], "--seed")) o.seed = std::strtoull(next("--seed"), nullptr, 10);
-        else if (!std::strcmp(argv[i], "--smoother")) o.smoother = next("--smoother");
-        else if (!std::strcmp(argv[i], "--quick")) o.quick = true;
+        if (!std::strcmp(argv[i], "--runs"))
+            o.runs = std::atoi(next("--runs"));
+        else if (!std::strcmp(argv[i], "--train"))
+            o.train = std::atoi(next("--train"));
+        else if (!std::strcmp(argv[i], "--seed"))
+            o.seed = std::strtoull(next("--seed"), nullptr, 10);
+        else if (!std::strcmp(argv[i], "--smoother"))
+            o.smoother = next("--smoother");
+        else if (!std::strcmp(argv[i], "--quick"))
+            o.quick = true;
         else {
             usage();
             return std::strcmp(argv[i], "--help") ? 2 : 0;
@@ -115,13 +121,14 @@ int main(int argc, char** argv) {
         ModelKind model;
     };
     const std::vector<Variant> variants = {
-        {"U-EKF", FilterKind::Ekf, ModelKind::Unconstrained},   {"P-EKF", FilterKind::Ekf, ModelKind::Pseudo},
-        {"M-EKF", FilterKind::Ekf, ModelKind::Augmented},       {"U-SRUKF", FilterKind::SrUkf, ModelKind::Unconstrained},
-        {"P-SRUKF", FilterKind::SrUkf, ModelKind::Pseudo},      {"M-SRUKF", FilterKind::SrUkf, ModelKind::Augmented}};
+        {"U-EKF", FilterKind::Ekf, ModelKind::Unconstrained}, {"P-EKF", FilterKind::Ekf, ModelKind::Pseudo},
+        {"M-EKF", FilterKind::Ekf, ModelKind::Augmented},     {"U-SRUKF", FilterKind::SrUkf, ModelKind::Unconstrained},
+        {"P-SRUKF", FilterKind::SrUkf, ModelKind::Pseudo},    {"M-SRUKF", FilterKind::SrUkf, ModelKind::Augmented}};
     const std::vector<double> bins = {0.1, 0.5, 2.0, 5.0, 1e9};
 
-    std::printf("| Filter | RMSE mean ± SD (m) | slope vs input RMSE | err. Δt<0.1 s | 0.1–0.5 s | 0.5–2 s | 2–5 s | >5 s |"
-                " rel. time | estimated (q_p, q_v, q_a, q_φ, q_ω, r_x, r_y, α) |\n");
+    std::printf(
+        "| Filter | RMSE mean ± SD (m) | slope vs input RMSE | err. Δt<0.1 s | 0.1–0.5 s | 0.5–2 s | 2–5 s | >5 s |"
+        " rel. time | estimated (q_p, q_v, q_a, q_φ, q_ω, r_x, r_y, α) |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
     double baseTime = 0.0;
     for (const auto& variant : variants) {
@@ -140,7 +147,8 @@ int main(int argc, char** argv) {
         const auto t0 = std::chrono::steady_clock::now();
         int shown = -1;
         const auto estimate = PositionFilter::estimateNoise(params, trainSamples, search, [&](double f) {
-            if (int(10 * f) != shown) std::fprintf(stderr, "\r%-8s estimating noise %3d %%", variant.name, 10 * (shown = int(10 * f)));
+            if (int(10 * f) != shown)
+                std::fprintf(stderr, "\r%-8s estimating noise %3d %%", variant.name, 10 * (shown = int(10 * f)));
             return true;
         });
         const double estSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -167,7 +175,8 @@ int main(int argc, char** argv) {
                 while (last + 1 < run.measured.t.size() && run.measured.t[last + 1] <= out.t[k]) ++last;
                 const double since = out.t[k] - run.measured.t[last];
                 const double err = (p[k] - TrackRunSimulator::truthAt(run.truth, out.t[k])).norm();
-                const auto b = static_cast<std::size_t>(std::lower_bound(bins.begin(), bins.end(), since) - bins.begin());
+                const auto b =
+                    static_cast<std::size_t>(std::lower_bound(bins.begin(), bins.end(), since) - bins.begin());
                 binSum[b] += err;
                 binCount[b] += 1;
             }
@@ -181,7 +190,8 @@ int main(int argc, char** argv) {
             binCount[b] > 0 ? std::printf(" %.2f |", binSum[b] / binCount[b]) : std::printf(" – |");
         const auto& n = params.noise;
         std::printf(" %.0f %% | %.2g, %.2g, %.2g, %.2g, %.2g, %.2g, %.2g, %.3g |\n", 100.0 * filterSeconds / baseTime,
-                    n.ctra.qPosition, n.ctra.qSpeed, n.ctra.qAccel, n.ctra.qHeading, n.ctra.qTurnRate, n.ctra.rX, n.ctra.rY, n.gate);
+                    n.ctra.qPosition, n.ctra.qSpeed, n.ctra.qAccel, n.ctra.qHeading, n.ctra.qTurnRate, n.ctra.rX,
+                    n.ctra.rY, n.gate);
         std::fflush(stdout);
     }
     const Stats in = stats(inputRmse);

@@ -67,10 +67,14 @@ void mergeFusionMetrics(FusionMetrics& all, const FusionMetrics& more, int count
     all.fusedSpeedRmse += w * (more.fusedSpeedRmse - all.fusedSpeedRmse);
     all.gnssSpeedRmse += w * (more.gnssSpeedRmse - all.gnssSpeedRmse);
     for (int z = 0; z < FusionMetrics::kZones; ++z) {
-        all.fusedZoneDistance[z].insert(all.fusedZoneDistance[z].end(), more.fusedZoneDistance[z].begin(), more.fusedZoneDistance[z].end());
-        all.fusedZoneSpeed[z].insert(all.fusedZoneSpeed[z].end(), more.fusedZoneSpeed[z].begin(), more.fusedZoneSpeed[z].end());
-        all.gnssZoneDistance[z].insert(all.gnssZoneDistance[z].end(), more.gnssZoneDistance[z].begin(), more.gnssZoneDistance[z].end());
-        all.gnssZoneSpeed[z].insert(all.gnssZoneSpeed[z].end(), more.gnssZoneSpeed[z].begin(), more.gnssZoneSpeed[z].end());
+        all.fusedZoneDistance[z].insert(all.fusedZoneDistance[z].end(), more.fusedZoneDistance[z].begin(),
+                                        more.fusedZoneDistance[z].end());
+        all.fusedZoneSpeed[z].insert(all.fusedZoneSpeed[z].end(), more.fusedZoneSpeed[z].begin(),
+                                     more.fusedZoneSpeed[z].end());
+        all.gnssZoneDistance[z].insert(all.gnssZoneDistance[z].end(), more.gnssZoneDistance[z].begin(),
+                                       more.gnssZoneDistance[z].end());
+        all.gnssZoneSpeed[z].insert(all.gnssZoneSpeed[z].end(), more.gnssZoneSpeed[z].begin(),
+                                    more.gnssZoneSpeed[z].end());
     }
 }
 

@@ -13,26 +13,45 @@ namespace athlos::events {
 
 Expected<std::vector<ReferenceStride>> readStrideBorders(const QString& path, double rate) {
     QFile file(path);
-    if (!file.open(QIODevice::ReadOnly | QIODevice::Text)) return makeError(QStringLiteral("%1: %2").arg(path, file.errorString()));
+    if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
+        return makeError(QStringLiteral("%1: %2").arg(path, file.errorString()));
     if (!(rate > 0.0)) return makeError(QStringLiteral("%1: sampling rate %2 Hz must be positive").arg(path).arg(rate));
     QTextStream in(&file);
     const QStringList header = in.readLine().trimmed().split(QLatin1Char(','));
     const int foot = int(header.indexOf(QStringLiteral("foot"))), start = int(header.indexOf(QStringLiteral("start"))),
               end = int(header.indexOf(QStringLiteral("end")));
     if (foot < 0 || start < 0 || end < 0)
-        return makeError(QStringLiteral("%1:1: expected columns foot, start, end (found: %2)").arg(path, header.join(QStringLiteral(", "))));
+        return makeError(QStringLiteral("%1:1: expected columns foot, start, end (found: %2)")
+                             .arg(path, header.join(QStringLiteral(", "))));
     std::vector<ReferenceStride> out;
     for (int line = 2; !in.atEnd(); ++line) {
         const QString text = in.readLine().trimmed();
         if (text.isEmpty()) continue;
         const QStringList f = text.split(QLatin1Char(','));
         if (f.size() < header.size())
-            return makeError(QStringLiteral("%1:%2: %3 fields, the header has %4").arg(path).arg(line).arg(f.size()).arg(header.size()));
+            return makeError(QStringLiteral("%1:%2: %3 fields, the header has %4")
+                                 .arg(path)
+                                 .arg(line)
+                                 .arg(f.size())
+                                 .arg(header.size()));
         bool okStart = false, okEnd = false;
         const double s = f[start].toDouble(&okStart), e = f[end].toDouble(&okEnd);
-        if (!okStart) return makeError(QStringLiteral("%1:%2:%3: start '%4' is not a number").arg(path).arg(line).arg(start + 1).arg(f[start]));
-        if (!okEnd) return makeError(QStringLiteral("%1:%2:%3: end '%4' is not a number").arg(path).arg(line).arg(end + 1).arg(f[end]));
-        if (e <= s) return makeError(QStringLiteral("%1:%2:%3: end %4 is not after start %5").arg(path).arg(line).arg(end + 1).arg(e).arg(s));
+        if (!okStart)
+            return makeError(QStringLiteral("%1:%2:%3: start '%4' is not a number")
+                                 .arg(path)
+                                 .arg(line)
+                                 .arg(start + 1)
+                                 .arg(f[start]));
+        if (!okEnd)
+            return makeError(
+                QStringLiteral("%1:%2:%3: end '%4' is not a number").arg(path).arg(line).arg(end + 1).arg(f[end]));
+        if (e <= s)
+            return makeError(QStringLiteral("%1:%2:%3: end %4 is not after start %5")
+                                 .arg(path)
+                                 .arg(line)
+                                 .arg(end + 1)
+                                 .arg(e)
+                                 .arg(s));
         out.push_back({f[foot].trimmed(), s / rate, e / rate});
     }
     return out;
@@ -63,16 +82,22 @@ IcScore scoreInitialContacts(const std::vector<ReferenceStride>& reference, cons
     for (const auto& s : strides) {
         ics.push_back(s.tStart);
         ics.push_back(s.tEnd);
-        if (!bouts.empty() && std::abs(bouts.back().second - s.tStart) < 1e-9) bouts.back().second = s.tEnd;
-        else bouts.push_back({s.tStart, s.tEnd});
+        if (!bouts.empty() && std::abs(bouts.back().second - s.tStart) < 1e-9)
+            bouts.back().second = s.tEnd;
+        else
+            bouts.push_back({s.tStart, s.tEnd});
     }
     std::sort(ics.begin(), ics.end());
-    ics.erase(std::unique(ics.begin(), ics.end(), [](double a, double b) { return std::abs(a - b) < 1e-9; }), ics.end());
+    ics.erase(std::unique(ics.begin(), ics.end(), [](double a, double b) { return std::abs(a - b) < 1e-9; }),
+              ics.end());
     score.referenceIcs = int(ics.size());
 
     // Greedy one-to-one matching, nearest first (the tolerance is far below half a stride, so at
     // most one reference IC is in reach of a detection anyway).
-    struct Pair { double d; std::size_t r, k; };
+    struct Pair {
+        double d;
+        std::size_t r, k;
+    };
     std::vector<Pair> pairs;
     for (std::size_t r = 0; r < ics.size(); ++r)
         for (std::size_t k = 0; k < detectedIcs.size(); ++k)

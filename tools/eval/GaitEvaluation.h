@@ -24,12 +24,12 @@ struct ReferenceStride {
 Expected<std::vector<ReferenceStride>> readStrideBorders(const QString& path, double rate);
 
 struct IcScore {
-    int referenceIcs = 0;       // distinct reference ICs
-    int matchedIcs = 0;         // reference ICs with a detected IC within the tolerance
-    int falseIcs = 0;           // detected ICs inside a reference bout that match no reference IC
+    int referenceIcs = 0;  // distinct reference ICs
+    int matchedIcs = 0;    // reference ICs with a detected IC within the tolerance
+    int falseIcs = 0;      // detected ICs inside a reference bout that match no reference IC
     int referenceStrides = 0;
-    int matchedStrides = 0;     // reference strides whose start and end both matched a detected stride
-    double meanErrorMs = 0.0;   // detected − reference over matched ICs
+    int matchedStrides = 0;    // reference strides whose start and end both matched a detected stride
+    double meanErrorMs = 0.0;  // detected − reference over matched ICs
     double sdErrorMs = 0.0;
     std::vector<double> errorsMs;
 
@@ -44,8 +44,8 @@ IcScore scoreInitialContacts(const std::vector<ReferenceStride>& reference, cons
 
 // Detection on one foot of an imported gaitmap recording.
 struct FootDetection {
-    QString foot;          // "left" / "right"
-    double rate = 0.0;     // Hz
+    QString foot;       // "left" / "right"
+    double rate = 0.0;  // Hz
     int swingSign = 0;
     std::vector<double> ics;
     std::vector<GaitStride> strides;
@@ -53,7 +53,8 @@ struct FootDetection {
 
 // Imports a gaitmap IMU CSV (both feet) and runs GaitEventDetector on each foot (ML axis y, swing
 // sign auto). Errors name the file.
-Expected<std::vector<FootDetection>> detectGaitmapFile(const QString& imuCsv, const GaitEventDetector::Params& params = {});
+Expected<std::vector<FootDetection>> detectGaitmapFile(const QString& imuCsv,
+                                                       const GaitEventDetector::Params& params = {});
 
 struct GaitValidation {
     IcScore left, right, total;

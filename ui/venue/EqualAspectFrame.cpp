@@ -5,24 +5,21 @@
 
 namespace athlos::ui {
 
-EqualAspectFrame::EqualAspectFrame(QCustomPlot* plot) : QObject(plot), plot_(plot)
-{
+EqualAspectFrame::EqualAspectFrame(QCustomPlot* plot) : QObject(plot), plot_(plot) {
     connect(plot_, &QCustomPlot::afterLayout, this, &EqualAspectFrame::fit);
     connect(plot_, &QCustomPlot::mousePress, this, [this] { framing_ = false; });
     connect(plot_, &QCustomPlot::mouseWheel, this, [this] { framing_ = false; });
     connect(plot_, &QCustomPlot::mouseDoubleClick, this, [this] { frameAll(); });
 }
 
-void EqualAspectFrame::frameAll(double margin)
-{
+void EqualAspectFrame::frameAll(double margin) {
     plot_->rescaleAxes();
     const QCPRange x = plot_->xAxis->range(), y = plot_->yAxis->range();
     const double mx = std::max(margin * x.size(), 1.0), my = std::max(margin * y.size(), 1.0);
     frameTo(QRectF(QPointF(x.lower - mx, y.lower - my), QPointF(x.upper + mx, y.upper + my)));
 }
 
-void EqualAspectFrame::frameTo(const QRectF& region)
-{
+void EqualAspectFrame::frameTo(const QRectF& region) {
     frame_ = region.normalized();
     framing_ = true;
     plot_->xAxis->setRange(frame_.left(), frame_.right());
@@ -30,8 +27,7 @@ void EqualAspectFrame::frameTo(const QRectF& region)
     plot_->replot();
 }
 
-void EqualAspectFrame::fit()
-{
+void EqualAspectFrame::fit() {
     const QRect rect = plot_->axisRect()->rect();
     if (rect.width() <= 0 || rect.height() <= 0) return;
     if (!framing_) {

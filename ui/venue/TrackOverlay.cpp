@@ -8,8 +8,7 @@ TrackOverlay::TrackOverlay(QCustomPlot* plot) : plot_(plot) {}
 
 TrackOverlay::~TrackOverlay() = default;  // the plot owns the curves
 
-QVector<QPointF> TrackOverlay::line(const TrackGeometry& track, double offset, int samples)
-{
+QVector<QPointF> TrackOverlay::line(const TrackGeometry& track, double offset, int samples) {
     const double length = track.referenceLength();
     const bool closed = track.kind() == TrackGeometry::Kind::Oval || track.polylineParams().closed;
     QVector<QPointF> points;
@@ -24,14 +23,12 @@ QVector<QPointF> TrackOverlay::line(const TrackGeometry& track, double offset, i
     return points;
 }
 
-void TrackOverlay::clear()
-{
+void TrackOverlay::clear() {
     for (QCPCurve* curve : std::as_const(curves_)) plot_->removePlottable(curve);
     curves_.clear();
 }
 
-void TrackOverlay::setTrack(const TrackGeometry& track)
-{
+void TrackOverlay::setTrack(const TrackGeometry& track) {
     clear();
     const bool oval = track.kind() == TrackGeometry::Kind::Oval;
     const double width = oval ? track.ovalParams().laneWidth : track.polylineParams().laneWidth;
@@ -43,8 +40,7 @@ void TrackOverlay::setTrack(const TrackGeometry& track)
     addLine(track, track.laneOffset(1), running, QStringLiteral("lane 1 running line"));
 }
 
-QCPCurve* TrackOverlay::addLine(const TrackGeometry& track, double offset, const QPen& pen, const QString& name)
-{
+QCPCurve* TrackOverlay::addLine(const TrackGeometry& track, double offset, const QPen& pen, const QString& name) {
     const QVector<QPointF> points = line(track, offset);
     QVector<double> x, y;
     x.reserve(points.size());

@@ -51,7 +51,8 @@ public:
     static Venue guess(const QRectF& extent);
 
     // Draws the venue (grass or track surface and its lines) over the whole device rectangle.
-    static void draw(QPainter& painter, const QTransform& worldToScreen, Venue venue, const QRectF& screen, Size size = {});
+    static void draw(QPainter& painter, const QTransform& worldToScreen, Venue venue, const QRectF& screen,
+                     Size size = {});
 
     // Football dimensions (IFAB Law 1), m.
     static constexpr double kPitchLength = 105.0, kPitchWidth = 68.0;

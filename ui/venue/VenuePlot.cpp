@@ -10,8 +10,7 @@
 
 namespace athlos::ui {
 
-VenuePlot::VenuePlot(QWidget* parent) : QWidget(parent)
-{
+VenuePlot::VenuePlot(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     plot_ = new QCustomPlot(this);
@@ -30,21 +29,18 @@ VenuePlot::VenuePlot(QWidget* parent) : QWidget(parent)
 
 VenuePlot::~VenuePlot() = default;
 
-void VenuePlot::setTrack(const TrackGeometry& track)
-{
+void VenuePlot::setTrack(const TrackGeometry& track) {
     overlay_->setTrack(track);
     refit();
 }
 
-QCPCurve* VenuePlot::beaconCurve(const QString& layer) const
-{
+QCPCurve* VenuePlot::beaconCurve(const QString& layer) const {
     for (const Layer& l : layers_)
         if (l.name == layer) return l.curve;
     return nullptr;
 }
 
-void VenuePlot::removeBeacons(const QString& layer)
-{
+void VenuePlot::removeBeacons(const QString& layer) {
     for (int i = 0; i < layers_.size(); ++i) {
         if (layers_[i].name != layer) continue;
         plot_->removePlottable(layers_[i].curve);
@@ -54,8 +50,7 @@ void VenuePlot::removeBeacons(const QString& layer)
     }
 }
 
-void VenuePlot::setBeacons(const QString& layer, const Table& beacons, const QColor& color)
-{
+void VenuePlot::setBeacons(const QString& layer, const Table& beacons, const QColor& color) {
     removeBeacons(layer);
     const TableColumn* id = beacons.column(QStringLiteral("id"));
     const TableColumn* x = beacons.column(QStringLiteral("x"));
@@ -83,8 +78,7 @@ void VenuePlot::setBeacons(const QString& layer, const Table& beacons, const QCo
     refit();
 }
 
-void VenuePlot::setWalk(const QVector<double>& x, const QVector<double>& y)
-{
+void VenuePlot::setWalk(const QVector<double>& x, const QVector<double>& y) {
     walk_->setData(x, y);
     refit();
 }

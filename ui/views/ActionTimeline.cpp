@@ -14,7 +14,7 @@
 namespace athlos::ui {
 
 namespace {
-constexpr int kLaneHeight = 24;     // preferred; lanes grow to fill the widget up to kMaxLaneHeight
+constexpr int kLaneHeight = 24;  // preferred; lanes grow to fill the widget up to kMaxLaneHeight
 constexpr int kMaxLaneHeight = 44;
 constexpr int kLaneGap = 4;
 constexpr int kAxisHeight = 20;
@@ -101,7 +101,8 @@ double ActionTimeline::visibleBegin() const { return time_ ? time_->visibleBegin
 double ActionTimeline::visibleEnd() const { return time_ ? time_->visibleEnd() : 1.0; }
 
 QRect ActionTimeline::timeArea() const {
-    return QRect(kLabelWidth, kMargin, std::max(10, width() - kLabelWidth - kMargin), height() - 2 * kMargin - kAxisHeight);
+    return QRect(kLabelWidth, kMargin, std::max(10, width() - kLabelWidth - kMargin),
+                 height() - 2 * kMargin - kAxisHeight);
 }
 
 QRect ActionTimeline::laneRect(int lane) const {
@@ -138,8 +139,9 @@ void ActionTimeline::paintEvent(QPaintEvent*) {
 
     if (lanes_.isEmpty()) {
         p.setPen(pal.color(QPalette::PlaceholderText));
-        p.drawText(rect(), Qt::AlignCenter, tr("No annotations in this recording. Annotate on the time series "
-                                               "or run an event detector (e.g. gait-events)."));
+        p.drawText(rect(), Qt::AlignCenter,
+                   tr("No annotations in this recording. Annotate on the time series "
+                      "or run an event detector (e.g. gait-events)."));
     }
     // Lanes: label column with count and mean duration, then the bars.
     for (int lane = 0; lane < lanes_.size(); ++lane) {
@@ -218,7 +220,8 @@ void ActionTimeline::paintEvent(QPaintEvent*) {
 }
 
 void ActionTimeline::mousePressEvent(QMouseEvent* event) {
-    if (event->button() == Qt::LeftButton && time_ && timeArea().adjusted(0, 0, 0, kAxisHeight).contains(event->position().toPoint())) {
+    if (event->button() == Qt::LeftButton && time_ &&
+        timeArea().adjusted(0, 0, 0, kAxisHeight).contains(event->position().toPoint())) {
         time_->setCursor(timeAt(event->position().toPoint().x()));
         event->accept();
         return;
@@ -228,7 +231,8 @@ void ActionTimeline::mousePressEvent(QMouseEvent* event) {
 
 void ActionTimeline::mouseMoveEvent(QMouseEvent* event) {
     // Dragging scrubs the cursor like on the time-series panels.
-    if ((event->buttons() & Qt::LeftButton) && time_ && timeArea().adjusted(0, 0, 0, kAxisHeight).contains(event->position().toPoint())) {
+    if ((event->buttons() & Qt::LeftButton) && time_ &&
+        timeArea().adjusted(0, 0, 0, kAxisHeight).contains(event->position().toPoint())) {
         time_->setCursor(timeAt(event->position().toPoint().x()));
         event->accept();
         return;

@@ -24,8 +24,7 @@
 namespace athlos::ui {
 
 ActionsView::ActionsView(const Project* project, TimeController* time, QWidget* parent)
-    : QWidget(parent), project_(project), time_(time)
-{
+    : QWidget(parent), project_(project), time_(time) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     auto* top = new QHBoxLayout;
@@ -43,8 +42,9 @@ ActionsView::ActionsView(const Project* project, TimeController* time, QWidget* 
 
     auto* body = new QHBoxLayout;
     timeline_ = new ActionTimeline(time, this);
-    timeline_->setToolTip(tr("Solid: manual annotations. Hatched: predicted by a processor, more opaque with "
-                             "higher confidence. Click to move the time cursor."));
+    timeline_->setToolTip(
+        tr("Solid: manual annotations. Hatched: predicted by a processor, more opaque with "
+           "higher confidence. Click to move the time cursor."));
     body->addWidget(timeline_, 1);
     table_ = new QTableWidget(0, 5, this);
     table_->setHorizontalHeaderLabels({tr("Class"), tr("Count"), tr("Predicted"), tr("Mean (s)"), tr("Confidence")});
@@ -87,16 +87,14 @@ ActionsView::ActionsView(const Project* project, TimeController* time, QWidget* 
     refresh();
 }
 
-QStringList ActionsView::annotatedRecordings(const Project& project)
-{
+QStringList ActionsView::annotatedRecordings(const Project& project) {
     QStringList names;
     for (const auto& [name, recording] : project.recordings())
         if (!recording.annotations.empty()) names << name;
     return names;
 }
 
-QString ActionsView::sourceStream(const Project& project, const QString& name)
-{
+QString ActionsView::sourceStream(const Project& project, const QString& name) {
     const Recording* rec = project.recording(name);
     if (!rec) return {};
     const QJsonObject sources = rec->metadata.value(QStringLiteral("annotation_provenance")).toObject();
@@ -111,20 +109,19 @@ QString ActionsView::sourceStream(const Project& project, const QString& name)
     return rec->streams.empty() ? QString() : name + QLatin1Char('/') + rec->streams.begin()->first;
 }
 
-Status ActionsView::setRecording(const QString& name)
-{
-    if (!project_ || !project_->recording(name))
-        return makeError(tr("no recording '%1' in this project").arg(name));
+Status ActionsView::setRecording(const QString& name) {
+    if (!project_ || !project_->recording(name)) return makeError(tr("no recording '%1' in this project").arg(name));
     if (recordingCombo_->findText(name) < 0) recordingCombo_->addItem(name);
-    if (recordingCombo_->currentText() != name) recordingCombo_->setCurrentText(name);  // refreshes
-    else refresh();
+    if (recordingCombo_->currentText() != name)
+        recordingCombo_->setCurrentText(name);  // refreshes
+    else
+        refresh();
     return {};
 }
 
 QString ActionsView::recording() const { return recordingCombo_->currentText(); }
 
-void ActionsView::refresh()
-{
+void ActionsView::refresh() {
     const Recording* rec = project_ ? project_->recording(recording()) : nullptr;
     timeline_->setAnnotations(rec ? rec->annotations : Annotations(), project_);
     const auto& stats = timeline_->classStats();
@@ -151,7 +148,8 @@ void ActionsView::refresh()
     int width = 2 * table_->frameWidth() + 2;
     for (int c = 0; c < table_->columnCount(); ++c) width += table_->columnWidth(c);
     table_->setFixedWidth(width);
-    summary_->setText(tr("%n annotation(s)", nullptr, total) + QStringLiteral(", ") + tr("%n predicted", nullptr, predicted));
+    summary_->setText(tr("%n annotation(s)", nullptr, total) + QStringLiteral(", ") +
+                      tr("%n predicted", nullptr, predicted));
     if (rec && (current_ >= int(rec->annotations.size()) ||
                 (current_ >= 0 && rec->annotations[std::size_t(current_)].source == QLatin1String("manual"))))
         current_ = -1;
@@ -159,8 +157,7 @@ void ActionsView::refresh()
     updateReview();
 }
 
-void ActionsView::setEditor(AnnotationEditor* editor)
-{
+void ActionsView::setEditor(AnnotationEditor* editor) {
     if (editor_) disconnect(editor_, nullptr, this, nullptr);
     editor_ = editor;
     if (editor_)
@@ -170,8 +167,7 @@ void ActionsView::setEditor(AnnotationEditor* editor)
     updateReview();
 }
 
-std::vector<int> ActionsView::predictedOrder() const
-{
+std::vector<int> ActionsView::predictedOrder() const {
     std::vector<int> order;
     const Recording* rec = project_ ? project_->recording(recording()) : nullptr;
     if (!rec) return order;
@@ -183,8 +179,7 @@ std::vector<int> ActionsView::predictedOrder() const
     return order;
 }
 
-void ActionsView::goTo(int index)
-{
+void ActionsView::goTo(int index) {
     current_ = index;
     const Recording* rec = project_ ? project_->recording(recording()) : nullptr;
     if (rec && index >= 0 && time_) {
@@ -198,19 +193,20 @@ void ActionsView::goTo(int index)
     updateReview();
 }
 
-bool ActionsView::reviewNext()
-{
+bool ActionsView::reviewNext() {
     const auto order = predictedOrder();
     if (order.empty()) return false;
     auto it = std::find(order.begin(), order.end(), current_);
-    if (it == order.end()) goTo(order.front());
-    else if (it + 1 != order.end()) goTo(*(it + 1));
-    else return false;
+    if (it == order.end())
+        goTo(order.front());
+    else if (it + 1 != order.end())
+        goTo(*(it + 1));
+    else
+        return false;
     return true;
 }
 
-bool ActionsView::reviewPrevious()
-{
+bool ActionsView::reviewPrevious() {
     const auto order = predictedOrder();
     auto it = std::find(order.begin(), order.end(), current_);
     if (it == order.end() || it == order.begin()) return false;
@@ -219,8 +215,7 @@ bool ActionsView::reviewPrevious()
 }
 
 // The first predicted annotation starting at or after t (after an accept or reject).
-void ActionsView::advanceFrom(double t)
-{
+void ActionsView::advanceFrom(double t) {
     const Recording* rec = project_ ? project_->recording(recording()) : nullptr;
     current_ = -1;
     if (rec)
@@ -232,8 +227,7 @@ void ActionsView::advanceFrom(double t)
     updateReview();
 }
 
-Status ActionsView::acceptCurrent()
-{
+Status ActionsView::acceptCurrent() {
     if (!editor_) return makeError(tr("Reviewing needs the annotation editor of the main window."));
     if (current_ < 0) return makeError(tr("No predicted action selected; use Next."));
     const double t = project_->recording(recording())->annotations[std::size_t(current_)].tStart;
@@ -243,8 +237,7 @@ Status ActionsView::acceptCurrent()
     return {};
 }
 
-Status ActionsView::rejectCurrent()
-{
+Status ActionsView::rejectCurrent() {
     if (!editor_) return makeError(tr("Reviewing needs the annotation editor of the main window."));
     if (current_ < 0) return makeError(tr("No predicted action selected; use Next."));
     const double t = project_->recording(recording())->annotations[std::size_t(current_)].tStart;
@@ -255,16 +248,16 @@ Status ActionsView::rejectCurrent()
     return {};
 }
 
-void ActionsView::updateReview()
-{
+void ActionsView::updateReview() {
     timeline_->setHighlighted(current_);
     const auto order = predictedOrder();
     const bool active = current_ >= 0 && editor_;
     acceptButton_->setEnabled(active);
     rejectButton_->setEnabled(active);
     if (current_ < 0) {
-        reviewLabel_->setText(order.empty() ? tr("No predicted actions to review.")
-                                            : tr("%n predicted action(s) to review; press Next.", nullptr, int(order.size())));
+        reviewLabel_->setText(order.empty()
+                                  ? tr("No predicted actions to review.")
+                                  : tr("%n predicted action(s) to review; press Next.", nullptr, int(order.size())));
         return;
     }
     const Annotation& a = project_->recording(recording())->annotations[std::size_t(current_)];
@@ -282,8 +275,7 @@ namespace {
 
 constexpr const char* kDockName = "actionTimelineDock";
 
-QDockWidget* makeDock(QWidget* window, ActionsView* view)
-{
+QDockWidget* makeDock(QWidget* window, ActionsView* view) {
     auto* dock = new QDockWidget(QCoreApplication::translate("athlos::ui::ActionsView", "Action timeline"), window);
     dock->setObjectName(QLatin1String(kDockName));
     dock->setAttribute(Qt::WA_DeleteOnClose);
@@ -291,8 +283,7 @@ QDockWidget* makeDock(QWidget* window, ActionsView* view)
     return dock;
 }
 
-void launchActionTimeline(Workspace& workspace)
-{
+void launchActionTimeline(Workspace& workspace) {
     Project* project = workspace.project();
     if (!project) return;
     if (auto* existing = workspace.window()->findChild<QDockWidget*>(QLatin1String(kDockName))) {
@@ -313,8 +304,7 @@ void launchActionTimeline(Workspace& workspace)
 
 // The foot IMU the predicted actions came from, with the annotations on its time series, and the
 // action timeline docked below, over the first ~15 s that have annotations.
-Status prepareActionsView(Workspace& workspace)
-{
+Status prepareActionsView(Workspace& workspace) {
     Project* project = workspace.project();
     const QStringList recordings = project ? ActionsView::annotatedRecordings(*project) : QStringList();
     if (recordings.isEmpty())
@@ -325,14 +315,16 @@ Status prepareActionsView(Workspace& workspace)
     QString recording = recordings.front();
     for (const QString& name : recordings) {
         const auto& all = project->recording(name)->annotations;
-        if (std::any_of(all.begin(), all.end(), [](const Annotation& a) { return a.source != QLatin1String("manual"); })) {
+        if (std::any_of(all.begin(), all.end(),
+                        [](const Annotation& a) { return a.source != QLatin1String("manual"); })) {
             recording = name;
             break;
         }
     }
     const QString stream = ActionsView::sourceStream(*project, recording);
     if (stream.isEmpty())
-        return makeError(QCoreApplication::translate("athlos::ui::ActionsView", "recording '%1' has no stream to plot").arg(recording));
+        return makeError(QCoreApplication::translate("athlos::ui::ActionsView", "recording '%1' has no stream to plot")
+                             .arg(recording));
     workspace.selectItem(stream);
     workspace.showTimeSeriesView();
     workspace.waitForPlots();

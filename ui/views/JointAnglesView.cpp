@@ -28,8 +28,7 @@ namespace {
 constexpr std::size_t kMaxPoints = 200000;  // per graph; thinned by a stride beyond
 const char* const kColumns[3] = {"flexion", "abduction", "rotation"};
 
-bool isJointAngles(const Stream& s)
-{
+bool isJointAngles(const Stream& s) {
     if (s.kind() != QLatin1String("joint-angles")) return false;
     for (const char* c : kColumns)
         if (s.info().columnIndex(QLatin1String(c)) < 0) return false;
@@ -43,8 +42,7 @@ struct Angles {
     std::array<std::vector<double>, 3> deg;
 };
 
-Angles readAngles(const Stream& stream)
-{
+Angles readAngles(const Stream& stream) {
     Angles out;
     auto data = stream.data();
     if (!data) return out;
@@ -59,8 +57,7 @@ Angles readAngles(const Stream& stream)
 }
 
 // Linear interpolation of v(t) at x; NaN outside [t.front(), t.back()].
-double interpolate(const std::vector<double>& t, const std::vector<double>& v, double x)
-{
+double interpolate(const std::vector<double>& t, const std::vector<double>& v, double x) {
     if (t.empty() || x < t.front() || x > t.back()) return std::numeric_limits<double>::quiet_NaN();
     const auto it = std::lower_bound(t.begin(), t.end(), x);
     const std::size_t j = std::size_t(it - t.begin());
@@ -69,8 +66,7 @@ double interpolate(const std::vector<double>& t, const std::vector<double>& v, d
     return v[j - 1] + f * (v[j] - v[j - 1]);
 }
 
-QVector<double> thinned(const std::vector<double>& v, std::size_t stride)
-{
+QVector<double> thinned(const std::vector<double>& v, std::size_t stride) {
     QVector<double> out;
     out.reserve(int(v.size() / stride + 1));
     for (std::size_t k = 0; k < v.size(); k += stride) out.append(v[k]);
@@ -79,8 +75,7 @@ QVector<double> thinned(const std::vector<double>& v, std::size_t stride)
 
 }  // namespace
 
-JointAnglesView::JointAnglesView(const Project* project, QWidget* parent) : QWidget(parent), project_(project)
-{
+JointAnglesView::JointAnglesView(const Project* project, QWidget* parent) : QWidget(parent), project_(project) {
     streamCombo_ = new QComboBox(this);
     streamCombo_->setObjectName(QStringLiteral("streamCombo"));
     if (project_) streamCombo_->addItems(jointAngleStreams(*project_));
@@ -124,8 +119,7 @@ JointAnglesView::JointAnglesView(const Project* project, QWidget* parent) : QWid
     refresh();
 }
 
-QStringList JointAnglesView::jointAngleStreams(const Project& project)
-{
+QStringList JointAnglesView::jointAngleStreams(const Project& project) {
     QStringList list;
     for (const QString& path : project.streamPaths()) {
         const Stream* s = project.stream(path);
@@ -134,8 +128,7 @@ QStringList JointAnglesView::jointAngleStreams(const Project& project)
     return list;
 }
 
-QString JointAnglesView::referenceFor(const Project& project, const QString& path)
-{
+QString JointAnglesView::referenceFor(const Project& project, const QString& path) {
     const Stream* stream = project.stream(path);
     const ItemPath item = ItemPath::parse(path);
     const Recording* recording = project.recording(item.recording);
@@ -143,15 +136,15 @@ QString JointAnglesView::referenceFor(const Project& project, const QString& pat
     const QJsonObject& a = stream->info().attributes;
     for (const auto& [name, candidate] : recording->streams) {
         const QJsonObject& b = candidate.info().attributes;
-        if (isJointAngles(candidate) && isReference(candidate) && b.value(QStringLiteral("joint")) == a.value(QStringLiteral("joint")) &&
+        if (isJointAngles(candidate) && isReference(candidate) &&
+            b.value(QStringLiteral("joint")) == a.value(QStringLiteral("joint")) &&
             b.value(QStringLiteral("side")) == a.value(QStringLiteral("side")))
             return item.recording + QLatin1Char('/') + name;
     }
     return {};
 }
 
-Status JointAnglesView::setStream(const QString& path)
-{
+Status JointAnglesView::setStream(const QString& path) {
     if (streamCombo_->findText(path) < 0)
         return makeError(tr("'%1' is not a joint-angles stream (flexion, abduction, rotation)").arg(path));
     streamCombo_->setCurrentText(path);
@@ -160,8 +153,7 @@ Status JointAnglesView::setStream(const QString& path)
 
 QString JointAnglesView::stream() const { return streamCombo_->currentText(); }
 
-void JointAnglesView::setTimeController(TimeController* controller)
-{
+void JointAnglesView::setTimeController(TimeController* controller) {
     if (controller_) disconnect(controller_, nullptr, this, nullptr);
     controller_ = controller;
     for (auto* cursor : cursors_) cursor->setVisible(controller_ != nullptr);
@@ -173,15 +165,13 @@ void JointAnglesView::setTimeController(TimeController* controller)
     onCursorChanged(controller_->cursor());
 }
 
-std::array<double, 3> JointAnglesView::valuesAt(double t) const
-{
+std::array<double, 3> JointAnglesView::valuesAt(double t) const {
     return {interpolate(t_, deg_[0], t), interpolate(t_, deg_[1], t), interpolate(t_, deg_[2], t)};
 }
 
 QString JointAnglesView::readoutText() const { return readout_->text(); }
 
-void JointAnglesView::refresh()
-{
+void JointAnglesView::refresh() {
     rmse_.clear();
     reference_.clear();
     t_.clear();
@@ -199,7 +189,8 @@ void JointAnglesView::refresh()
         Angles ref;
         if (const Stream* r = reference_.isEmpty() ? nullptr : project_->stream(reference_)) ref = readAngles(*r);
         const QJsonObject a = stream->info().attributes;
-        const QString label = tr("%1 %2").arg(a.value(QStringLiteral("side")).toString(), a.value(QStringLiteral("joint")).toString());
+        const QString label =
+            tr("%1 %2").arg(a.value(QStringLiteral("side")).toString(), a.value(QStringLiteral("joint")).toString());
         for (int i = 0; i < 3; ++i) {
             QCustomPlot* plot = plots_[std::size_t(i)];
             QCPGraph* graph = plot->addGraph();
@@ -226,7 +217,7 @@ void JointAnglesView::refresh()
             refGraph->setData(thinned(ref.t, rs), thinned(ref.deg[std::size_t(i)], rs), true);
         }
         note_->setText(reference_.isEmpty() ? tr("No reference angles for this joint in the recording.")
-                                             : tr("Reference: %1").arg(reference_));
+                                            : tr("Reference: %1").arg(reference_));
     } else {
         note_->setText(tr("No joint-angles stream in this project; run joint-angles first."));
     }
@@ -239,8 +230,7 @@ void JointAnglesView::refresh()
     if (controller_) onCursorChanged(controller_->cursor());
 }
 
-void JointAnglesView::onCursorChanged(double t)
-{
+void JointAnglesView::onCursorChanged(double t) {
     for (std::size_t i = 0; i < 3; ++i) {
         cursors_[i]->point1->setCoords(t, 0);
         cursors_[i]->point2->setCoords(t, 1);
@@ -252,8 +242,7 @@ void JointAnglesView::onCursorChanged(double t)
                           .arg(QString::number(t, 'f', 2), number(v[0]), number(v[1]), number(v[2])));
 }
 
-void JointAnglesView::onRangeChanged(double begin, double end)
-{
+void JointAnglesView::onRangeChanged(double begin, double end) {
     if (!(end > begin)) return;
     syncing_ = true;
     for (QCustomPlot* plot : plots_) {
@@ -263,8 +252,7 @@ void JointAnglesView::onRangeChanged(double begin, double end)
     syncing_ = false;
 }
 
-void JointAnglesView::onPlotRange(int angle)
-{
+void JointAnglesView::onPlotRange(int angle) {
     // A drag or wheel zoom in one plot moves the window's visible range; every panel follows.
     if (syncing_) return;
     const QCPRange r = plots_[std::size_t(angle)]->xAxis->range();
@@ -281,8 +269,7 @@ void JointAnglesView::onPlotRange(int angle)
     }
 }
 
-void JointAnglesView::onPlotReleased(int angle, QMouseEvent* event)
-{
+void JointAnglesView::onPlotReleased(int angle, QMouseEvent* event) {
     // A click (not the end of a drag) puts the cursor there.
     QCustomPlot* plot = plots_[std::size_t(angle)];
     if (!controller_ || event->button() != Qt::LeftButton || (event->pos() - pressPos_).manhattanLength() > 3) return;
@@ -294,8 +281,7 @@ namespace {
 
 QString trView(const char* text) { return QCoreApplication::translate("athlos::ui::JointAnglesView", text); }
 
-QDockWidget* makeDock(const Project* project, TimeController* time, const QString& stream, QWidget* parent)
-{
+QDockWidget* makeDock(const Project* project, TimeController* time, const QString& stream, QWidget* parent) {
     auto* dock = new QDockWidget(trView("Joint angles"), parent);
     dock->setObjectName(QStringLiteral("jointAnglesDock"));
     auto* view = new JointAnglesView(project, dock);
@@ -306,8 +292,7 @@ QDockWidget* makeDock(const Project* project, TimeController* time, const QStrin
     return dock;
 }
 
-void launchJointAngles(Workspace& workspace)
-{
+void launchJointAngles(Workspace& workspace) {
     if (!workspace.project()) return;
     QDockWidget* dock = makeDock(workspace.project(), workspace.timeController(), QString(), workspace.window());
     // The view reads the project it was opened on: close it when the main window swaps projects.
@@ -315,17 +300,18 @@ void launchJointAngles(Workspace& workspace)
     workspace.addDock(dock, Qt::RightDockWidgetArea);
 }
 
-Status prepareJointAnglesView(Workspace& workspace)
-{
+Status prepareJointAnglesView(Workspace& workspace) {
     Project* project = workspace.project();
     QStringList streams = project ? JointAnglesView::jointAngleStreams(*project) : QStringList();
     // The knee first: it is the joint the demo and the validation are about.
     std::stable_partition(streams.begin(), streams.end(), [project](const QString& path) {
-        return project->stream(path)->info().attributes.value(QStringLiteral("joint")).toString() == QLatin1String("knee");
+        return project->stream(path)->info().attributes.value(QStringLiteral("joint")).toString() ==
+               QLatin1String("knee");
     });
     if (streams.isEmpty())
-        return makeError(trView("no joint-angles stream (kind joint-angles with flexion, abduction, rotation) in this project; "
-                                "run joint-angles first"));
+        return makeError(
+            trView("no joint-angles stream (kind joint-angles with flexion, abduction, rotation) in this project; "
+                   "run joint-angles first"));
     // The stream in the main time series too, so the shared cursor and range are visible in both.
     workspace.selectItem(streams.front());
     workspace.showTimeSeriesView();

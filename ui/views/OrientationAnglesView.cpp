@@ -32,15 +32,13 @@ struct Quats {
     std::vector<math::Quat> q;
 };
 
-bool hasQuaternion(const StreamInfo& info)
-{
+bool hasQuaternion(const StreamInfo& info) {
     for (const char* c : {"qw", "qx", "qy", "qz"})
         if (info.columnIndex(QLatin1String(c)) < 0) return false;
     return true;
 }
 
-Quats readQuats(const Stream& stream)
-{
+Quats readQuats(const Stream& stream) {
     Quats out;
     const StreamInfo& info = stream.info();
     const int w = info.columnIndex(QStringLiteral("qw")), x = info.columnIndex(QStringLiteral("qx")),
@@ -50,14 +48,14 @@ Quats readQuats(const Stream& stream)
     const StreamData& d = **data;
     out.t = d.t;
     out.q.reserve(d.rows());
-    for (std::size_t k = 0; k < d.rows(); ++k) out.q.push_back(math::Quat(d.at(k, w), d.at(k, x), d.at(k, y), d.at(k, z)));
+    for (std::size_t k = 0; k < d.rows(); ++k)
+        out.q.push_back(math::Quat(d.at(k, w), d.at(k, x), d.at(k, y), d.at(k, z)));
     return out;
 }
 
 // The reference at the estimate's time stamps: SLERP between neighbours; outside its span or across
 // a non-finite sample (optical dropout) NaN, which the RMS skips.
-std::vector<math::Quat> referenceAt(const Quats& ref, const std::vector<double>& t)
-{
+std::vector<math::Quat> referenceAt(const Quats& ref, const std::vector<double>& t) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     std::vector<math::Quat> out(t.size(), math::Quat(nan, nan, nan, nan));
     for (std::size_t k = 0; k < t.size(); ++k) {
@@ -70,14 +68,14 @@ std::vector<math::Quat> referenceAt(const Quats& ref, const std::vector<double>&
             const double f = (t[k] - ref.t[j - 1]) / (ref.t[j] - ref.t[j - 1]);
             const math::Quat& a = ref.q[j - 1];
             const math::Quat& b = ref.q[j];
-            if (a.coeffs().allFinite() && b.coeffs().allFinite()) out[k] = math::slerp(a.normalized(), b.normalized(), f);
+            if (a.coeffs().allFinite() && b.coeffs().allFinite())
+                out[k] = math::slerp(a.normalized(), b.normalized(), f);
         }
     }
     return out;
 }
 
-void addGraph(QCustomPlot* plot, int index, const QString& name, const QVector<double>& t, const QVector<double>& v)
-{
+void addGraph(QCustomPlot* plot, int index, const QString& name, const QVector<double>& t, const QVector<double>& v) {
     QCPGraph* graph = plot->addGraph();
     graph->setName(name);
     graph->setPen(QPen(PlotStyle::seriesColor(index), 1.2));
@@ -86,15 +84,16 @@ void addGraph(QCustomPlot* plot, int index, const QString& name, const QVector<d
 
 }  // namespace
 
-OrientationAnglesView::OrientationAnglesView(const Project* project, QWidget* parent) : QWidget(parent), project_(project)
-{
+OrientationAnglesView::OrientationAnglesView(const Project* project, QWidget* parent)
+    : QWidget(parent), project_(project) {
     streamCombo_ = new QComboBox(this);
     streamCombo_->setObjectName(QStringLiteral("streamCombo"));
     if (project_) streamCombo_->addItems(orientationStreams(*project_));
     sequenceCombo_ = new QComboBox(this);
     sequenceCombo_->setObjectName(QStringLiteral("sequenceCombo"));
     // Cardan sequences first (aerospace yaw/pitch/roll = ZYX), then proper Euler, then extrinsic.
-    sequenceCombo_->addItems({"ZYX", "XYZ", "YXZ", "ZXY", "XZY", "YZX", "ZXZ", "ZYZ", "XYX", "XZX", "YXY", "YZY", "zyx", "xyz"});
+    sequenceCombo_->addItems(
+        {"ZYX", "XYZ", "YXZ", "ZXY", "XZY", "YZX", "ZXZ", "ZYZ", "XYX", "XZX", "YXY", "YZY", "zyx", "xyz"});
     note_ = new QLabel(this);
     note_->setWordWrap(true);
     anglePlot_ = new QCustomPlot(this);
@@ -128,8 +127,7 @@ OrientationAnglesView::OrientationAnglesView(const Project* project, QWidget* pa
     refresh();
 }
 
-QStringList OrientationAnglesView::orientationStreams(const Project& project)
-{
+QStringList OrientationAnglesView::orientationStreams(const Project& project) {
     QStringList list;
     for (const QString& path : project.streamPaths()) {
         const Stream* s = project.stream(path);
@@ -138,8 +136,7 @@ QStringList OrientationAnglesView::orientationStreams(const Project& project)
     return list;
 }
 
-QString OrientationAnglesView::referenceFor(const Project& project, const QString& path)
-{
+QString OrientationAnglesView::referenceFor(const Project& project, const QString& path) {
     const Recording* recording = project.recording(ItemPath::parse(path).recording);
     if (!recording) return {};
     for (const auto& [name, stream] : recording->streams)
@@ -148,15 +145,14 @@ QString OrientationAnglesView::referenceFor(const Project& project, const QStrin
     return {};
 }
 
-Status OrientationAnglesView::setStream(const QString& path)
-{
-    if (streamCombo_->findText(path) < 0) return makeError(tr("'%1' is not an orientation stream (qw, qx, qy, qz)").arg(path));
+Status OrientationAnglesView::setStream(const QString& path) {
+    if (streamCombo_->findText(path) < 0)
+        return makeError(tr("'%1' is not an orientation stream (qw, qx, qy, qz)").arg(path));
     streamCombo_->setCurrentText(path);
     return {};
 }
 
-void OrientationAnglesView::setSequence(const QString& sequence)
-{
+void OrientationAnglesView::setSequence(const QString& sequence) {
     if (sequenceCombo_->findText(sequence) < 0) sequenceCombo_->addItem(sequence);
     sequenceCombo_->setCurrentText(sequence);
 }
@@ -164,8 +160,7 @@ void OrientationAnglesView::setSequence(const QString& sequence)
 QString OrientationAnglesView::stream() const { return streamCombo_->currentText(); }
 QString OrientationAnglesView::sequence() const { return sequenceCombo_->currentText(); }
 
-void OrientationAnglesView::refresh()
-{
+void OrientationAnglesView::refresh() {
     anglePlot_->clearGraphs();
     errorPlot_->clearGraphs();
     rms_ = {};
@@ -191,9 +186,10 @@ void OrientationAnglesView::refresh()
         }
         const QString axes = sequence->name();
         const bool yawPitchRoll = axes == QLatin1String("ZYX");
-        const QStringList names = yawPitchRoll ? QStringList{tr("yaw (Z)"), tr("pitch (Y)"), tr("roll (X)")}
-                                               : QStringList{tr("angle 1 (%1)").arg(axes[0]), tr("angle 2 (%1)").arg(axes[1]),
-                                                             tr("angle 3 (%1)").arg(axes[2])};
+        const QStringList names = yawPitchRoll
+                                      ? QStringList{tr("yaw (Z)"), tr("pitch (Y)"), tr("roll (X)")}
+                                      : QStringList{tr("angle 1 (%1)").arg(axes[0]), tr("angle 2 (%1)").arg(axes[1]),
+                                                    tr("angle 3 (%1)").arg(axes[2])};
         for (int i = 0; i < 3; ++i) addGraph(anglePlot_, i, names[i], t, angles[i]);
 
         const QString refPath = referenceFor(*project_, streamCombo_->currentText());
@@ -230,8 +226,7 @@ void OrientationAnglesView::refresh()
 
 namespace {
 
-void launchOrientationAngles(Workspace& workspace)
-{
+void launchOrientationAngles(Workspace& workspace) {
     if (!workspace.project()) return;
     auto* window = new QWidget(workspace.window(), Qt::Window);
     window->setAttribute(Qt::WA_DeleteOnClose);
@@ -244,14 +239,14 @@ void launchOrientationAngles(Workspace& workspace)
     window->show();
 }
 
-Status prepareOrientationView(Workspace& workspace)
-{
+Status prepareOrientationView(Workspace& workspace) {
     Project* project = workspace.project();
     const QStringList streams = project ? OrientationAnglesView::orientationStreams(*project) : QStringList();
     if (streams.isEmpty())
-        return makeError(QCoreApplication::translate("athlos::ui::OrientationAnglesView",
-                                                     "no orientation stream (kind orientation with qw, qx, qy, qz) in this "
-                                                     "project; run orientation first"));
+        return makeError(
+            QCoreApplication::translate("athlos::ui::OrientationAnglesView",
+                                        "no orientation stream (kind orientation with qw, qx, qy, qz) in this "
+                                        "project; run orientation first"));
     auto* view = new OrientationAnglesView(project);
     if (Status status = view->setStream(streams.front()); !status) {
         delete view;

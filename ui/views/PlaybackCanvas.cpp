@@ -11,24 +11,23 @@ namespace athlos::ui {
 
 namespace {
 
-constexpr double kMaxGap = 1.0;     // s: samples further apart are a gap (no line, no interpolation)
-constexpr double kTrailWidth = 3.0; // px
-constexpr double kDotRadius = 6.0;  // px
-constexpr int kMargin = 16;         // px around the framed venue
+constexpr double kMaxGap = 1.0;      // s: samples further apart are a gap (no line, no interpolation)
+constexpr double kTrailWidth = 3.0;  // px
+constexpr double kDotRadius = 6.0;   // px
+constexpr int kMargin = 16;          // px around the framed venue
 
-QColor teamColor(const QString& team, int index)
-{
+QColor teamColor(const QString& team, int index) {
     if (team == QLatin1String("home")) return QColor(250, 250, 250);
     if (team == QLatin1String("away")) return QColor(25, 25, 25);
-    static const QColor others[] = {QColor(230, 159, 0), QColor(86, 180, 233), QColor(0, 158, 115),
-                                    QColor(240, 228, 66), QColor(0, 114, 178), QColor(213, 94, 0), QColor(204, 121, 167)};
+    static const QColor others[] = {QColor(230, 159, 0),  QColor(86, 180, 233), QColor(0, 158, 115),
+                                    QColor(240, 228, 66), QColor(0, 114, 178),  QColor(213, 94, 0),
+                                    QColor(204, 121, 167)};
     return others[index % 7];
 }
 
 }  // namespace
 
-PlaybackCanvas::PlaybackCanvas(QWidget* parent) : QWidget(parent)
-{
+PlaybackCanvas::PlaybackCanvas(QWidget* parent) : QWidget(parent) {
     setAttribute(Qt::WA_OpaquePaintEvent);  // the venue covers every pixel
     setMouseTracking(false);
     setMinimumSize(200, 150);
@@ -39,56 +38,49 @@ PlaybackCanvas::PlaybackCanvas(QWidget* parent) : QWidget(parent)
     }
 }
 
-void PlaybackCanvas::setTracks(std::shared_ptr<const std::vector<AthleteTrack>> tracks)
-{
+void PlaybackCanvas::setTracks(std::shared_ptr<const std::vector<AthleteTrack>> tracks) {
     tracks_ = std::move(tracks);
     if (!userView_) framed_ = false;
     update();
 }
 
-const std::vector<AthleteTrack>& PlaybackCanvas::tracks() const
-{
+const std::vector<AthleteTrack>& PlaybackCanvas::tracks() const {
     static const std::vector<AthleteTrack> none;
     return tracks_ ? *tracks_ : none;
 }
 
-void PlaybackCanvas::setVenue(VenueDrawing::Venue venue)
-{
+void PlaybackCanvas::setVenue(VenueDrawing::Venue venue) {
     if (venue == venue_) return;
     venue_ = venue;
     if (!userView_) framed_ = false;
     update();
 }
 
-void PlaybackCanvas::setVenueSize(VenueDrawing::Size size)
-{
+void PlaybackCanvas::setVenueSize(VenueDrawing::Size size) {
     if (size == venueSize_) return;
     venueSize_ = size;
     if (!userView_) framed_ = false;
     update();
 }
 
-void PlaybackCanvas::setTrailSeconds(double seconds)
-{
+void PlaybackCanvas::setTrailSeconds(double seconds) {
     trail_ = std::max(0.0, seconds);
     update();
 }
 
-void PlaybackCanvas::setTime(double t)
-{
+void PlaybackCanvas::setTime(double t) {
     if (t == cursor_) return;
     cursor_ = t;
     update();
 }
 
-QTransform PlaybackCanvas::worldToScreen() const
-{
+QTransform PlaybackCanvas::worldToScreen() const {
     // x' = w/2 + (x − cx)·s, y' = h/2 − (y − cy)·s
-    return QTransform(scale_, 0, 0, -scale_, width() / 2.0 - centre_.x() * scale_, height() / 2.0 + centre_.y() * scale_);
+    return QTransform(scale_, 0, 0, -scale_, width() / 2.0 - centre_.x() * scale_,
+                      height() / 2.0 + centre_.y() * scale_);
 }
 
-void PlaybackCanvas::frameAll()
-{
+void PlaybackCanvas::frameAll() {
     QRectF region = VenueDrawing::bounds(venue_, venueSize_);
     const QRectF data = PlaybackTracks::extent(tracks());
     if (region.isEmpty()) region = data.isValid() ? data.adjusted(-2, -2, 2, 2) : QRectF(-50, -35, 100, 70);
@@ -102,25 +94,21 @@ void PlaybackCanvas::frameAll()
     update();
 }
 
-void PlaybackCanvas::ensureFramed()
-{
+void PlaybackCanvas::ensureFramed() {
     if (!framed_) frameAll();
 }
 
-void PlaybackCanvas::resizeEvent(QResizeEvent* event)
-{
+void PlaybackCanvas::resizeEvent(QResizeEvent* event) {
     QWidget::resizeEvent(event);
     if (!userView_) framed_ = false;
 }
 
-void PlaybackCanvas::paintEvent(QPaintEvent*)
-{
+void PlaybackCanvas::paintEvent(QPaintEvent*) {
     QPainter painter(this);
     paintFrame(painter);
 }
 
-void PlaybackCanvas::paintFrame(QPainter& painter)
-{
+void PlaybackCanvas::paintFrame(QPainter& painter) {
     ensureFramed();
     drawVenue(painter);
     const QTransform t = worldToScreen();
@@ -130,8 +118,7 @@ void PlaybackCanvas::paintFrame(QPainter& painter)
     drawLegend(painter);
 }
 
-void PlaybackCanvas::drawVenue(QPainter& painter)
-{
+void PlaybackCanvas::drawVenue(QPainter& painter) {
     const qreal dpr = devicePixelRatioF();
     if (venuePixmap_.isNull() || cacheSize_ != size() || cacheCentre_ != centre_ || cacheScale_ != scale_ ||
         cacheVenue_ != venue_ || cacheVenueSize_ != venueSize_ || cacheDpr_ != dpr) {
@@ -149,8 +136,7 @@ void PlaybackCanvas::drawVenue(QPainter& painter)
     painter.drawPixmap(0, 0, venuePixmap_);
 }
 
-void PlaybackCanvas::drawTrails(QPainter& painter, const QTransform& t)
-{
+void PlaybackCanvas::drawTrails(QPainter& painter, const QTransform& t) {
     if (!tracks_ || trail_ <= 0) return;
     for (auto& bin : segments_) bin.clear();
     const double from = cursor_ - trail_;
@@ -189,8 +175,7 @@ void PlaybackCanvas::drawTrails(QPainter& painter, const QTransform& t)
     }
 }
 
-void PlaybackCanvas::drawAthletes(QPainter& painter, const QTransform& t)
-{
+void PlaybackCanvas::drawAthletes(QPainter& painter, const QTransform& t) {
     if (!tracks_) return;
     QFont font = painter.font();
     font.setPixelSize(11);
@@ -215,8 +200,7 @@ void PlaybackCanvas::drawAthletes(QPainter& painter, const QTransform& t)
     }
 }
 
-void PlaybackCanvas::drawLegend(QPainter& painter)
-{
+void PlaybackCanvas::drawLegend(QPainter& painter) {
     // Speed scale bottom-right: a bar of the colour bins with ticks every 3 m/s.
     const int barW = 180, barH = 10;
     const QRect box(width() - barW - 24, height() - 46, barW + 16, 40);
@@ -244,7 +228,8 @@ void PlaybackCanvas::drawLegend(QPainter& painter)
     // Match time top-left.
     const int minutes = int(std::floor(cursor_ / 60.0));
     const double seconds = cursor_ - 60.0 * minutes;
-    const QString time = QStringLiteral("%1:%2").arg(minutes, 2, 10, QLatin1Char('0')).arg(seconds, 4, 'f', 1, QLatin1Char('0'));
+    const QString time =
+        QStringLiteral("%1:%2").arg(minutes, 2, 10, QLatin1Char('0')).arg(seconds, 4, 'f', 1, QLatin1Char('0'));
     font.setPixelSize(14);
     font.setBold(true);
     painter.setFont(font);
@@ -256,8 +241,7 @@ void PlaybackCanvas::drawLegend(QPainter& painter)
     painter.drawText(timeBox, Qt::AlignCenter, time);
 }
 
-void PlaybackCanvas::wheelEvent(QWheelEvent* event)
-{
+void PlaybackCanvas::wheelEvent(QWheelEvent* event) {
     const double steps = event->angleDelta().y() / 120.0;
     if (steps == 0) return;
     const QPointF mouse = event->position();
@@ -271,16 +255,14 @@ void PlaybackCanvas::wheelEvent(QWheelEvent* event)
     event->accept();
 }
 
-void PlaybackCanvas::mousePressEvent(QMouseEvent* event)
-{
+void PlaybackCanvas::mousePressEvent(QMouseEvent* event) {
     if (event->button() != Qt::LeftButton) return QWidget::mousePressEvent(event);
     dragging_ = true;
     dragFrom_ = event->position().toPoint();
     setCursor(Qt::ClosedHandCursor);
 }
 
-void PlaybackCanvas::mouseMoveEvent(QMouseEvent* event)
-{
+void PlaybackCanvas::mouseMoveEvent(QMouseEvent* event) {
     if (!dragging_) return QWidget::mouseMoveEvent(event);
     const QPoint now = event->position().toPoint();
     const QPoint d = now - dragFrom_;
@@ -290,16 +272,12 @@ void PlaybackCanvas::mouseMoveEvent(QMouseEvent* event)
     update();
 }
 
-void PlaybackCanvas::mouseReleaseEvent(QMouseEvent* event)
-{
+void PlaybackCanvas::mouseReleaseEvent(QMouseEvent* event) {
     if (event->button() != Qt::LeftButton) return QWidget::mouseReleaseEvent(event);
     dragging_ = false;
     unsetCursor();
 }
 
-void PlaybackCanvas::mouseDoubleClickEvent(QMouseEvent*)
-{
-    frameAll();
-}
+void PlaybackCanvas::mouseDoubleClickEvent(QMouseEvent*) { frameAll(); }
 
 }  // namespace athlos::ui

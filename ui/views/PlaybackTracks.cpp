@@ -11,14 +11,12 @@
 
 namespace athlos::ui {
 
-long AthleteTrack::indexAt(double time) const
-{
+long AthleteTrack::indexAt(double time) const {
     const auto it = std::upper_bound(t.begin(), t.end(), time);
     return long(it - t.begin()) - 1;
 }
 
-bool AthleteTrack::positionAt(double time, double maxGap, float& px, float& py) const
-{
+bool AthleteTrack::positionAt(double time, double maxGap, float& px, float& py) const {
     const long i = indexAt(time);
     if (i < 0) return false;
     const std::size_t k = std::size_t(i);
@@ -41,8 +39,7 @@ bool AthleteTrack::positionAt(double time, double maxGap, float& px, float& py) 
     return std::isfinite(px) && std::isfinite(py);
 }
 
-QStringList PlaybackTracks::positionStreams(const Project& project, const QString& recording)
-{
+QStringList PlaybackTracks::positionStreams(const Project& project, const QString& recording) {
     QStringList paths;
     const Recording* rec = project.recording(recording);
     if (!rec) return paths;
@@ -51,16 +48,15 @@ QStringList PlaybackTracks::positionStreams(const Project& project, const QStrin
     return paths;
 }
 
-bool PlaybackTracks::isAthlete(const Stream& stream)
-{
+bool PlaybackTracks::isAthlete(const Stream& stream) {
     if (!TrajectoryPanel::isPositionStream(stream.info())) return false;
     const QJsonObject& a = stream.info().attributes;
-    return a.contains(QStringLiteral("team")) || a.contains(QStringLiteral("label")) || a.contains(QStringLiteral("athlete")) ||
+    return a.contains(QStringLiteral("team")) || a.contains(QStringLiteral("label")) ||
+           a.contains(QStringLiteral("athlete")) ||
            stream.info().provenance.processorId.startsWith(QLatin1String("import:"));
 }
 
-QString PlaybackTracks::teamRecording(const Project& project, int minAthletes)
-{
+QString PlaybackTracks::teamRecording(const Project& project, int minAthletes) {
     QString best;
     std::pair<int, int> bestScore{-1, -1};
     for (const auto& [name, rec] : project.recordings()) {
@@ -78,14 +74,13 @@ QString PlaybackTracks::teamRecording(const Project& project, int minAthletes)
     return best;
 }
 
-bool PlaybackTracks::isEnu(const Stream& stream)
-{
+bool PlaybackTracks::isEnu(const Stream& stream) {
     const StreamInfo& info = stream.info();
-    return info.attributes.contains(QStringLiteral("enu_origin")) || info.frame.compare(QLatin1String("enu"), Qt::CaseInsensitive) == 0;
+    return info.attributes.contains(QStringLiteral("enu_origin")) ||
+           info.frame.compare(QLatin1String("enu"), Qt::CaseInsensitive) == 0;
 }
 
-bool PlaybackTracks::read(const Stream& stream, const QString& path, AthleteTrack& out, const PitchGeometry* pitch)
-{
+bool PlaybackTracks::read(const Stream& stream, const QString& path, AthleteTrack& out, const PitchGeometry* pitch) {
     const StreamInfo& info = stream.info();
     const int cx = info.columnIndex(QStringLiteral("x")), cy = info.columnIndex(QStringLiteral("y"));
     if (cx < 0 || cy < 0) return false;
@@ -115,18 +110,17 @@ bool PlaybackTracks::read(const Stream& stream, const QString& path, AthleteTrac
 }
 
 std::vector<AthleteTrack> PlaybackTracks::readRecording(const Project& project, const QString& recording,
-                                                        const PitchGeometry* pitch)
-{
+                                                        const PitchGeometry* pitch) {
     std::vector<AthleteTrack> tracks;
     for (const QString& path : positionStreams(project, recording)) {
         AthleteTrack track;
-        if (const Stream* s = project.stream(path); s && read(*s, path, track, pitch)) tracks.push_back(std::move(track));
+        if (const Stream* s = project.stream(path); s && read(*s, path, track, pitch))
+            tracks.push_back(std::move(track));
     }
     return tracks;
 }
 
-void PlaybackTracks::computeSpeed(AthleteTrack& track)
-{
+void PlaybackTracks::computeSpeed(AthleteTrack& track) {
     const std::size_t n = track.t.size();
     track.speed.assign(n, 0.0f);
     track.bin.assign(n, 0);
@@ -151,32 +145,25 @@ void PlaybackTracks::computeSpeed(AthleteTrack& track)
     }
 }
 
-int PlaybackTracks::binOf(double speed)
-{
-    return std::clamp(int(speed / kSpeedMax * kBins), 0, kBins - 1);
-}
+int PlaybackTracks::binOf(double speed) { return std::clamp(int(speed / kSpeedMax * kBins), 0, kBins - 1); }
 
-QColor PlaybackTracks::colorOf(double speed)
-{
+QColor PlaybackTracks::colorOf(double speed) {
     // Piecewise linear through blue, cyan, green, yellow, orange, red: each speed zone its own hue.
-    static const std::array<QColor, 6> stops{QColor(40, 70, 200), QColor(0, 190, 230), QColor(40, 200, 70),
+    static const std::array<QColor, 6> stops{QColor(40, 70, 200),  QColor(0, 190, 230),  QColor(40, 200, 70),
                                              QColor(250, 225, 30), QColor(250, 130, 20), QColor(215, 25, 30)};
     const double u = std::clamp(speed / kSpeedMax, 0.0, 1.0) * double(stops.size() - 1);
     const int i = std::min(int(u), int(stops.size()) - 2);
     const double f = u - i;
     const QColor& a = stops[std::size_t(i)];
     const QColor& b = stops[std::size_t(i) + 1];
-    return QColor(int(std::lround(a.red() + f * (b.red() - a.red()))), int(std::lround(a.green() + f * (b.green() - a.green()))),
+    return QColor(int(std::lround(a.red() + f * (b.red() - a.red()))),
+                  int(std::lround(a.green() + f * (b.green() - a.green()))),
                   int(std::lround(a.blue() + f * (b.blue() - a.blue()))));
 }
 
-QColor PlaybackTracks::binColor(int bin)
-{
-    return colorOf((bin + 0.5) * kSpeedMax / kBins);
-}
+QColor PlaybackTracks::binColor(int bin) { return colorOf((bin + 0.5) * kSpeedMax / kBins); }
 
-QRectF PlaybackTracks::extent(const std::vector<AthleteTrack>& tracks)
-{
+QRectF PlaybackTracks::extent(const std::vector<AthleteTrack>& tracks) {
     float x0 = std::numeric_limits<float>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
     for (const AthleteTrack& tr : tracks)
         for (std::size_t k = 0; k < tr.x.size(); ++k) {

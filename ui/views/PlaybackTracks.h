@@ -12,7 +12,7 @@ namespace athlos {
 class PitchGeometry;
 class Project;
 class Stream;
-}
+}  // namespace athlos
 
 namespace athlos::ui {
 
@@ -21,9 +21,9 @@ struct AthleteTrack {
     QString label;  // short label drawn at the dot ("H7"), else the stream name
     QString team;   // "home", "away" or empty
     std::vector<double> t;
-    std::vector<float> x, y;       // m; NaN where the source had no fix
-    std::vector<float> speed;      // m/s
-    std::vector<std::uint8_t> bin; // colour bin of the speed (PlaybackTracks::kBins)
+    std::vector<float> x, y;        // m; NaN where the source had no fix
+    std::vector<float> speed;       // m/s
+    std::vector<std::uint8_t> bin;  // colour bin of the speed (PlaybackTracks::kBins)
 
     // Index of the last sample at or before t (−1 if none).
     long indexAt(double time) const;
@@ -50,7 +50,8 @@ public:
     // positions in the project's ENU frame (GNSS x, y: attribute enu_origin, or frame "enu") are
     // moved into the pitch frame (centre spot, x along the length); other frames (LPS, a simulated
     // pitch) are taken as they are.
-    static bool read(const Stream& stream, const QString& path, AthleteTrack& out, const PitchGeometry* pitch = nullptr);
+    static bool read(const Stream& stream, const QString& path, AthleteTrack& out,
+                     const PitchGeometry* pitch = nullptr);
     // Whether a stream's x, y are in the project's ENU frame.
     static bool isEnu(const Stream& stream);
     // The tracks of every position stream of a recording (in the pitch frame when given, see read()).

@@ -26,10 +26,10 @@ namespace {
 
 QString trView(const char* text) { return QCoreApplication::translate("athlos::ui::PlaybackView", text); }
 
-std::optional<VenueDrawing::Venue> venueOfSport(const QString& sport)
-{
+std::optional<VenueDrawing::Venue> venueOfSport(const QString& sport) {
     const QString s = sport.toLower();
-    if (s.contains(QLatin1String("football")) || s.contains(QLatin1String("soccer"))) return VenueDrawing::Venue::Football;
+    if (s.contains(QLatin1String("football")) || s.contains(QLatin1String("soccer")))
+        return VenueDrawing::Venue::Football;
     if (s.contains(QLatin1String("rugby"))) return VenueDrawing::Venue::Rugby;
     if (s.contains(QLatin1String("athletics")) || s.contains(QLatin1String("track"))) return VenueDrawing::Venue::Track;
     return std::nullopt;
@@ -37,13 +37,13 @@ std::optional<VenueDrawing::Venue> venueOfSport(const QString& sport)
 
 }  // namespace
 
-PlaybackView::PlaybackView(Project* project, QWidget* parent) : QWidget(parent), project_(project)
-{
+PlaybackView::PlaybackView(Project* project, QWidget* parent) : QWidget(parent), project_(project) {
     recordingCombo_ = new QComboBox(this);
     recordingCombo_->setObjectName(QStringLiteral("recordingCombo"));
     venueCombo_ = new QComboBox(this);
     venueCombo_->setObjectName(QStringLiteral("venueCombo"));
-    for (const QString& id : VenueDrawing::ids()) venueCombo_->addItem(VenueDrawing::displayName(*VenueDrawing::fromId(id)), id);
+    for (const QString& id : VenueDrawing::ids())
+        venueCombo_->addItem(VenueDrawing::displayName(*VenueDrawing::fromId(id)), id);
     trailSpin_ = new QDoubleSpinBox(this);
     trailSpin_->setObjectName(QStringLiteral("trailSpin"));
     trailSpin_->setRange(0.0, 600.0);
@@ -83,8 +83,7 @@ PlaybackView::PlaybackView(Project* project, QWidget* parent) : QWidget(parent),
     connect(fit, &QToolButton::clicked, canvas_, &PlaybackCanvas::frameAll);
 }
 
-void PlaybackView::refreshRecordings()
-{
+void PlaybackView::refreshRecordings() {
     loading_ = true;
     recordingCombo_->clear();
     if (project_)
@@ -93,8 +92,7 @@ void PlaybackView::refreshRecordings()
     loading_ = false;
 }
 
-void PlaybackView::setTimeController(TimeController* controller)
-{
+void PlaybackView::setTimeController(TimeController* controller) {
     if (time_) disconnect(time_, nullptr, canvas_, nullptr);
     time_ = controller;
     if (!time_) return;
@@ -102,14 +100,15 @@ void PlaybackView::setTimeController(TimeController* controller)
     canvas_->setTime(time_->cursor());
 }
 
-Status PlaybackView::setRecording(const QString& recording)
-{
-    if (!project_ || !project_->recording(recording)) return makeError(tr("no recording '%1' in this project").arg(recording));
+Status PlaybackView::setRecording(const QString& recording) {
+    if (!project_ || !project_->recording(recording))
+        return makeError(tr("no recording '%1' in this project").arg(recording));
     pitch_ = PitchGeometry::firstOf(project_->geometry());
     auto tracks = std::make_shared<std::vector<AthleteTrack>>(
         PlaybackTracks::readRecording(*project_, recording, pitch_ ? &*pitch_ : nullptr));
     if (tracks->empty())
-        return makeError(tr("recording '%1' has no position stream (lps-position, trajectory or gnss with x, y)").arg(recording));
+        return makeError(
+            tr("recording '%1' has no position stream (lps-position, trajectory or gnss with x, y)").arg(recording));
     loading_ = true;
     recordingCombo_->setCurrentText(recording);
     const QRectF extent = PlaybackTracks::extent(*tracks);
@@ -143,8 +142,7 @@ Status PlaybackView::setRecording(const QString& recording)
 
 QString PlaybackView::recording() const { return recordingCombo_->currentText(); }
 
-void PlaybackView::setVenue(VenueDrawing::Venue venue)
-{
+void PlaybackView::setVenue(VenueDrawing::Venue venue) {
     venueCombo_->setCurrentIndex(venueCombo_->findData(VenueDrawing::id(venue)));
 }
 
@@ -154,8 +152,7 @@ void PlaybackView::setTrailSeconds(double seconds) { trailSpin_->setValue(second
 
 double PlaybackView::trailSeconds() const { return canvas_->trailSeconds(); }
 
-void PlaybackView::onVenueChosen()
-{
+void PlaybackView::onVenueChosen() {
     const auto venue = VenueDrawing::fromId(venueCombo_->currentData().toString());
     if (!venue) return;
     applyVenue(*venue);
@@ -169,16 +166,14 @@ void PlaybackView::onVenueChosen()
     if (workspace_) workspace_->projectModified();
 }
 
-void PlaybackView::applyVenue(VenueDrawing::Venue venue)
-{
+void PlaybackView::applyVenue(VenueDrawing::Venue venue) {
     // The surveyed pitch has its real size when it is the venue shown.
     const bool real = pitch_ && VenueDrawing::ofPitch(pitch_->kind()) == venue;
     canvas_->setVenue(venue);
     canvas_->setVenueSize(real ? VenueDrawing::Size{pitch_->length(), pitch_->width()} : VenueDrawing::Size{});
 }
 
-VenueDrawing::Venue PlaybackView::venueFor(const Project& project, const QString& recording, const QRectF* extent)
-{
+VenueDrawing::Venue PlaybackView::venueFor(const Project& project, const QString& recording, const QRectF* extent) {
     const Recording* rec = project.recording(recording);
     if (!rec) return VenueDrawing::Venue::None;
     if (auto stored = VenueDrawing::fromId(rec->metadata.value(QLatin1String(kVenueKey)).toString())) return *stored;
@@ -187,24 +182,27 @@ VenueDrawing::Venue PlaybackView::venueFor(const Project& project, const QString
     // The streams' own word (a simulator or an import that knows the venue), by majority.
     std::map<QString, int> votes;
     for (const QString& path : PlaybackTracks::positionStreams(project, recording))
-        if (const QString v = project.stream(path)->info().attributes.value(QLatin1String(kVenueKey)).toString(); !v.isEmpty())
+        if (const QString v = project.stream(path)->info().attributes.value(QLatin1String(kVenueKey)).toString();
+            !v.isEmpty())
             ++votes[v];
-    const auto top = std::max_element(votes.begin(), votes.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+    const auto top =
+        std::max_element(votes.begin(), votes.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
     if (top != votes.end())
         if (auto v = VenueDrawing::fromId(top->first)) return *v;
     if (auto v = venueOfSport(rec->metadata.value(QStringLiteral("sport")).toString())) return *v;
     // The data extent; the project's sport (it may hold several kinds of session) only if that says nothing.
-    const auto guessed = VenueDrawing::guess(extent ? *extent : PlaybackTracks::extent(PlaybackTracks::readRecording(project, recording)));
+    const auto guessed = VenueDrawing::guess(
+        extent ? *extent : PlaybackTracks::extent(PlaybackTracks::readRecording(project, recording)));
     if (guessed != VenueDrawing::Venue::None) return guessed;
     return venueOfSport(project.meta().sport).value_or(VenueDrawing::Venue::None);
 }
 
-Status PlaybackView::showInWindow(Workspace& workspace, const QString& recording)
-{
+Status PlaybackView::showInWindow(Workspace& workspace, const QString& recording) {
     Project* project = workspace.project();
     const QStringList streams = project ? PlaybackTracks::positionStreams(*project, recording) : QStringList();
     if (streams.isEmpty())
-        return makeError(trView("no position stream (lps-position, trajectory or gnss with x, y) in recording '%1'").arg(recording));
+        return makeError(
+            trView("no position stream (lps-position, trajectory or gnss with x, y) in recording '%1'").arg(recording));
     // The window's time range comes from the plotted stream.
     workspace.selectItem(streams.front());
     workspace.waitForPlots();
@@ -224,8 +222,7 @@ Status PlaybackView::showInWindow(Workspace& workspace, const QString& recording
 
 namespace {
 
-void launchPlayback(Workspace& workspace)
-{
+void launchPlayback(Workspace& workspace) {
     Project* project = workspace.project();
     if (!project) return;
     const QString title = trView("Team playback");
@@ -236,8 +233,9 @@ void launchPlayback(Workspace& workspace)
     }
     const QString recording = PlaybackTracks::teamRecording(*project, 0);
     if (recording.isEmpty()) {
-        QMessageBox::information(workspace.window(), title,
-                                 trView("This project has no position streams (lps-position, trajectory or gnss with x, y)."));
+        QMessageBox::information(
+            workspace.window(), title,
+            trView("This project has no position streams (lps-position, trajectory or gnss with x, y)."));
         return;
     }
     auto* dock = new QDockWidget(title);
@@ -260,12 +258,12 @@ void launchPlayback(Workspace& workspace)
     });
 }
 
-Status preparePlaybackView(Workspace& workspace)
-{
+Status preparePlaybackView(Workspace& workspace) {
     const QString recording = workspace.project() ? PlaybackTracks::teamRecording(*workspace.project(), 0) : QString();
     if (recording.isEmpty())
-        return makeError(trView("no position stream (lps-position, trajectory or gnss with x, y) in this project; "
-                                "run simulate-team or import positions first"));
+        return makeError(
+            trView("no position stream (lps-position, trajectory or gnss with x, y) in this project; "
+                   "run simulate-team or import positions first"));
     return PlaybackView::showInWindow(workspace, recording);
 }
 
@@ -273,12 +271,12 @@ Status preparePlaybackView(Workspace& workspace)
 // `trajectory` shows it through this view when the project has one.
 bool hasTeam(const Project& project) { return !PlaybackTracks::teamRecording(project, 2).isEmpty(); }
 
-Status prepareTeamView(Workspace& workspace)
-{
+Status prepareTeamView(Workspace& workspace) {
     const QString team = workspace.project() ? PlaybackTracks::teamRecording(*workspace.project(), 2) : QString();
     if (team.isEmpty())
-        return makeError(trView("no team in this project (a recording with the position streams of two or more "
-                                "athletes); run simulate-team first"));
+        return makeError(
+            trView("no team in this project (a recording with the position streams of two or more "
+                   "athletes); run simulate-team first"));
     return PlaybackView::showInWindow(workspace, team);
 }
 

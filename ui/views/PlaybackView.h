@@ -59,7 +59,8 @@ public:
 
     // The venue a recording is drawn on: its stored choice, else the guess (from the streams' venue
     // attribute, the recording's sport, the data extent — given, or read — and the project's sport).
-    static VenueDrawing::Venue venueFor(const Project& project, const QString& recording, const QRectF* extent = nullptr);
+    static VenueDrawing::Venue venueFor(const Project& project, const QString& recording,
+                                        const QRectF* extent = nullptr);
     // Shows the playback of a recording as the current tab of the window, cursor in the middle of
     // the recording (screenshots).
     static Status showInWindow(Workspace& workspace, const QString& recording);

@@ -26,8 +26,7 @@ struct Xy {
     QVector<double> t, x, y;
 };
 
-Xy readXy(const Stream& stream, int maxPoints = 0)
-{
+Xy readXy(const Stream& stream, int maxPoints = 0) {
     Xy out;
     const int cx = stream.info().columnIndex(QStringLiteral("x")), cy = stream.info().columnIndex(QStringLiteral("y"));
     auto data = stream.data();
@@ -43,8 +42,7 @@ Xy readXy(const Stream& stream, int maxPoints = 0)
     return out;
 }
 
-QCPCurve* makeDots(QCustomPlot* plot, const QColor& color, double size, const QString& name)
-{
+QCPCurve* makeDots(QCustomPlot* plot, const QColor& color, double size, const QString& name) {
     auto* curve = new QCPCurve(plot->xAxis, plot->yAxis);
     curve->setLineStyle(QCPCurve::lsNone);
     curve->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, color, color, size));
@@ -54,8 +52,7 @@ QCPCurve* makeDots(QCustomPlot* plot, const QColor& color, double size, const QS
 
 }  // namespace
 
-TrackTrajectoryView::TrackTrajectoryView(QWidget* parent) : QWidget(parent)
-{
+TrackTrajectoryView::TrackTrajectoryView(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     plot_ = new QCustomPlot(this);
@@ -89,8 +86,7 @@ TrackTrajectoryView::TrackTrajectoryView(QWidget* parent) : QWidget(parent)
 
 TrackTrajectoryView::~TrackTrajectoryView() = default;
 
-QString TrackTrajectoryView::findResult(const Project& project)
-{
+QString TrackTrajectoryView::findResult(const Project& project) {
     for (const QString& path : project.streamPaths()) {
         const Stream* stream = project.stream(path);
         if (stream && stream->info().provenance.processorId == QLatin1String("position-filter") &&
@@ -100,11 +96,11 @@ QString TrackTrajectoryView::findResult(const Project& project)
     return {};
 }
 
-TrackGeometry TrackTrajectoryView::trackOf(const Project& project, const QString& trajectoryPath)
-{
+TrackGeometry TrackTrajectoryView::trackOf(const Project& project, const QString& trajectoryPath) {
     const Stream* stream = project.stream(trajectoryPath);
     const QJsonObject params = stream ? stream->info().provenance.parameters : QJsonObject();
-    auto track = TrackGeometry::resolve(project.geometry(), params.value(QStringLiteral("track")).toString(QStringLiteral("iaaf-400m")));
+    auto track = TrackGeometry::resolve(project.geometry(),
+                                        params.value(QStringLiteral("track")).toString(QStringLiteral("iaaf-400m")));
     TrackGeometry geometry = track ? *track : TrackGeometry::iaaf400m();
     TrackPose pose = geometry.pose();
     pose.x = params.value(QStringLiteral("track_x")).toDouble(pose.x);
@@ -114,8 +110,7 @@ TrackGeometry TrackTrajectoryView::trackOf(const Project& project, const QString
     return geometry;
 }
 
-Status TrackTrajectoryView::setResult(const Project& project, const QString& trajectoryPath)
-{
+Status TrackTrajectoryView::setResult(const Project& project, const QString& trajectoryPath) {
     const Stream* stream = project.stream(trajectoryPath);
     if (!stream) return makeError(tr("'%1' is not a stream of this project").arg(trajectoryPath));
     const Xy filtered = readXy(*stream);
@@ -180,15 +175,14 @@ Status TrackTrajectoryView::setResult(const Project& project, const QString& tra
 
 QString TrackTrajectoryView::summary() const { return summary_; }
 
-void TrackTrajectoryView::clearSpeedRuns()
-{
+void TrackTrajectoryView::clearSpeedRuns() {
     for (QCPCurve* curve : std::as_const(speedRuns_)) plot_->removePlottable(curve);
     speedRuns_.clear();
     colorScale_->setVisible(false);
 }
 
-void TrackTrajectoryView::addSpeedRuns(const QVector<double>& x, const QVector<double>& y, const QVector<double>& speed)
-{
+void TrackTrajectoryView::addSpeedRuns(const QVector<double>& x, const QVector<double>& y,
+                                       const QVector<double>& speed) {
     const auto [lo, hi] = std::minmax_element(speed.cbegin(), speed.cend());
     const double vMin = *lo, vMax = std::max(*hi, *lo + 1e-6);
     auto bin = [&](double v) { return std::clamp(int((v - vMin) / (vMax - vMin) * kSpeedBins), 0, kSpeedBins - 1); };
@@ -222,8 +216,7 @@ namespace {
 
 // Screenshot view "track": the first position-filter result on its track, shown as a tab next to
 // the main window's panels.
-Status prepareTrackView(Workspace& workspace)
-{
+Status prepareTrackView(Workspace& workspace) {
     Project* project = workspace.project();
     const QString path = project ? TrackTrajectoryView::findResult(*project) : QString();
     if (path.isEmpty())

@@ -3,12 +3,9 @@
 namespace athlos::ui {
 
 VideoDecodeWorker::VideoDecodeWorker(std::unique_ptr<VideoReader> reader, Callback callback)
-    : reader_(std::move(reader)), callback_(std::move(callback)), thread_([this] { run(); })
-{
-}
+    : reader_(std::move(reader)), callback_(std::move(callback)), thread_([this] { run(); }) {}
 
-VideoDecodeWorker::~VideoDecodeWorker()
-{
+VideoDecodeWorker::~VideoDecodeWorker() {
     {
         std::lock_guard lock(mutex_);
         stop_ = true;
@@ -18,8 +15,7 @@ VideoDecodeWorker::~VideoDecodeWorker()
     thread_.join();
 }
 
-void VideoDecodeWorker::request(quint64 serial, long long index)
-{
+void VideoDecodeWorker::request(quint64 serial, long long index) {
     {
         std::lock_guard lock(mutex_);
         pending_ = Request{serial, index};
@@ -27,8 +23,7 @@ void VideoDecodeWorker::request(quint64 serial, long long index)
     wake_.notify_one();
 }
 
-void VideoDecodeWorker::run()
-{
+void VideoDecodeWorker::run() {
     for (;;) {
         Request request;
         {
@@ -45,8 +40,9 @@ void VideoDecodeWorker::run()
             continue;
         }
         // The reader's buffer is packed BGR; the copy detaches the image from it.
-        const QImage image = QImage(frame->bgr.get(), frame->width, frame->height, frame->width * 3, QImage::Format_BGR888)
-                                 .convertToFormat(QImage::Format_RGB32);
+        const QImage image =
+            QImage(frame->bgr.get(), frame->width, frame->height, frame->width * 3, QImage::Format_BGR888)
+                .convertToFormat(QImage::Format_RGB32);
         callback_(request.serial, request.index, image, {});
     }
 }

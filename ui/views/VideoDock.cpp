@@ -34,8 +34,7 @@ QString formatSeconds(double t) { return QString::number(t, 'f', 3); }
 
 }  // namespace
 
-VideoDock::VideoDock(Workspace& workspace, QWidget* parent) : QDockWidget(tr("Video"), parent), workspace_(workspace)
-{
+VideoDock::VideoDock(Workspace& workspace, QWidget* parent) : QDockWidget(tr("Video"), parent), workspace_(workspace) {
     setObjectName(QStringLiteral("videoDock"));
     auto* body = new QWidget(this);
     recordingCombo_ = new QComboBox(body);
@@ -104,7 +103,8 @@ VideoDock::VideoDock(Workspace& workspace, QWidget* parent) : QDockWidget(tr("Vi
     connect(offsetBox_, &QDoubleSpinBox::valueChanged, this, [this](double value) {
         if (link_ && std::abs(value - link_->offset) >= 5e-4) setOffset(value);
     });
-    connect(recordingCombo_, &QComboBox::activated, this, [this] { (void)setRecording(recordingCombo_->currentText()); });
+    connect(recordingCombo_, &QComboBox::activated, this,
+            [this] { (void)setRecording(recordingCombo_->currentText()); });
     if (TimeController* time = workspace_.timeController())
         connect(time, &TimeController::cursorChanged, this, &VideoDock::onCursor);
     // The dock reads the project it was opened on: follow the window when it swaps projects.
@@ -115,8 +115,7 @@ VideoDock::VideoDock(Workspace& workspace, QWidget* parent) : QDockWidget(tr("Vi
 
 VideoDock::~VideoDock() = default;
 
-void VideoDock::reloadProject()
-{
+void VideoDock::reloadProject() {
     Project* project = workspace_.project();
     const QSignalBlocker blocker(recordingCombo_);
     recordingCombo_->clear();
@@ -154,8 +153,7 @@ void VideoDock::reloadProject()
     (void)setRecording(name);
 }
 
-Status VideoDock::setRecording(const QString& recording)
-{
+Status VideoDock::setRecording(const QString& recording) {
     worker_.reset();
     info_.reset();
     link_.reset();
@@ -195,11 +193,13 @@ Status VideoDock::setRecording(const QString& recording)
     }
     const VideoInfo& vi = (*reader)->info();
     info_ = Info{vi.fps, vi.frames, vi.file, vi.codec};
-    fileLabel_->setText(tr("%1 (%2, %3 fps, %4 frames)").arg(link_->storedPath, vi.codec).arg(vi.fps, 0, 'g', 6).arg(vi.frames));
+    fileLabel_->setText(
+        tr("%1 (%2, %3 fps, %4 frames)").arg(link_->storedPath, vi.codec).arg(vi.fps, 0, 'g', 6).arg(vi.frames));
     worker_ = std::make_unique<VideoDecodeWorker>(
         std::move(*reader), [this](quint64 serial, long long index, const QImage& image, const QString& error) {
             QMetaObject::invokeMethod(
-                this, [this, serial, index, image, error] { onDecoded(serial, index, image, error); }, Qt::QueuedConnection);
+                this, [this, serial, index, image, error] { onDecoded(serial, index, image, error); },
+                Qt::QueuedConnection);
         });
     shownIndex_ = -1;
     if (TimeController* time = workspace_.timeController()) onCursor(time->cursor());
@@ -208,17 +208,15 @@ Status VideoDock::setRecording(const QString& recording)
 
 double VideoDock::offset() const { return link_ ? link_->offset : 0.0; }
 
-void VideoDock::setOffset(double offset)
-{
+void VideoDock::setOffset(double offset) {
     if (!link_ || !std::isfinite(offset)) return;
     const double before = link_->offset;
     if (offset == before) return;
     undoStack_->push(new VideoOffsetCommand([this](double value) { applyOffset(value); }, before, offset,
-                                       tr("Video offset %1 s").arg(formatSeconds(offset))));
+                                            tr("Video offset %1 s").arg(formatSeconds(offset))));
 }
 
-void VideoDock::applyOffset(double offset)
-{
+void VideoDock::applyOffset(double offset) {
     if (!link_) return;
     link_->offset = offset;
     {
@@ -235,8 +233,7 @@ void VideoDock::applyOffset(double offset)
     if (TimeController* time = workspace_.timeController()) onCursor(time->cursor());
 }
 
-void VideoDock::markVideoEvent()
-{
+void VideoDock::markVideoEvent() {
     if (!info_ || shownIndex_ < 0 || wanted_ < 0) {
         syncLabel_->setText(tr("Put the cursor where the video shows the event first."));
         return;
@@ -250,8 +247,7 @@ void VideoDock::markVideoEvent()
                             .arg(wanted_));
 }
 
-bool VideoDock::completeSync()
-{
+bool VideoDock::completeSync() {
     if (!markedVideo_ || !markedSignal_) return false;
     const double offset = VideoLink::offsetFromEvent(*markedVideo_, *markedSignal_);
     syncLabel_->setText(tr("Synchronised: video %1 s = recording %2 s, offset %3 s.")
@@ -262,8 +258,7 @@ bool VideoDock::completeSync()
     return true;
 }
 
-void VideoDock::markSignalEvent()
-{
+void VideoDock::markSignalEvent() {
     TimeController* time = workspace_.timeController();
     if (!info_ || !time) return;
     markedSignal_ = time->cursor();
@@ -273,8 +268,7 @@ void VideoDock::markSignalEvent()
                             .arg(formatSeconds(*markedSignal_)));
 }
 
-void VideoDock::stepFrame(int frames)
-{
+void VideoDock::stepFrame(int frames) {
     TimeController* time = workspace_.timeController();
     if (!info_ || !time || !link_) return;
     long long index = wanted_;
@@ -283,8 +277,7 @@ void VideoDock::stepFrame(int frames)
     time->setCursor(link_->recordingTime(double(index) / info_->fps));
 }
 
-void VideoDock::onCursor(double t)
-{
+void VideoDock::onCursor(double t) {
     if (!info_ || !link_ || !worker_) return;
     const double tv = link_->videoTime(t);
     const double duration = double(info_->frames) / info_->fps;
@@ -307,8 +300,7 @@ void VideoDock::onCursor(double t)
     updateLabels();
 }
 
-void VideoDock::onDecoded(quint64 serial, long long index, const QImage& image, const QString& error)
-{
+void VideoDock::onDecoded(quint64 serial, long long index, const QImage& image, const QString& error) {
     if (serial != serial_) return;  // a newer request is under way
     if (!error.isEmpty()) {
         showPlaceholder(error);
@@ -321,8 +313,7 @@ void VideoDock::onDecoded(quint64 serial, long long index, const QImage& image, 
     updateLabels();
 }
 
-void VideoDock::showPlaceholder(const QString& text)
-{
+void VideoDock::showPlaceholder(const QString& text) {
     shownIndex_ = -1;
     shownImage_ = {};
     placeholder_ = text;
@@ -334,8 +325,7 @@ QString VideoDock::placeholderText() const { return placeholder_; }
 
 long long VideoDock::decoderSeeks() const { return worker_ ? worker_->seekCount() : 0; }
 
-void VideoDock::updateLabels()
-{
+void VideoDock::updateLabels() {
     if (!info_ || wanted_ < 0) {
         positionLabel_->setText(info_ ? tr("outside the video") : QString());
         return;
@@ -346,8 +336,7 @@ void VideoDock::updateLabels()
                                 .arg(formatSeconds(double(wanted_) / info_->fps)));
 }
 
-bool VideoDock::waitForFrame(int timeoutMs)
-{
+bool VideoDock::waitForFrame(int timeoutMs) {
     QDeadlineTimer deadline(timeoutMs);
     while (!deadline.hasExpired()) {
         QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
@@ -362,22 +351,24 @@ namespace {
 
 const char* kContext = "athlos::ui::VideoDock";
 
-VideoDock* findDock(QWidget* window) { return window ? window->findChild<VideoDock*>(QStringLiteral("videoDock")) : nullptr; }
-
-QString askForVideo(QWidget* parent)
-{
-    return QFileDialog::getOpenFileName(
-        parent, QCoreApplication::translate(kContext, "Attach a video"), QString(),
-        QCoreApplication::translate(kContext, "Videos (*.mp4 *.m4v *.mov *.avi *.mkv *.webm *.mts *.mpg);;All files (*)"));
+VideoDock* findDock(QWidget* window) {
+    return window ? window->findChild<VideoDock*>(QStringLiteral("videoDock")) : nullptr;
 }
 
-void launchVideo(Workspace& workspace)
-{
+QString askForVideo(QWidget* parent) {
+    return QFileDialog::getOpenFileName(
+        parent, QCoreApplication::translate(kContext, "Attach a video"), QString(),
+        QCoreApplication::translate(kContext,
+                                    "Videos (*.mp4 *.m4v *.mov *.avi *.mkv *.webm *.mts *.mpg);;All files (*)"));
+}
+
+void launchVideo(Workspace& workspace) {
     Project* project = workspace.project();
     QWidget* parent = workspace.window();
     if (!project || project->recordingNames().isEmpty()) {
-        QMessageBox::information(parent, QCoreApplication::translate(kContext, "Video"),
-                                 QCoreApplication::translate(kContext, "Import a recording first; a video is attached to a recording."));
+        QMessageBox::information(
+            parent, QCoreApplication::translate(kContext, "Video"),
+            QCoreApplication::translate(kContext, "Import a recording first; a video is attached to a recording."));
         return;
     }
     QString recording = ItemPath::parse(workspace.currentItem()).recording;
@@ -392,7 +383,8 @@ void launchVideo(Workspace& workspace)
                                      QCoreApplication::translate(kContext, "Please locate the video."));
         const QString file = askForVideo(parent);
         if (file.isEmpty()) return;
-        auto attached = VideoLink::attach(*project, recording, file, link ? link->offset : 0.0, link ? link->fpsOverride : 0.0);
+        auto attached =
+            VideoLink::attach(*project, recording, file, link ? link->offset : 0.0, link ? link->fpsOverride : 0.0);
         if (!attached) {
             QMessageBox::warning(parent, QCoreApplication::translate(kContext, "Video"), attached.message());
             return;
@@ -410,13 +402,13 @@ void launchVideo(Workspace& workspace)
     (void)dock->setRecording(recording);
 }
 
-Status prepareVideoView(Workspace& workspace)
-{
+Status prepareVideoView(Workspace& workspace) {
     Project* project = workspace.project();
     const QString recording = project ? VideoLink::firstLinkedRecording(*project) : QString();
     if (recording.isEmpty())
-        return makeError(QCoreApplication::translate(kContext, "no recording in this project has a video; attach one with "
-                                                               "'athlos video <project> <recording> <file>'"));
+        return makeError(QCoreApplication::translate(kContext,
+                                                     "no recording in this project has a video; attach one with "
+                                                     "'athlos video <project> <recording> <file>'"));
     if (auto resolved = VideoLink::resolve(*project, recording); !resolved) return resolved.error();
     // Plot the recording's first stream so the cursor range is the recording's.
     if (const Recording* rec = project->recording(recording); rec && !rec->streams.empty())

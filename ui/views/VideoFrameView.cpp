@@ -4,28 +4,24 @@
 
 namespace athlos::ui {
 
-VideoFrameView::VideoFrameView(QWidget* parent) : QWidget(parent)
-{
+VideoFrameView::VideoFrameView(QWidget* parent) : QWidget(parent) {
     setMinimumSize(160, 120);
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
 }
 
-void VideoFrameView::setImage(const QImage& image)
-{
+void VideoFrameView::setImage(const QImage& image) {
     image_ = image;
     text_.clear();
     update();
 }
 
-void VideoFrameView::setText(const QString& text)
-{
+void VideoFrameView::setText(const QString& text) {
     image_ = {};
     text_ = text;
     update();
 }
 
-void VideoFrameView::paintEvent(QPaintEvent*)
-{
+void VideoFrameView::paintEvent(QPaintEvent*) {
     QPainter painter(this);
     painter.fillRect(rect(), QColor(24, 24, 28));
     if (!image_.isNull()) {

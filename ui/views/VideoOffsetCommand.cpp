@@ -2,10 +2,9 @@
 
 namespace athlos::ui {
 
-VideoOffsetCommand::VideoOffsetCommand(std::function<void(double)> apply, double before, double after, const QString& text)
-    : QUndoCommand(text), apply_(std::move(apply)), before_(before), after_(after)
-{
-}
+VideoOffsetCommand::VideoOffsetCommand(std::function<void(double)> apply, double before, double after,
+                                       const QString& text)
+    : QUndoCommand(text), apply_(std::move(apply)), before_(before), after_(after) {}
 
 void VideoOffsetCommand::undo() { apply_(before_); }
 

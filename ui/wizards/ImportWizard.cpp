@@ -18,8 +18,7 @@
 
 namespace athlos::ui {
 
-ImportWizard::ImportWizard(Workspace& workspace, QWidget* parent) : QWizard(parent), workspace_(workspace)
-{
+ImportWizard::ImportWizard(Workspace& workspace, QWidget* parent) : QWizard(parent), workspace_(workspace) {
     setObjectName(QStringLiteral("importWizard"));
     setWindowTitle(tr("Import Wizard"));
     setOption(QWizard::NoBackButtonOnStartPage);
@@ -34,8 +33,7 @@ ImportWizard::ImportWizard(Workspace& workspace, QWidget* parent) : QWizard(pare
 
 ImportWizard::~ImportWizard() = default;
 
-void ImportWizard::addFile(const QString& file, const QString& athlete)
-{
+void ImportWizard::addFile(const QString& file, const QString& athlete) {
     const QString path = QFileInfo(file).absoluteFilePath();
     for (const ImportFileSettings& existing : files_)
         if (existing.file == path) return;
@@ -48,15 +46,13 @@ void ImportWizard::addFile(const QString& file, const QString& athlete)
     refreshPreview(int(files_.size()) - 1, true);
 }
 
-void ImportWizard::addFiles(const QStringList& files)
-{
+void ImportWizard::addFiles(const QStringList& files) {
     for (const QString& file : files) addFile(file, {});
     validated_ = false;
     emit filesChanged();
 }
 
-int ImportWizard::addFolder(const QString& dir)
-{
+int ImportWizard::addFolder(const QString& dir) {
     QSet<QString> extensions;
     for (const auto& importer : importers())
         for (const QString& ext : importer->extensions()) extensions.insert(ext);
@@ -72,8 +68,7 @@ int ImportWizard::addFolder(const QString& dir)
     return added;
 }
 
-Expected<int> ImportWizard::applyRoster(const QString& roster)
-{
+Expected<int> ImportWizard::applyRoster(const QString& roster) {
     auto entries = readRoster(roster);
     if (!entries) return entries.error();
     std::vector<bool> used(entries->size(), false);
@@ -99,29 +94,28 @@ Expected<int> ImportWizard::applyRoster(const QString& roster)
         ++matched;
     }
     for (std::size_t i = 0; i < entries->size(); ++i)
-        if (!used[i]) rosterWarnings_ << tr("%1: '%2' is in the roster but not among the files").arg(rosterName, (*entries)[i].file);
+        if (!used[i])
+            rosterWarnings_
+                << tr("%1: '%2' is in the roster but not among the files").arg(rosterName, (*entries)[i].file);
     validated_ = false;
     emit filesChanged();
     return matched;
 }
 
-void ImportWizard::removeFile(int index)
-{
+void ImportWizard::removeFile(int index) {
     if (index < 0 || index >= int(files_.size())) return;
     files_.erase(files_.begin() + index);
     validated_ = false;
     emit filesChanged();
 }
 
-void ImportWizard::clearFiles()
-{
+void ImportWizard::clearFiles() {
     files_.clear();
     validated_ = false;
     emit filesChanged();
 }
 
-void ImportWizard::refreshPreview(int index, bool resetMapping)
-{
+void ImportWizard::refreshPreview(int index, bool resetMapping) {
     ImportFileSettings& s = files_[size_t(index)];
     auto preview = previewFile(s.file, s.options.format, 20, s.options.kind);
     if (!preview) {
@@ -143,8 +137,7 @@ void ImportWizard::refreshPreview(int index, bool resetMapping)
     validated_ = false;
 }
 
-ImportOptions ImportWizard::optionsFor(int index) const
-{
+ImportOptions ImportWizard::optionsFor(int index) const {
     const ImportFileSettings& s = files_[size_t(index)];
     ImportOptions options = s.options;
     options.target = s.stream.trimmed().isEmpty() ? s.recording.trimmed()
@@ -155,31 +148,29 @@ ImportOptions ImportWizard::optionsFor(int index) const
     return options;
 }
 
-void ImportWizard::setOverwrite(bool overwrite)
-{
+void ImportWizard::setOverwrite(bool overwrite) {
     overwrite_ = overwrite;
     if (validated_) updateProblems();
 }
 
-BackgroundTask::Outcome ImportWizard::runTask(const QString& label, const BackgroundTask::Job& job)
-{
+BackgroundTask::Outcome ImportWizard::runTask(const QString& label, const BackgroundTask::Job& job) {
     if (runner_) return runner_(label, job);
     return BackgroundTask::run(this, label, job, showProgress_);
 }
 
-bool ImportWizard::validateAll()
-{
+bool ImportWizard::validateAll() {
     checks_.clear();
     validated_ = false;
     std::vector<std::pair<QString, ImportOptions>> jobs;
     for (int i = 0; i < int(files_.size()); ++i) jobs.emplace_back(files_[size_t(i)].file, optionsFor(i));
     auto checks = std::make_shared<std::vector<ImportCheck>>();
-    const BackgroundTask::Outcome outcome = runTask(
-        tr("Checking %1 file(s)…").arg(jobs.size()), [jobs, checks](const Progress& progress) -> Status {
+    const BackgroundTask::Outcome outcome =
+        runTask(tr("Checking %1 file(s)…").arg(jobs.size()), [jobs, checks](const Progress& progress) -> Status {
             const double n = double(jobs.size());
             for (size_t i = 0; i < jobs.size(); ++i) {
                 if (progress.isCancelled()) return makeError(QStringLiteral("cancelled"));
-                checks->push_back(checkImport(jobs[i].first, jobs[i].second, progress.sub(double(i) / n, double(i + 1) / n)));
+                checks->push_back(
+                    checkImport(jobs[i].first, jobs[i].second, progress.sub(double(i) / n, double(i + 1) / n)));
             }
             return {};
         });
@@ -196,8 +187,7 @@ bool ImportWizard::validateAll()
     return problems_.isEmpty();
 }
 
-void ImportWizard::updateProblems()
-{
+void ImportWizard::updateProblems() {
     problems_.clear();
     warnings_ = rosterWarnings_;
     const Project* project = workspace_.project();
@@ -213,14 +203,14 @@ void ImportWizard::updateProblems()
                 problems_ << tr("%1: '%2' is imported from another file as well; give it another name").arg(name, path);
             seen.insert(path);
             if (!overwrite_ && project && (project->stream(path) || project->table(path)))
-                problems_ << tr("%1: '%2' already exists in the project (tick overwrite to replace it)").arg(name, path);
+                problems_
+                    << tr("%1: '%2' already exists in the project (tick overwrite to replace it)").arg(name, path);
         }
     }
     emit validationChanged();
 }
 
-bool ImportWizard::importAll()
-{
+bool ImportWizard::importAll() {
     error_.clear();
     imported_.clear();
     Project* project = workspace_.project();
@@ -231,8 +221,8 @@ bool ImportWizard::importAll()
     std::vector<std::pair<QString, ImportOptions>> jobs;
     for (int i = 0; i < int(files_.size()); ++i) jobs.emplace_back(files_[size_t(i)].file, optionsFor(i));
     auto merged = std::make_shared<ImportResult>();
-    const BackgroundTask::Outcome outcome = runTask(
-        tr("Importing %1 file(s)…").arg(jobs.size()), [jobs, merged](const Progress& progress) -> Status {
+    const BackgroundTask::Outcome outcome =
+        runTask(tr("Importing %1 file(s)…").arg(jobs.size()), [jobs, merged](const Progress& progress) -> Status {
             const double n = double(jobs.size());
             for (size_t i = 0; i < jobs.size(); ++i) {
                 auto result = importFile(jobs[i].first, jobs[i].second, progress.sub(double(i) / n, double(i + 1) / n));
@@ -278,8 +268,7 @@ bool ImportWizard::importAll()
     return true;
 }
 
-bool ImportWizard::validateCurrentPage()
-{
+bool ImportWizard::validateCurrentPage() {
     if (currentId() == CheckPage) {
         if (!validated_ || !problems_.isEmpty()) return false;
         const bool ok = importAll();
@@ -291,8 +280,7 @@ bool ImportWizard::validateCurrentPage()
 
 namespace {
 
-void launchImportWizard(Workspace& workspace)
-{
+void launchImportWizard(Workspace& workspace) {
     if (!workspace.project()) {
         QMessageBox::information(workspace.window(), ImportWizard::tr("Import Wizard"),
                                  ImportWizard::tr("Create or open a project first, then import recordings into it."));

@@ -24,13 +24,13 @@ class Workspace;
 // Everything the wizard knows about one file.
 struct ImportFileSettings {
     QString file;
-    ImportOptions options;   // format, kind, columns, timeColumn, timeUnit (names and target: below)
-    ImportPreview preview;   // for options.format / options.kind
+    ImportOptions options;  // format, kind, columns, timeColumn, timeUnit (names and target: below)
+    ImportPreview preview;  // for options.format / options.kind
     QString previewError;
     QString recording;
-    QString stream;          // empty: the kind's default name
-    QString athlete;         // stored in the recording's metadata
-    QJsonObject roster;      // the file's roster row (number, team, position, mass_kg, ...), same place
+    QString stream;      // empty: the kind's default name
+    QString athlete;     // stored in the recording's metadata
+    QJsonObject roster;  // the file's roster row (number, team, position, mass_kg, ...), same place
 };
 
 class ImportWizard : public QWizard {

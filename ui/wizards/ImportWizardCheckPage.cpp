@@ -12,11 +12,11 @@
 
 namespace athlos::ui {
 
-ImportWizardCheckPage::ImportWizardCheckPage(ImportWizard& wizard) : wizard_(wizard)
-{
+ImportWizardCheckPage::ImportWizardCheckPage(ImportWizard& wizard) : wizard_(wizard) {
     setTitle(tr("Check"));
-    setSubTitle(tr("Every file has been read without importing it. Fix the problems listed (go back to change "
-                   "the mapping or the names), then Finish imports all files at once."));
+    setSubTitle(
+        tr("Every file has been read without importing it. Fix the problems listed (go back to change "
+           "the mapping or the names), then Finish imports all files at once."));
     setFinalPage(true);
     auto* layout = new QVBoxLayout(this);
     summary_ = new QLabel(this);
@@ -47,15 +47,13 @@ ImportWizardCheckPage::ImportWizardCheckPage(ImportWizard& wizard) : wizard_(wiz
     connect(&wizard_, &ImportWizard::validationChanged, this, &ImportWizardCheckPage::refresh);
 }
 
-void ImportWizardCheckPage::initializePage()
-{
+void ImportWizardCheckPage::initializePage() {
     result_->clear();
     overwrite_->setChecked(wizard_.overwrite());
     wizard_.validateAll();
 }
 
-void ImportWizardCheckPage::refresh()
-{
+void ImportWizardCheckPage::refresh() {
     problems_->clear();
     const QStringList problems = wizard_.problems();
     for (const QString& problem : problems) {
@@ -72,14 +70,10 @@ void ImportWizardCheckPage::refresh()
     emit completeChanged();
 }
 
-bool ImportWizardCheckPage::isComplete() const
-{
+bool ImportWizardCheckPage::isComplete() const {
     return wizard_.validated() && wizard_.problems().isEmpty() && !wizard_.files().empty();
 }
 
-void ImportWizardCheckPage::showResult(const QString& error)
-{
-    result_->setText(error);
-}
+void ImportWizardCheckPage::showResult(const QString& error) { result_->setText(error); }
 
 }  // namespace athlos::ui

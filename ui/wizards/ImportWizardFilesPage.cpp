@@ -17,11 +17,11 @@
 
 namespace athlos::ui {
 
-ImportWizardFilesPage::ImportWizardFilesPage(ImportWizard& wizard) : wizard_(wizard)
-{
+ImportWizardFilesPage::ImportWizardFilesPage(ImportWizard& wizard) : wizard_(wizard) {
     setTitle(tr("Files"));
-    setSubTitle(tr("Choose the files to import: several at once, or a folder with one file per athlete. "
-                   "Recording and athlete names can be edited here or on the next page."));
+    setSubTitle(
+        tr("Choose the files to import: several at once, or a folder with one file per athlete. "
+           "Recording and athlete names can be edited here or on the next page."));
     auto* layout = new QVBoxLayout(this);
     table_ = new QTableWidget(0, 4, this);
     table_->setObjectName(QStringLiteral("filesTable"));
@@ -56,7 +56,8 @@ ImportWizardFilesPage::ImportWizardFilesPage(ImportWizard& wizard) : wizard_(wiz
             filters << QStringLiteral("%1 (%2)").arg(importer->description(), patterns.join(QLatin1Char(' ')));
         }
         filters.prepend(tr("All files (*)"));
-        const QStringList files = QFileDialog::getOpenFileNames(this, tr("Import Files"), QString(), filters.join(QStringLiteral(";;")));
+        const QStringList files =
+            QFileDialog::getOpenFileNames(this, tr("Import Files"), QString(), filters.join(QStringLiteral(";;")));
         if (!files.isEmpty()) wizard_.addFiles(files);
     });
     connect(addFolder, &QPushButton::clicked, this, [this] {
@@ -64,13 +65,16 @@ ImportWizardFilesPage::ImportWizardFilesPage(ImportWizard& wizard) : wizard_(wiz
         if (!dir.isEmpty()) wizard_.addFolder(dir);
     });
     connect(roster, &QPushButton::clicked, this, [this] {
-        const QString file = QFileDialog::getOpenFileName(this, tr("Roster"), QString(), tr("CSV files (*.csv);;All files (*)"));
+        const QString file =
+            QFileDialog::getOpenFileName(this, tr("Roster"), QString(), tr("CSV files (*.csv);;All files (*)"));
         if (file.isEmpty()) return;
         const auto matched = wizard_.applyRoster(file);
-        if (!matched) QMessageBox::warning(this, tr("Roster"), matched.message());
+        if (!matched)
+            QMessageBox::warning(this, tr("Roster"), matched.message());
         else if (!wizard_.warnings().isEmpty())
-            QMessageBox::information(this, tr("Roster"), tr("%n file(s) named from the roster.", nullptr, *matched) +
-                                                             QStringLiteral("\n") + wizard_.warnings().join(QLatin1Char('\n')));
+            QMessageBox::information(this, tr("Roster"),
+                                     tr("%n file(s) named from the roster.", nullptr, *matched) + QStringLiteral("\n") +
+                                         wizard_.warnings().join(QLatin1Char('\n')));
     });
     connect(remove, &QPushButton::clicked, this, [this] {
         QList<int> rows;
@@ -82,8 +86,7 @@ ImportWizardFilesPage::ImportWizardFilesPage(ImportWizard& wizard) : wizard_(wiz
     connect(&wizard_, &ImportWizard::filesChanged, this, &ImportWizardFilesPage::refresh);
 }
 
-void ImportWizardFilesPage::refresh()
-{
+void ImportWizardFilesPage::refresh() {
     const QSignalBlocker blocker(table_);
     const auto& files = wizard_.files();
     table_->setRowCount(int(files.size()));
@@ -105,8 +108,7 @@ void ImportWizardFilesPage::refresh()
     emit completeChanged();
 }
 
-void ImportWizardFilesPage::onItemChanged(QTableWidgetItem* item)
-{
+void ImportWizardFilesPage::onItemChanged(QTableWidgetItem* item) {
     auto& files = wizard_.files();
     if (item->row() < 0 || item->row() >= int(files.size())) return;
     ImportFileSettings& s = files[size_t(item->row())];
@@ -115,9 +117,6 @@ void ImportWizardFilesPage::onItemChanged(QTableWidgetItem* item)
     emit completeChanged();
 }
 
-bool ImportWizardFilesPage::isComplete() const
-{
-    return !wizard_.files().empty();
-}
+bool ImportWizardFilesPage::isComplete() const { return !wizard_.files().empty(); }
 
 }  // namespace athlos::ui

@@ -20,16 +20,14 @@ namespace athlos::ui {
 namespace {
 
 // Units offered in the combos (any other can be typed); see core/util/Units for all spellings.
-const QStringList& unitChoices()
-{
-    static const QStringList units{QString(), "s", "ms", "us", "min", "m", "mm", "cm", "km", "m/s", "km/h", "m/s^2",
-                                   "g", "mg", "rad/s", "deg/s", "rpm", "rad", "deg", "uT", "nT", "mT", "G", "mG",
-                                   "1", "%", "degC", "K", "Hz"};
+const QStringList& unitChoices() {
+    static const QStringList units{QString(), "s",     "ms", "us", "min",   "m",     "mm",   "cm",  "km",  "m/s",
+                                   "km/h",    "m/s^2", "g",  "mg", "rad/s", "deg/s", "rpm",  "rad", "deg", "uT",
+                                   "nT",      "mT",    "G",  "mG", "1",     "%",     "degC", "K",   "Hz"};
     return units;
 }
 
-QComboBox* makeUnitCombo(QWidget* parent, const QString& unit)
-{
+QComboBox* makeUnitCombo(QWidget* parent, const QString& unit) {
     auto* combo = new QComboBox(parent);
     combo->setEditable(true);
     combo->addItems(unitChoices());
@@ -38,23 +36,20 @@ QComboBox* makeUnitCombo(QWidget* parent, const QString& unit)
 }
 
 // The time column's unit or format (core/io/TimeFormats.h; any other spelling can be typed).
-const QStringList& timeFormatChoices()
-{
-    static const QStringList formats{QString(), "s", "ms", "us", "ns", "min", "h", "d", "uptime", "uptime_ms",
-                                     "uptime_us", "uptime_ns", "unix", "unix_ms", "unix_us", "unix_ns", "iso",
-                                     "hh:mm:ss", "hh:mm:ss.fff", "excel"};
+const QStringList& timeFormatChoices() {
+    static const QStringList formats{QString(), "s",       "ms",        "us",        "ns",           "min",  "h",
+                                     "d",       "uptime",  "uptime_ms", "uptime_us", "uptime_ns",    "unix", "unix_ms",
+                                     "unix_us", "unix_ns", "iso",       "hh:mm:ss",  "hh:mm:ss.fff", "excel"};
     return formats;
 }
 
-QString labelNamesText(const std::map<QString, QString>& names)
-{
+QString labelNamesText(const std::map<QString, QString>& names) {
     QStringList pairs;
     for (const auto& [value, name] : names) pairs << value + QLatin1Char('=') + name;
     return pairs.join(QLatin1Char(','));
 }
 
-const ColumnMapping* findMapping(const ImportOptions& options, const QString& source)
-{
+const ColumnMapping* findMapping(const ImportOptions& options, const QString& source) {
     for (const ColumnMapping& m : options.columns)
         if (m.source == source) return &m;
     return nullptr;
@@ -62,11 +57,11 @@ const ColumnMapping* findMapping(const ImportOptions& options, const QString& so
 
 }  // namespace
 
-ImportWizardMappingPage::ImportWizardMappingPage(ImportWizard& wizard) : wizard_(wizard)
-{
+ImportWizardMappingPage::ImportWizardMappingPage(ImportWizard& wizard) : wizard_(wizard) {
     setTitle(tr("Columns and Names"));
-    setSubTitle(tr("Check each file: format, kind, the first rows, and which channel and unit each column becomes. "
-                   "Values are converted to SI units when imported."));
+    setSubTitle(
+        tr("Check each file: format, kind, the first rows, and which channel and unit each column becomes. "
+           "Values are converted to SI units when imported."));
     auto* layout = new QVBoxLayout(this);
 
     auto* top = new QFormLayout;
@@ -101,7 +96,8 @@ ImportWizardMappingPage::ImportWizardMappingPage(ImportWizard& wizard) : wizard_
     previewTable_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     mappingTable_ = new QTableWidget(0, 5, splitter);
     mappingTable_->setObjectName(QStringLiteral("mappingTable"));
-    mappingTable_->setHorizontalHeaderLabels({tr("Column"), tr("Channel"), tr("Unit in File"), tr("Stored as"), tr("Import")});
+    mappingTable_->setHorizontalHeaderLabels(
+        {tr("Column"), tr("Channel"), tr("Unit in File"), tr("Stored as"), tr("Import")});
     mappingTable_->horizontalHeader()->setSectionResizeMode(ChannelColumn, QHeaderView::Stretch);
     mappingTable_->verticalHeader()->hide();
     layout->addWidget(splitter, 1);
@@ -114,8 +110,9 @@ ImportWizardMappingPage::ImportWizardMappingPage(ImportWizard& wizard) : wizard_
     timeUnitCombo_->setEditable(true);
     timeUnitCombo_->addItems(timeFormatChoices());
     timeUnitCombo_->setObjectName(QStringLiteral("timeUnitCombo"));
-    timeUnitCombo_->setToolTip(tr("Durations (s, ms, …), device uptime, Unix epochs (unix, unix_ms, unix_ns), "
-                                  "ISO 8601 date-times, clock times (hh:mm:ss[.fff]) or Excel serial days"));
+    timeUnitCombo_->setToolTip(
+        tr("Durations (s, ms, …), device uptime, Unix epochs (unix, unix_ms, unix_ns), "
+           "ISO 8601 date-times, clock times (hh:mm:ss[.fff]) or Excel serial days"));
     timeRow->addWidget(timeColumnCombo_, 1);
     timeRow->addWidget(new QLabel(tr("Unit or format:"), this));
     timeRow->addWidget(timeUnitCombo_);
@@ -168,18 +165,17 @@ ImportWizardMappingPage::ImportWizardMappingPage(ImportWizard& wizard) : wizard_
         store();
         auto& s = wizard_.files()[size_t(current_)];
         const int c = timeColumnCombo_->currentIndex() - 1;  // entry 0: no time column
-        s.options.timeUnit = c >= 0 && c < int(s.preview.columns.size()) ? s.preview.columns[size_t(c)].unit : QString();
+        s.options.timeUnit =
+            c >= 0 && c < int(s.preview.columns.size()) ? s.preview.columns[size_t(c)].unit : QString();
         load();
     });
 }
 
-QComboBox* ImportWizardMappingPage::unitCombo(int row) const
-{
+QComboBox* ImportWizardMappingPage::unitCombo(int row) const {
     return qobject_cast<QComboBox*>(mappingTable_->cellWidget(row, UnitColumn));
 }
 
-void ImportWizardMappingPage::initializePage()
-{
+void ImportWizardMappingPage::initializePage() {
     loading_ = true;
     fileCombo_->clear();
     for (const ImportFileSettings& s : wizard_.files()) fileCombo_->addItem(QFileInfo(s.file).fileName());
@@ -188,8 +184,7 @@ void ImportWizardMappingPage::initializePage()
     showFile(wizard_.files().empty() ? -1 : 0);
 }
 
-bool ImportWizardMappingPage::validatePage()
-{
+bool ImportWizardMappingPage::validatePage() {
     store();
     if (labelNamesError_.isEmpty()) return true;
     errorLabel_->setText(labelNamesError_);
@@ -197,8 +192,7 @@ bool ImportWizardMappingPage::validatePage()
     return false;
 }
 
-void ImportWizardMappingPage::showFile(int index)
-{
+void ImportWizardMappingPage::showFile(int index) {
     store();
     current_ = index;
     if (fileCombo_->currentIndex() != index) {
@@ -209,8 +203,7 @@ void ImportWizardMappingPage::showFile(int index)
     load();
 }
 
-void ImportWizardMappingPage::onFormatOrKindChanged()
-{
+void ImportWizardMappingPage::onFormatOrKindChanged() {
     if (loading_ || current_ < 0) return;
     store();
     auto& s = wizard_.files()[size_t(current_)];
@@ -220,8 +213,7 @@ void ImportWizardMappingPage::onFormatOrKindChanged()
     load();
 }
 
-void ImportWizardMappingPage::load()
-{
+void ImportWizardMappingPage::load() {
     loading_ = true;
     previewTable_->clear();
     mappingTable_->setRowCount(0);
@@ -277,7 +269,7 @@ void ImportWizardMappingPage::load()
         auto* source = new QTableWidgetItem(c.header);
         source->setFlags(source->flags() & ~Qt::ItemIsEditable);
         mappingTable_->setItem(r, SourceColumn, source);
-        auto* channel = new QTableWidgetItem(isTime ? QStringLiteral("t")
+        auto* channel = new QTableWidgetItem(isTime                       ? QStringLiteral("t")
                                              : m && !m->channel.isEmpty() ? m->channel
                                                                           : c.source);
         if (isTime || !p.mappable) channel->setFlags(channel->flags() & ~Qt::ItemIsEditable);
@@ -300,7 +292,8 @@ void ImportWizardMappingPage::load()
     timeColumnCombo_->setEnabled(p.mappable);
     timeUnitCombo_->setEnabled(p.mappable);
     timeUnitCombo_->setCurrentText(timeUnit);
-    for (QWidget* w : std::initializer_list<QWidget*>{dateEdit_, startEdit_, labelCombo_, labelNamesEdit_, dropUnmappedBox_})
+    for (QWidget* w :
+         std::initializer_list<QWidget*>{dateEdit_, startEdit_, labelCombo_, labelNamesEdit_, dropUnmappedBox_})
         w->setEnabled(p.mappable);
     dateEdit_->setText(s.options.date);
     startEdit_->setText(s.options.start);
@@ -316,8 +309,7 @@ void ImportWizardMappingPage::load()
     loading_ = false;
 }
 
-void ImportWizardMappingPage::updateStored(int row)
-{
+void ImportWizardMappingPage::updateStored(int row) {
     if (current_ < 0 || current_ >= int(wizard_.files().size())) return;
     const ImportFileSettings& s = wizard_.files()[size_t(current_)];
     const ImportPreview& p = s.preview;
@@ -338,8 +330,10 @@ void ImportWizardMappingPage::updateStored(int row)
             text = c.unit;  // a header unit the kind has no rule for is kept as written
         } else {
             const auto stored = storedUnitFor(p.kind, channel, unit, time);
-            if (stored) text = *stored;
-            else problem = stored.message();
+            if (stored)
+                text = *stored;
+            else
+                problem = stored.message();
         }
     }
     item->setText(problem.isEmpty() ? text : tr("error"));
@@ -347,8 +341,7 @@ void ImportWizardMappingPage::updateStored(int row)
     item->setForeground(problem.isEmpty() ? palette().text() : QBrush(QColor(0xb0, 0x00, 0x20)));
 }
 
-void ImportWizardMappingPage::store()
-{
+void ImportWizardMappingPage::store() {
     if (loading_ || current_ < 0 || current_ >= int(wizard_.files().size())) return;
     ImportFileSettings& s = wizard_.files()[size_t(current_)];
     s.recording = recordingEdit_->text().trimmed();
@@ -380,8 +373,8 @@ void ImportWizardMappingPage::store()
         if (mappingTable_->item(r, ImportColumn)->checkState() != Qt::Checked)
             s.options.columns.push_back({c.source, {}, {}, true});
         else if ((!channel.isEmpty() && channel != c.source) || unit != c.unit)
-            s.options.columns.push_back({c.source, channel == c.source ? QString() : channel,
-                                         unit == c.unit ? QString() : unit, false});
+            s.options.columns.push_back(
+                {c.source, channel == c.source ? QString() : channel, unit == c.unit ? QString() : unit, false});
     }
 }
 

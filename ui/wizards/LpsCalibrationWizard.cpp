@@ -42,8 +42,7 @@ LpsCalibrationWizard::LpsCalibrationWizard(Workspace& workspace, QWidget* parent
     : QWizard(parent),
       workspace_(workspace),
       calibrationSpecs_(calibrationSpecs.isEmpty() ? registeredParameters(kCalibration) : std::move(calibrationSpecs)),
-      alignSpecs_(alignSpecs.isEmpty() ? registeredParameters(kAlign) : std::move(alignSpecs))
-{
+      alignSpecs_(alignSpecs.isEmpty() ? registeredParameters(kAlign) : std::move(alignSpecs)) {
     setWindowTitle(tr("Calibrate LPS"));
     setPage(BeaconsPage, createBeaconsPage());
     setPage(WalkPage, createWalkPage());
@@ -53,10 +52,10 @@ LpsCalibrationWizard::LpsCalibrationWizard(Workspace& workspace, QWidget* parent
 
 LpsCalibrationWizard::~LpsCalibrationWizard() = default;
 
-QWizardPage* LpsCalibrationWizard::createBeaconsPage()
-{
-    auto* page = wizardPage(tr("Initial beacon positions"),
-                            tr("Rough positions (a few metres are fine) from the project or a CSV file (id, x, y, z)."));
+QWizardPage* LpsCalibrationWizard::createBeaconsPage() {
+    auto* page =
+        wizardPage(tr("Initial beacon positions"),
+                   tr("Rough positions (a few metres are fine) from the project or a CSV file (id, x, y, z)."));
     beaconCombo_ = new QComboBox(page);
     beaconCombo_->setObjectName(QStringLiteral("beaconCombo"));
     auto* import = new QPushButton(tr("Import CSV…"), page);
@@ -79,16 +78,17 @@ QWizardPage* LpsCalibrationWizard::createBeaconsPage()
     connect(beaconCombo_, &QComboBox::currentTextChanged, this, &LpsCalibrationWizard::showInitialBeacons);
     connect(trackCombo_, &QComboBox::currentTextChanged, this, &LpsCalibrationWizard::showInitialBeacons);
     connect(import, &QPushButton::clicked, this, [this] {
-        const QString file = QFileDialog::getOpenFileName(this, tr("Import beacon table"), {}, tr("CSV files (*.csv *.txt)"));
+        const QString file =
+            QFileDialog::getOpenFileName(this, tr("Import beacon table"), {}, tr("CSV files (*.csv *.txt)"));
         if (file.isEmpty()) return;
-        const QString rec = tdoaCombo_->currentText().isEmpty() ? QStringLiteral("venue") : recordingOf(tdoaCombo_->currentText());
+        const QString rec =
+            tdoaCombo_->currentText().isEmpty() ? QStringLiteral("venue") : recordingOf(tdoaCombo_->currentText());
         importBeacons(file, rec + QStringLiteral("/") + QFileInfo(file).completeBaseName());
     });
     return page;
 }
 
-void LpsCalibrationWizard::fillBeaconCombo()
-{
+void LpsCalibrationWizard::fillBeaconCombo() {
     const QSignalBlocker blocker(beaconCombo_);
     const QString current = beaconCombo_->currentText();
     beaconCombo_->clear();
@@ -98,8 +98,7 @@ void LpsCalibrationWizard::fillBeaconCombo()
     if (!current.isEmpty()) beaconCombo_->setCurrentText(current);
 }
 
-bool LpsCalibrationWizard::importBeacons(const QString& file, const QString& target)
-{
+bool LpsCalibrationWizard::importBeacons(const QString& file, const QString& target) {
     Project* project = workspace_.project();
     if (!project) return false;
     ImportOptions options;
@@ -119,8 +118,7 @@ bool LpsCalibrationWizard::importBeacons(const QString& file, const QString& tar
     return true;
 }
 
-void LpsCalibrationWizard::showInitialBeacons()
-{
+void LpsCalibrationWizard::showInitialBeacons() {
     const Project* project = workspace_.project();
     if (!project) return;
     auto track = TrackGeometry::resolve(project->geometry(), trackCombo_->currentText());
@@ -135,10 +133,10 @@ void LpsCalibrationWizard::showInitialBeacons()
     beaconView_->refit();
 }
 
-QWizardPage* LpsCalibrationWizard::createWalkPage()
-{
-    auto* page = wizardPage(tr("Calibration walk"),
-                            tr("The TDoA recording of the walk and the calibration settings. Next runs the calibration."));
+QWizardPage* LpsCalibrationWizard::createWalkPage() {
+    auto* page =
+        wizardPage(tr("Calibration walk"),
+                   tr("The TDoA recording of the walk and the calibration settings. Next runs the calibration."));
     tdoaCombo_ = streamCombo(workspace_.project(), QStringLiteral("lps-tdoa"), QStringLiteral("tdoaCombo"), page);
     calibrationForm_ = new ParameterForm(calibrationSpecs_, ParameterForm::NumberStyle::Text, page);
     calibrationForm_->setObjectName(QStringLiteral("calibrationForm"));
@@ -165,13 +163,13 @@ QWizardPage* LpsCalibrationWizard::createWalkPage()
     layout->addWidget(walkCheck_);
     layout->addWidget(walkError_);
     if (calibrationSpecs_.isEmpty())
-        layout->addWidget(new QLabel(tr("The lps-calibration processor was not found; check the plugin folder."), page));
+        layout->addWidget(
+            new QLabel(tr("The lps-calibration processor was not found; check the plugin folder."), page));
     connect(tdoaCombo_, &QComboBox::currentTextChanged, this, setDefaultOutput);
     return page;
 }
 
-QWizardPage* LpsCalibrationWizard::createResultPage()
-{
+QWizardPage* LpsCalibrationWizard::createResultPage() {
     auto* page = wizardPage(tr("Calibration result"),
                             tr("Next keeps the result; Retry discards it so you can change the settings."));
     summary_ = new QLabel(page);
@@ -198,10 +196,10 @@ QWizardPage* LpsCalibrationWizard::createResultPage()
     return page;
 }
 
-QWizardPage* LpsCalibrationWizard::createSavePage()
-{
-    auto* page = wizardPage(tr("Align and save"),
-                            tr("Optionally move the beacons so that surveyed venue marks land on their known coordinates."));
+QWizardPage* LpsCalibrationWizard::createSavePage() {
+    auto* page =
+        wizardPage(tr("Align and save"),
+                   tr("Optionally move the beacons so that surveyed venue marks land on their known coordinates."));
     page->setFinalPage(true);
     alignCheck_ = new QCheckBox(tr("Align to venue marks (lps-align)"), page);
     alignCheck_->setObjectName(QStringLiteral("alignCheck"));
@@ -237,42 +235,39 @@ QWizardPage* LpsCalibrationWizard::createSavePage()
     return page;
 }
 
-void LpsCalibrationWizard::initializePage(int id)
-{
+void LpsCalibrationWizard::initializePage(int id) {
     if (id == BeaconsPage) showInitialBeacons();
     if (id == SavePage && saveEdit_->text().isEmpty()) saveEdit_->setText(calibrated_);
     QWizard::initializePage(id);
 }
 
-RunRequest LpsCalibrationWizard::calibrationRequest() const
-{
-    return RunRequest{kCalibration, {tdoaCombo_->currentText(), beaconCombo_->currentText()}, outputEdit_->text().trimmed(),
+RunRequest LpsCalibrationWizard::calibrationRequest() const {
+    return RunRequest{kCalibration,
+                      {tdoaCombo_->currentText(), beaconCombo_->currentText()},
+                      outputEdit_->text().trimmed(),
                       calibrationForm_->values()};
 }
 
-QString LpsCalibrationWizard::reportPath() const
-{
+QString LpsCalibrationWizard::reportPath() const {
     for (const QString& path : written_)
         if (path.endsWith(QLatin1String("-report"))) return path;
     return {};
 }
 
-bool LpsCalibrationWizard::validateCurrentPage()
-{
+bool LpsCalibrationWizard::validateCurrentPage() {
     switch (currentId()) {
-    case BeaconsPage:
-        return !beaconCombo_->currentText().isEmpty();
-    case WalkPage:
-        return runCalibration();
-    case SavePage:
-        return save();
-    default:
-        return QWizard::validateCurrentPage();
+        case BeaconsPage:
+            return !beaconCombo_->currentText().isEmpty();
+        case WalkPage:
+            return runCalibration();
+        case SavePage:
+            return save();
+        default:
+            return QWizard::validateCurrentPage();
     }
 }
 
-void LpsCalibrationWizard::discardResult()
-{
+void LpsCalibrationWizard::discardResult() {
     Project* project = workspace_.project();
     if (written_.isEmpty() || !project) return;
     for (const QString& path : std::as_const(written_)) project->removeItem(path);
@@ -281,31 +276,31 @@ void LpsCalibrationWizard::discardResult()
     workspace_.projectModified();
 }
 
-void LpsCalibrationWizard::retry()
-{
+void LpsCalibrationWizard::retry() {
     discardResult();
     if (currentId() == ResultPage) back();
 }
 
-void LpsCalibrationWizard::reject()
-{
+void LpsCalibrationWizard::reject() {
     // Leaving without accepting keeps the project as it was before the wizard ran anything.
     if (!saved_) discardResult();
     QWizard::reject();
 }
 
-bool LpsCalibrationWizard::runCalibration()
-{
+bool LpsCalibrationWizard::runCalibration() {
     // Coming back with Back instead of Retry: the earlier result is replaced, not stacked.
     discardResult();
     error_.clear();
     const RunRequest request = calibrationRequest();
     const Project* project = workspace_.project();
-    if (tdoaCombo_->currentText().isEmpty()) error_ = tr("Choose the TDoA stream of the calibration walk.");
-    else if (!ItemPath::parse(request.output).isValid()) error_ = tr("The output must be named rec/table.");
+    if (tdoaCombo_->currentText().isEmpty())
+        error_ = tr("Choose the TDoA stream of the calibration walk.");
+    else if (!ItemPath::parse(request.output).isValid())
+        error_ = tr("The output must be named rec/table.");
     else if (project && (project->table(request.output) || project->stream(request.output)))
         error_ = tr("'%1' already exists; choose another name.").arg(request.output);
-    else if (!calibrationForm_->errors().isEmpty()) error_ = calibrationForm_->errors().join(QLatin1Char('\n'));
+    else if (!calibrationForm_->errors().isEmpty())
+        error_ = calibrationForm_->errors().join(QLatin1Char('\n'));
     if (error_.isEmpty()) {
         auto outcome = workspace_.runProcessor(request);
         if (!outcome) {
@@ -314,12 +309,16 @@ bool LpsCalibrationWizard::runCalibration()
             written_ = outcome->written;
             calibrated_ = request.output;
             if (walkCheck_->isChecked()) {
-                const RunRequest walk{kPositioning, {request.inputs.front(), request.output},
-                                      request.output + QStringLiteral("-walk"), {}};
+                const RunRequest walk{kPositioning,
+                                      {request.inputs.front(), request.output},
+                                      request.output + QStringLiteral("-walk"),
+                                      {}};
                 auto positioned = workspace_.runProcessor(walk);
                 // The walk is a view aid: its failure does not invalidate the calibration.
-                if (positioned) written_ += positioned->written;
-                else summary_->setToolTip(positioned.message());
+                if (positioned)
+                    written_ += positioned->written;
+                else
+                    summary_->setToolTip(positioned.message());
             }
         }
     }
@@ -328,8 +327,7 @@ bool LpsCalibrationWizard::runCalibration()
     return error_.isEmpty();
 }
 
-void LpsCalibrationWizard::showResult()
-{
+void LpsCalibrationWizard::showResult() {
     const Project* project = workspace_.project();
     if (!project) return;
     const Table* initial = project->table(beaconCombo_->currentText());
@@ -387,19 +385,23 @@ void LpsCalibrationWizard::showResult()
     summary_->setText(text);
 }
 
-bool LpsCalibrationWizard::save()
-{
+bool LpsCalibrationWizard::save() {
     error_.clear();
     Project* project = workspace_.project();
     const QString target = saveEdit_->text().trimmed();
-    if (!project || calibrated_.isEmpty()) error_ = tr("There is no calibration result to save.");
-    else if (!ItemPath::parse(target).isValid()) error_ = tr("The name must be rec/table.");
+    if (!project || calibrated_.isEmpty())
+        error_ = tr("There is no calibration result to save.");
+    else if (!ItemPath::parse(target).isValid())
+        error_ = tr("The name must be rec/table.");
     else if (target != calibrated_ && (project->table(target) || project->stream(target)))
         error_ = tr("'%1' already exists; choose another name.").arg(target);
     else if (alignCheck_->isChecked()) {
-        if (target == calibrated_) error_ = tr("The aligned table needs a name of its own.");
+        if (target == calibrated_)
+            error_ = tr("The aligned table needs a name of its own.");
         else {
-            const RunRequest align{kAlign, {calibrated_}, target,
+            const RunRequest align{kAlign,
+                                   {calibrated_},
+                                   target,
                                    {{QStringLiteral("marks"), marksEdit_->text().trimmed()},
                                     {QStringLiteral("mode"), modeCombo_->currentText()}}};
             auto outcome = workspace_.runProcessor(align);
@@ -419,8 +421,7 @@ bool LpsCalibrationWizard::save()
 
 namespace {
 
-void launchLpsCalibrationWizard(Workspace& workspace)
-{
+void launchLpsCalibrationWizard(Workspace& workspace) {
     auto* wizard = new LpsCalibrationWizard(workspace, workspace.window());
     wizard->setAttribute(Qt::WA_DeleteOnClose);
     wizard->open();

@@ -30,20 +30,18 @@ namespace {
 const QString kProcessor = QStringLiteral("position-filter");
 
 // Manual noise settings: the processor's q_* (process), r_* (measurement) and gate parameters.
-bool isNoiseParameter(const QString& name)
-{
-    return name.startsWith(QLatin1String("q_")) || name.startsWith(QLatin1String("r_")) || name == QLatin1String("gate");
+bool isNoiseParameter(const QString& name) {
+    return name.startsWith(QLatin1String("q_")) || name.startsWith(QLatin1String("r_")) ||
+           name == QLatin1String("gate");
 }
 
-const ParameterSpec* findSpec(const ParameterSpecs& specs, const QString& name)
-{
+const ParameterSpec* findSpec(const ParameterSpecs& specs, const QString& name) {
     for (const ParameterSpec& spec : specs)
         if (spec.name == name) return &spec;
     return nullptr;
 }
 
-QComboBox* choiceCombo(const ParameterSpecs& specs, const QString& name, const QStringList& fallback, QWidget* parent)
-{
+QComboBox* choiceCombo(const ParameterSpecs& specs, const QString& name, const QStringList& fallback, QWidget* parent) {
     auto* combo = new QComboBox(parent);
     combo->setObjectName(name + QStringLiteral("Combo"));
     const ParameterSpec* spec = findSpec(specs, name);
@@ -55,9 +53,8 @@ QComboBox* choiceCombo(const ParameterSpecs& specs, const QString& name, const Q
     return combo;
 }
 
-QDoubleSpinBox* spinBox(const QString& objectName, double min, double max, double value, int decimals, const QString& suffix,
-                        QWidget* parent)
-{
+QDoubleSpinBox* spinBox(const QString& objectName, double min, double max, double value, int decimals,
+                        const QString& suffix, QWidget* parent) {
     auto* box = new QDoubleSpinBox(parent);
     box->setObjectName(objectName);
     box->setRange(min, max);
@@ -70,8 +67,9 @@ QDoubleSpinBox* spinBox(const QString& objectName, double min, double max, doubl
 }  // namespace
 
 PositionFilterWizard::PositionFilterWizard(Workspace& workspace, QWidget* parent, ParameterSpecs specs)
-    : QWizard(parent), workspace_(workspace), specs_(specs.isEmpty() ? registeredParameters(kProcessor) : std::move(specs))
-{
+    : QWizard(parent),
+      workspace_(workspace),
+      specs_(specs.isEmpty() ? registeredParameters(kProcessor) : std::move(specs)) {
     setWindowTitle(tr("Filter positions"));
     setPage(InputPage, createInputPage());
     setPage(TrackPage, createTrackPage());
@@ -83,10 +81,10 @@ PositionFilterWizard::PositionFilterWizard(Workspace& workspace, QWidget* parent
 
 PositionFilterWizard::~PositionFilterWizard() = default;
 
-QWizardPage* PositionFilterWizard::createInputPage()
-{
+QWizardPage* PositionFilterWizard::createInputPage() {
     auto* page = wizardPage(tr("Position stream"), tr("The LPS fixes (kind lps-position, columns x and y) to filter."));
-    streamCombo_ = streamCombo(workspace_.project(), QStringLiteral("lps-position"), QStringLiteral("streamCombo"), page);
+    streamCombo_ =
+        streamCombo(workspace_.project(), QStringLiteral("lps-position"), QStringLiteral("streamCombo"), page);
     auto* layout = new QFormLayout(page);
     layout->addRow(tr("Stream:"), streamCombo_);
     if (streamCombo_->count() == 0)
@@ -98,9 +96,9 @@ QWizardPage* PositionFilterWizard::createInputPage()
     return page;
 }
 
-QWizardPage* PositionFilterWizard::createTrackPage()
-{
-    auto* page = wizardPage(tr("Track and pose"), tr("Place the track over the raw positions: the track models follow its lanes."));
+QWizardPage* PositionFilterWizard::createTrackPage() {
+    auto* page = wizardPage(tr("Track and pose"),
+                            tr("Place the track over the raw positions: the track models follow its lanes."));
     trackCombo_ = trackCombo(workspace_.project(), page);
     trackX_ = spinBox(QStringLiteral("trackX"), -1e5, 1e5, 0.0, 2, QStringLiteral(" m"), page);
     trackY_ = spinBox(QStringLiteral("trackY"), -1e5, 1e5, 0.0, 2, QStringLiteral(" m"), page);
@@ -141,8 +139,7 @@ QWizardPage* PositionFilterWizard::createTrackPage()
     return page;
 }
 
-QWizardPage* PositionFilterWizard::createFilterPage()
-{
+QWizardPage* PositionFilterWizard::createFilterPage() {
     auto* page = wizardPage(tr("Filter and noise"), tr("Kalman filter variant, motion model and noise settings."));
     filterCombo_ = choiceCombo(specs_, QStringLiteral("filter"), {"ekf", "ukf", "srukf"}, page);
     modelCombo_ = choiceCombo(specs_, QStringLiteral("model"), {"unconstrained", "pseudo", "augmented"}, page);
@@ -163,8 +160,7 @@ QWizardPage* PositionFilterWizard::createFilterPage()
     return page;
 }
 
-QWizardPage* PositionFilterWizard::createOutputPage()
-{
+QWizardPage* PositionFilterWizard::createOutputPage() {
     auto* page = wizardPage(tr("Smoothing and output"), tr("Next runs the filter."));
     smootherCombo_ = choiceCombo(specs_, QStringLiteral("smoother"), {"none", "rts", "fixed-lag"}, page);
     const ParameterSpec* lagSpec = findSpec(specs_, QStringLiteral("lag"));
@@ -188,8 +184,7 @@ QWizardPage* PositionFilterWizard::createOutputPage()
     return page;
 }
 
-QWizardPage* PositionFilterWizard::createResultPage()
-{
+QWizardPage* PositionFilterWizard::createResultPage() {
     auto* page = wizardPage(tr("Result"));
     page->setFinalPage(true);
     resultView_ = new TrackTrajectoryView(page);
@@ -199,8 +194,7 @@ QWizardPage* PositionFilterWizard::createResultPage()
     return page;
 }
 
-void PositionFilterWizard::initializePage(int id)
-{
+void PositionFilterWizard::initializePage(int id) {
     if (id == TrackPage) {
         if (rawX_.isEmpty()) loadRawPositions();
         if (overlay_->curves().isEmpty()) onTrackChosen();
@@ -208,8 +202,7 @@ void PositionFilterWizard::initializePage(int id)
     QWizard::initializePage(id);
 }
 
-void PositionFilterWizard::loadRawPositions()
-{
+void PositionFilterWizard::loadRawPositions() {
     rawX_.clear();
     rawY_.clear();
     const Project* project = workspace_.project();
@@ -220,8 +213,7 @@ void PositionFilterWizard::loadRawPositions()
     updateOverlay();
 }
 
-void PositionFilterWizard::onTrackChosen()
-{
+void PositionFilterWizard::onTrackChosen() {
     auto track = resolveTrack(workspace_.project(), trackCombo_->currentText());
     if (track) {
         // The geometry's own pose is the starting point; the user adjusts from there.
@@ -233,23 +225,22 @@ void PositionFilterWizard::onTrackChosen()
     updateOverlay();
 }
 
-TrackGeometry PositionFilterWizard::currentTrack() const
-{
+TrackGeometry PositionFilterWizard::currentTrack() const {
     auto track = resolveTrack(workspace_.project(), trackCombo_->currentText());
     TrackGeometry geometry = track ? *track : TrackGeometry::iaaf400m();
     geometry.setPose({trackX_->value(), trackY_->value(), trackRotation_->value() * std::numbers::pi / 180.0});
     return geometry;
 }
 
-void PositionFilterWizard::updateOverlay()
-{
+void PositionFilterWizard::updateOverlay() {
     overlay_->setTrack(currentTrack());
-    if (aspect_->isFraming()) aspect_->frameAll();
-    else posePlot_->replot();
+    if (aspect_->isFraming())
+        aspect_->frameAll();
+    else
+        posePlot_->replot();
 }
 
-void PositionFilterWizard::fitPose()
-{
+void PositionFilterWizard::fitPose() {
     if (rawX_.size() < 2) return;
     const auto [xMin, xMax] = std::minmax_element(rawX_.cbegin(), rawX_.cend());
     const auto [yMin, yMax] = std::minmax_element(rawY_.cbegin(), rawY_.cend());
@@ -270,15 +261,13 @@ void PositionFilterWizard::fitPose()
     updateOverlay();
 }
 
-void PositionFilterWizard::updateEnabled()
-{
+void PositionFilterWizard::updateEnabled() {
     noiseForm_->setVisible(noiseCombo_->currentText() == QLatin1String("manual"));
     lag_->setEnabled(smootherCombo_->currentText() == QLatin1String("fixed-lag"));
     rate_->setEnabled(rateCheck_->isChecked());
 }
 
-RunRequest PositionFilterWizard::request() const
-{
+RunRequest PositionFilterWizard::request() const {
     RunRequest r;
     r.processorId = kProcessor;
     r.inputs = {streamCombo_->currentText()};
@@ -298,26 +287,26 @@ RunRequest PositionFilterWizard::request() const
     return r;
 }
 
-bool PositionFilterWizard::validateCurrentPage()
-{
+bool PositionFilterWizard::validateCurrentPage() {
     if (currentId() == InputPage && streamCombo_->currentText().isEmpty()) return false;
     if (currentId() == OutputPage) return runFilter();
     return QWizard::validateCurrentPage();
 }
 
-bool PositionFilterWizard::runFilter()
-{
+bool PositionFilterWizard::runFilter() {
     error_.clear();
     const RunRequest r = request();
     const Project* project = workspace_.project();
-    if (!ItemPath::parse(r.output).isValid()) error_ = tr("The output must be named rec/stream.");
+    if (!ItemPath::parse(r.output).isValid())
+        error_ = tr("The output must be named rec/stream.");
     else if (project && (project->stream(r.output) || project->table(r.output)))
         error_ = tr("'%1' already exists; choose another name.").arg(r.output);
     else if (noiseCombo_->currentText() == QLatin1String("manual") && !noiseForm_->errors().isEmpty())
         error_ = noiseForm_->errors().join(QLatin1Char('\n'));
     if (error_.isEmpty()) {
         auto outcome = workspace_.runProcessor(r);
-        if (!outcome) error_ = outcome.message();
+        if (!outcome)
+            error_ = outcome.message();
         else if (Project* current = workspace_.project()) {
             if (Status shown = resultView_->setResult(*current, r.output); !shown) error_ = shown.message();
         }
@@ -328,8 +317,7 @@ bool PositionFilterWizard::runFilter()
 
 namespace {
 
-void launchPositionFilterWizard(Workspace& workspace)
-{
+void launchPositionFilterWizard(Workspace& workspace) {
     auto* wizard = new PositionFilterWizard(workspace, workspace.window());
     wizard->setAttribute(Qt::WA_DeleteOnClose);
     QObject::connect(wizard, &QWizard::accepted, wizard, [wizard, &workspace] {

@@ -10,16 +10,14 @@
 
 namespace athlos::ui {
 
-QWizardPage* wizardPage(const QString& title, const QString& subTitle)
-{
+QWizardPage* wizardPage(const QString& title, const QString& subTitle) {
     auto* page = new QWizardPage;
     page->setTitle(title);
     if (!subTitle.isEmpty()) page->setSubTitle(subTitle);
     return page;
 }
 
-QComboBox* streamCombo(const Project* project, const QString& kind, const QString& objectName, QWidget* parent)
-{
+QComboBox* streamCombo(const Project* project, const QString& kind, const QString& objectName, QWidget* parent) {
     auto* combo = new QComboBox(parent);
     combo->setObjectName(objectName);
     if (project)
@@ -28,8 +26,7 @@ QComboBox* streamCombo(const Project* project, const QString& kind, const QStrin
     return combo;
 }
 
-QComboBox* trackCombo(const Project* project, QWidget* parent)
-{
+QComboBox* trackCombo(const Project* project, QWidget* parent) {
     auto* combo = new QComboBox(parent);
     combo->setObjectName(QStringLiteral("trackCombo"));
     combo->addItems(TrackGeometry::builtinNames());
@@ -39,13 +36,11 @@ QComboBox* trackCombo(const Project* project, QWidget* parent)
     return combo;
 }
 
-Expected<TrackGeometry> resolveTrack(const Project* project, const QString& name)
-{
+Expected<TrackGeometry> resolveTrack(const Project* project, const QString& name) {
     return project ? TrackGeometry::resolve(project->geometry(), name) : TrackGeometry::builtin(name);
 }
 
-QLabel* errorLabel(const QString& objectName, QWidget* parent)
-{
+QLabel* errorLabel(const QString& objectName, QWidget* parent) {
     auto* label = new QLabel(parent);
     label->setObjectName(objectName);
     label->setWordWrap(true);
@@ -53,14 +48,12 @@ QLabel* errorLabel(const QString& objectName, QWidget* parent)
     return label;
 }
 
-ParameterSpecs registeredParameters(const QString& id)
-{
+ParameterSpecs registeredParameters(const QString& id) {
     auto processor = ProcessorRegistry::instance().find(id);
     return processor ? processor->parameters() : ParameterSpecs{};
 }
 
-void appendPlanarPositions(const Stream& stream, QVector<double>& x, QVector<double>& y, std::size_t maxRows)
-{
+void appendPlanarPositions(const Stream& stream, QVector<double>& x, QVector<double>& y, std::size_t maxRows) {
     const int cx = stream.info().columnIndex(QStringLiteral("x")), cy = stream.info().columnIndex(QStringLiteral("y"));
     auto data = stream.data();
     if (cx < 0 || cy < 0 || !data) return;

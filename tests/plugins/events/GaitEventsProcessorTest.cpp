@@ -84,7 +84,8 @@ TEST_F(GaitEventsProcessorTest, StridesBecomePredictedAnnotations) {
 
     // A re-run with another label replaces exactly its own annotations.
     ASSERT_TRUE(run(QStringLiteral("walk/left-foot"), QStringLiteral("walk/left-foot-gait"),
-                    {{QStringLiteral("label"), QStringLiteral("step cycle")}}).ok());
+                    {{QStringLiteral("label"), QStringLiteral("step cycle")}})
+                    .ok());
     std::map<QString, std::size_t> after;
     for (const Annotation& a : project_->recording(QStringLiteral("walk"))->annotations) ++after[a.label];
     EXPECT_EQ(after[QStringLiteral("step cycle")], counts[QStringLiteral("stride left")]);
@@ -123,8 +124,9 @@ TEST_F(GaitEventsProcessorTest, ClearErrors) {
     project_->putStream(QStringLiteral("walk/still"), Stream(info, still));
     auto none = run(QStringLiteral("walk/still"), QStringLiteral("walk/g"));
     ASSERT_FALSE(none.ok());
-    EXPECT_TRUE(none.message().startsWith(QStringLiteral("gait-events: input 'walk/still' (imu): no gait event found in "
-                                                         "4.99 s of data (ml_axis = y, swing_threshold = ")))
+    EXPECT_TRUE(
+        none.message().startsWith(QStringLiteral("gait-events: input 'walk/still' (imu): no gait event found in "
+                                                 "4.99 s of data (ml_axis = y, swing_threshold = ")))
         << qPrintable(none.message());
     EXPECT_EQ(project_->table(QStringLiteral("walk/g")), nullptr);
 }

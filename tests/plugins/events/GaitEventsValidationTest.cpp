@@ -18,7 +18,8 @@ const QDir kDir(QStringLiteral(ATHLOS_SHARED_DATA_DIR "/gaitmap"));
 TEST(GaitEventsValidation, GaitmapInitialContactsMatchMotionCapture) {
     const QString imu = kDir.filePath(QStringLiteral("imu_sample_ic_stride.csv"));
     const QString borders = kDir.filePath(QStringLiteral("stride_borders_sample_ic_stride.csv"));
-    if (!QFileInfo::exists(imu) || !QFileInfo::exists(borders)) GTEST_SKIP() << "no gaitmap data in " << qPrintable(kDir.path());
+    if (!QFileInfo::exists(imu) || !QFileInfo::exists(borders))
+        GTEST_SKIP() << "no gaitmap data in " << qPrintable(kDir.path());
     // ±50 ms: 5 samples at 102.4 Hz, a tenth of a step; far below half a step, so a match is unambiguous.
     auto v = validateGaitmap(imu, borders, 0.050);
     ASSERT_TRUE(v.ok()) << qPrintable(v.message());
@@ -63,7 +64,8 @@ TEST(GaitEventsValidation, StairRecordingsGiveRegularStrides) {
             const double median = sorted[sorted.size() / 2];
             EXPECT_GT(median, 0.7) << name;
             EXPECT_LT(median, 1.3) << name;
-            const auto regular = std::count_if(d.begin(), d.end(), [&](double x) { return std::abs(x / median - 1.0) < 0.25; });
+            const auto regular =
+                std::count_if(d.begin(), d.end(), [&](double x) { return std::abs(x / median - 1.0) < 0.25; });
             EXPECT_GE(double(regular), 0.5 * double(d.size())) << name << " " << qPrintable(f.foot);
         }
     }

@@ -20,7 +20,8 @@ TEST(GnssImuEkf, JacobianMatchesNumericDifferentiation) {
         GnssImuEkf::State xp = x, xm = x;
         xp[j] += h;
         xm[j] -= h;
-        numeric.col(j) = (GnssImuEkf::propagate(xp, f, w, ts, 9.81) - GnssImuEkf::propagate(xm, f, w, ts, 9.81)) / (2 * h);
+        numeric.col(j) =
+            (GnssImuEkf::propagate(xp, f, w, ts, 9.81) - GnssImuEkf::propagate(xm, f, w, ts, 9.81)) / (2 * h);
     }
     EXPECT_LT((analytic - numeric).cwiseAbs().maxCoeff(), 1e-8) << "\n" << analytic - numeric;
     // The model rotates the specific force with C(q): at rest, gravity cancels.
@@ -50,7 +51,8 @@ TEST(GnssImuValidation, FusedBeatsGnssOnSimulatedSprints) {
         p.duration = 60;
         mergeFusionMetrics(all, evaluateFusion(simulateImuGnss(p), GnssImuEkf::Params()), s);
     }
-    EXPECT_LT(all.fusedPositionRmse, 0.6 * all.gnssPositionRmse) << all.fusedPositionRmse << " vs " << all.gnssPositionRmse;
+    EXPECT_LT(all.fusedPositionRmse, 0.6 * all.gnssPositionRmse)
+        << all.fusedPositionRmse << " vs " << all.gnssPositionRmse;
     EXPECT_LT(all.fusedSpeedRmse, 0.3);
     EXPECT_FALSE(all.fusedZoneSpeed[0].empty());
     // The seed's own architecture (quaternion Kalman filter for attitude) also fuses usefully.

@@ -95,8 +95,10 @@ TEST(JointAngles, CombinedRotationsReconstructTheRelativeRotation) {
                 const double fs = (joint == Joint::Knee || joint == Joint::Trunk) ? -1 : 1;
                 const double as = joint == Joint::Trunk ? 1 : (side == Side::Right ? -1 : 1);
                 const double rs = joint == Joint::Trunk ? 1 : (side == Side::Right ? 1 : -1);
-                const Quat relative = rot(Vec3::UnitZ(), fs * flex) * rot(Vec3::UnitX(), as * abd) * rot(Vec3::UnitY(), rs * rotation);
-                EXPECT_LT(relativeFromAnatomical({flex * kDeg, abd * kDeg, rotation * kDeg}, joint, side).angularDistance(relative),
+                const Quat relative =
+                    rot(Vec3::UnitZ(), fs * flex) * rot(Vec3::UnitX(), as * abd) * rot(Vec3::UnitY(), rs * rotation);
+                EXPECT_LT(relativeFromAnatomical({flex * kDeg, abd * kDeg, rotation * kDeg}, joint, side)
+                              .angularDistance(relative),
                           1e-12);
                 // Through arbitrary sensor orientations and mounts.
                 JointAngles::Params p;
@@ -219,8 +221,10 @@ TEST(JointAnglesValidation, SimulatedKneeAndHipEndToEnd) {
             const Status st = run(*project, orientation, {in}, in + "-orientation", {{"mode", "6d"}});
             ASSERT_TRUE(st.ok()) << st.message().toStdString();
         }
-        const QString thigh = rec + "-orientation", shank = rec + "-shank-orientation", pelvis = rec + "-pelvis-orientation";
-        Status st = run(*project, joints, {thigh, shank, rec + "-mounts"}, side + "/knee", {{"joint", "knee"}, {"side", side}});
+        const QString thigh = rec + "-orientation", shank = rec + "-shank-orientation",
+                      pelvis = rec + "-pelvis-orientation";
+        Status st =
+            run(*project, joints, {thigh, shank, rec + "-mounts"}, side + "/knee", {{"joint", "knee"}, {"side", side}});
         ASSERT_TRUE(st.ok()) << st.message().toStdString();
         st = run(*project, joints, {pelvis, thigh, rec + "-mounts"}, side + "/hip", {{"joint", "hip"}, {"side", side}});
         ASSERT_TRUE(st.ok()) << st.message().toStdString();
@@ -246,12 +250,18 @@ TEST(JointAnglesValidation, SimulatedKneeAndHipEndToEnd) {
         EXPECT_GT(unaligned->rmse.maxCoeff(), 5.0);
     }
     // Errors name what is wrong.
-    auto bad = runProcessor(*project, joints, RunRequest{"joint-angles", {"right/imu-orientation", "right/imu-shank-orientation"},
-                                                         "right/bad", {{"distal_mount", "1,2"}}});
+    auto bad = runProcessor(*project, joints,
+                            RunRequest{"joint-angles",
+                                       {"right/imu-orientation", "right/imu-shank-orientation"},
+                                       "right/bad",
+                                       {{"distal_mount", "1,2"}}});
     ASSERT_FALSE(bad.ok());
     EXPECT_TRUE(bad.message().contains("distal_mount")) << bad.message().toStdString();
-    bad = runProcessor(*project, joints, RunRequest{"joint-angles", {"right/imu-orientation", "right/imu-shank-orientation",
-                                                                     "right/imu-mounts"}, "right/bad", {{"joint", "ankle"}}});
+    bad = runProcessor(*project, joints,
+                       RunRequest{"joint-angles",
+                                  {"right/imu-orientation", "right/imu-shank-orientation", "right/imu-mounts"},
+                                  "right/bad",
+                                  {{"joint", "ankle"}}});
     ASSERT_FALSE(bad.ok());
     EXPECT_TRUE(bad.message().contains("foot")) << bad.message().toStdString();
 }
@@ -270,8 +280,11 @@ TEST(JointAnglesValidation, FunctionalSegmentCalibration) {
     const QJsonObject attrs = project->stream("c/imu")->info().attributes;
     const double squatBegin = attrs.value("squat_begin").toDouble(), squatEnd = attrs.value("squat_end").toDouble();
     Status st = run(*project, calibration, {"c/imu", "c/imu-shank", "c/imu-pelvis"}, "c/calibration",
-                    {{"segments", "thigh,shank,pelvis"}, {"static_begin", 0.5}, {"static_end", 2.5},
-                     {"movement_begin", squatBegin}, {"movement_end", squatEnd}});
+                    {{"segments", "thigh,shank,pelvis"},
+                     {"static_begin", 0.5},
+                     {"static_end", 2.5},
+                     {"movement_begin", squatBegin},
+                     {"movement_end", squatEnd}});
     ASSERT_TRUE(st.ok()) << st.message().toStdString();
     const Table* estimated = project->table("c/calibration");
     const Table* truth = project->table("c/imu-mounts");
@@ -291,7 +304,8 @@ TEST(JointAnglesValidation, FunctionalSegmentCalibration) {
         const QString in = QStringLiteral("c/imu") + QLatin1String(s);
         ASSERT_TRUE(run(*project, orientation, {in}, in + "-orientation", {{"mode", "6d"}}).ok());
     }
-    st = run(*project, joints, {"c/imu-orientation", "c/imu-shank-orientation", "c/calibration"}, "c/knee", {{"joint", "knee"}});
+    st = run(*project, joints, {"c/imu-orientation", "c/imu-shank-orientation", "c/calibration"}, "c/knee",
+             {{"joint", "knee"}});
     ASSERT_TRUE(st.ok()) << st.message().toStdString();
     const auto knee = compare(*project, "c/knee", "c/imu-knee-reference");
     ASSERT_TRUE(knee.ok());
@@ -300,9 +314,14 @@ TEST(JointAnglesValidation, FunctionalSegmentCalibration) {
     EXPECT_LT(knee->rmse[1], 5.0);
     EXPECT_LT(knee->rmse[2], 5.0);
     // A window without rest is refused with a message naming the input.
-    auto bad = runProcessor(*project, calibration, RunRequest{"segment-calibration", {"c/imu"}, "c/bad",
-                                                              {{"segments", "thigh"}, {"static_begin", squatBegin},
-                                                               {"static_end", squatBegin + 1.0}, {"movement_begin", 0.5},
-                                                               {"movement_end", 2.5}}});
+    auto bad = runProcessor(*project, calibration,
+                            RunRequest{"segment-calibration",
+                                       {"c/imu"},
+                                       "c/bad",
+                                       {{"segments", "thigh"},
+                                        {"static_begin", squatBegin},
+                                        {"static_end", squatBegin + 1.0},
+                                        {"movement_begin", 0.5},
+                                        {"movement_end", 2.5}}});
     EXPECT_FALSE(bad.ok());
 }

@@ -87,7 +87,8 @@ TEST(LimbSimulator, VirtualJointAccelerationsCoincide) {
         sumSq += (thigh - shank).squaredNorm() + (pelvis - thighHip).squaredNorm();
         // Without the lever arm the sensors disagree: the check has teeth.
         wrongSq += (Vec3(sim[LimbSegment::Thigh].sensor[k] * sim[LimbSegment::Thigh].acc[k]) -
-                    Vec3(sim[LimbSegment::Shank].sensor[k] * sim[LimbSegment::Shank].acc[k])).squaredNorm();
+                    Vec3(sim[LimbSegment::Shank].sensor[k] * sim[LimbSegment::Shank].acc[k]))
+                       .squaredNorm();
         signal += (thigh - Vec3(0, 0, p.gravity)).squaredNorm();
         ++n;
     }
@@ -118,7 +119,8 @@ TEST(LimbSimulator, ReferenceAnglesAreTheSegmentChain) {
             JointAngles::Params mp = kp;
             mp.proximalMount = sim[LimbSegment::Thigh].mount;
             mp.distalMount = sim[LimbSegment::Shank].mount;
-            const auto m = JointAngles(mp).update(sim[LimbSegment::Thigh].sensor[k], sim[LimbSegment::Shank].sensor[k]).angles;
+            const auto m =
+                JointAngles(mp).update(sim[LimbSegment::Thigh].sensor[k], sim[LimbSegment::Shank].sensor[k]).angles;
             worst = std::max(worst, (m.vector() - sim.knee[k].vector()).cwiseAbs().maxCoeff());
             maxKnee = std::max(maxKnee, sim.knee[k].flexion);
             maxAbd = std::max(maxAbd, std::abs(sim.knee[k].abduction));
@@ -129,7 +131,8 @@ TEST(LimbSimulator, ReferenceAnglesAreTheSegmentChain) {
         EXPECT_GT(maxAbd, 1.5 * kDeg);              // 3 DOF: small ab/adduction and rotation
         EXPECT_GT(maxRot, 4 * kDeg);
         // The mounts are far from the segment axes (a missing calibration must show).
-        for (const SimulatedSegment& seg : sim.segments) EXPECT_GT(seg.mount.angularDistance(Quat::Identity()), 60 * kDeg);
+        for (const SimulatedSegment& seg : sim.segments)
+            EXPECT_GT(seg.mount.angularDistance(Quat::Identity()), 60 * kDeg);
     }
 }
 

@@ -151,7 +151,8 @@ TEST(OrientationFilter, FlagsAndRidesOutMagneticDisturbance) {
     for (std::size_t k = 5000; k < 6000; ++k) before += track.magDisturbed[k];
     EXPECT_LT(before, 50);
     double worst = 0;
-    for (std::size_t k = 6000; k < 7500; ++k) worst = std::max(worst, math::orientationError(track.q[k], d.orientation[k]).heading);
+    for (std::size_t k = 6000; k < 7500; ++k)
+        worst = std::max(worst, math::orientationError(track.q[k], d.orientation[k]).heading);
     EXPECT_LT(worst, 3.0 * kDeg);
     // Without rejection the heading is pulled away.
     OrientationFilter::Params noReject;

@@ -30,7 +30,8 @@ TEST(OrientationValidation, BroadSharedTrialsMeetBounds) {
             (s.kind() == QLatin1String("imu") ? imuInfo : refInfo) = s.info();
         }
         ASSERT_TRUE(imu && ref);
-        const int acc = imuInfo.columnIndex("acc_x"), gyr = imuInfo.columnIndex("gyr_x"), mag = imuInfo.columnIndex("mag_x");
+        const int acc = imuInfo.columnIndex("acc_x"), gyr = imuInfo.columnIndex("gyr_x"),
+                  mag = imuInfo.columnIndex("mag_x");
         const int qw = refInfo.columnIndex("qw"), mv = refInfo.columnIndex("movement");
         const ImuBatch batch{imu->values.data() + gyr, imu->values.data() + acc, imu->values.data() + mag, imu->rows(),
                              static_cast<std::size_t>(imu->columns)};

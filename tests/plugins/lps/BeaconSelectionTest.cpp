@@ -13,7 +13,8 @@ namespace {
 BeaconLayout square() {
     // Ten beacons around a 100 m × 60 m area, 4–7 m high; reference at the origin.
     BeaconLayout layout;
-    const double xy[10][2] = {{-50, -30}, {0, -35}, {50, -30}, {55, 0}, {50, 30}, {0, 35}, {-50, 30}, {-55, 0}, {25, -33}, {-25, 33}};
+    const double xy[10][2] = {{-50, -30}, {0, -35},  {50, -30}, {55, 0},   {50, 30},
+                              {0, 35},    {-50, 30}, {-55, 0},  {25, -33}, {-25, 33}};
     for (int i = 0; i < 10; ++i) {
         layout.ids << QString::number(i + 1);
         layout.positions.emplace_back(xy[i][0], xy[i][1], 4.0 + (i % 4));

@@ -28,7 +28,8 @@ TEST(FrameAlignment, TwoMarksYawMapExactly) {
 
 TEST(FrameAlignment, ThreeMarksFullKabschMapExactly) {
     RigidTransform truth;
-    truth.rotation = (Eigen::AngleAxisd(0.3, Vector3::UnitX()) * Eigen::AngleAxisd(-1.1, Vector3::UnitZ())).toRotationMatrix();
+    truth.rotation =
+        (Eigen::AngleAxisd(0.3, Vector3::UnitX()) * Eigen::AngleAxisd(-1.1, Vector3::UnitZ())).toRotationMatrix();
     truth.translation = Vector3(-5, 8, 2);
     const std::vector<Vector3> from = {Vector3(0, 0, 0), Vector3(30, 0, 1), Vector3(5, 20, -2)};
     std::vector<Vector3> to;

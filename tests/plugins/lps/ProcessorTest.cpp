@@ -23,7 +23,8 @@ TEST(LpsProcessors, CalibrateThenPositionAsTheJudgeDoes) {
     auto project = Project::create(dir.filePath("p.athlos"));
     const SimulateLpsProcessor simulate;
     ASSERT_TRUE(run(*project, simulate, {}, "walk/tdoa", {{"scenario", "walk"}, {"venue_seed", 5}, {"seed", 1}}));
-    ASSERT_TRUE(run(*project, simulate, {}, "test/tdoa", {{"scenario", "run"}, {"venue_seed", 5}, {"seed", 2}, {"lane", 3}}));
+    ASSERT_TRUE(
+        run(*project, simulate, {}, "test/tdoa", {{"scenario", "run"}, {"venue_seed", 5}, {"seed", 2}, {"lane", 3}}));
     ASSERT_NE(project->table("walk/tdoa-guess"), nullptr);
     ASSERT_NE(project->stream("test/tdoa-truth"), nullptr);
 
@@ -32,11 +33,13 @@ TEST(LpsProcessors, CalibrateThenPositionAsTheJudgeDoes) {
     ASSERT_TRUE(s) << s.message().toStdString();
     const Table* report = project->table("walk/beacons-report");
     ASSERT_NE(report, nullptr);
-    EXPECT_LT(report->attributes.value("nrmsr_calibrated").toDouble(), report->attributes.value("nrmsr_initial").toDouble());
+    EXPECT_LT(report->attributes.value("nrmsr_calibrated").toDouble(),
+              report->attributes.value("nrmsr_initial").toDouble());
 
     const LpsPositioningProcessor positioning;
     ASSERT_TRUE(run(*project, positioning, {"test/tdoa", "walk/beacons"}, "test/lps-cal", {{"tag_height", "1.2"}}));
-    ASSERT_TRUE(run(*project, positioning, {"test/tdoa", "test/tdoa-beacons"}, "test/lps-ref", {{"tag_height", "1.2"}}));
+    ASSERT_TRUE(
+        run(*project, positioning, {"test/tdoa", "test/tdoa-beacons"}, "test/lps-ref", {{"tag_height", "1.2"}}));
     const Stream* cal = project->stream("test/lps-cal");
     ASSERT_NE(cal, nullptr);
     EXPECT_EQ(cal->info().columnNames(), QStringList({"x", "y", "z", "offset", "rms_residual", "n_beacons"}));
@@ -75,7 +78,8 @@ TEST(LpsProcessors, AlignMovesMarksAndReferenceNode) {
     auto project = Project::create(dir.filePath("p.athlos"));
     ASSERT_TRUE(run(*project, SimulateLpsProcessor(), {}, "w/tdoa", {{"laps", "0.1"}}));
     // Shift by (+10, −5) and turn a quarter: (0,0,0)→(10,−5,0), (10,0,0)→(10,5,0).
-    ASSERT_TRUE(run(*project, LpsAlignProcessor(), {"w/tdoa-beacons"}, "w/aligned", {{"marks", "0,0,0>10,-5,0; 10,0,0>10,5,0"}}));
+    ASSERT_TRUE(run(*project, LpsAlignProcessor(), {"w/tdoa-beacons"}, "w/aligned",
+                    {{"marks", "0,0,0>10,-5,0; 10,0,0>10,5,0"}}));
     auto moved = layoutFromTable(*project->table("w/aligned"), "w/aligned");
     auto original = layoutFromTable(*project->table("w/tdoa-beacons"), "w/tdoa-beacons");
     ASSERT_TRUE(moved.ok() && original.ok());
@@ -130,8 +134,9 @@ TEST(LpsProcessors, NoFixAtAllIsAnErrorWithTheReason) {
     project->putStream("w/noise", streamFromEpochs(noise->epochs, *layout, "noise"));
     const Status n = run(*project, positioning, {"w/noise", "w/tdoa-beacons"}, "w/lps-noise", {{"dimension", "2d"}});
     ASSERT_FALSE(n);
-    EXPECT_TRUE(n.message().contains(QStringLiteral("instants of TDoA stream 'w/noise' had ≥4 beacons (min_beacons, 2d) "
-                                                    "but none gave a converged, accepted solution")))
+    EXPECT_TRUE(
+        n.message().contains(QStringLiteral("instants of TDoA stream 'w/noise' had ≥4 beacons (min_beacons, 2d) "
+                                            "but none gave a converged, accepted solution")))
         << n.message().toStdString();
     EXPECT_EQ(project->stream("w/lps-noise"), nullptr);
 }

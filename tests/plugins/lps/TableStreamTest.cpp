@@ -59,9 +59,9 @@ TEST(BeaconTable, IdMatching) {
     BeaconLayout layout;
     layout.ids = {"B01", "B02", "7", "x1", "y1"};
     EXPECT_EQ(matchBeaconId(layout, "B02"), 1);
-    EXPECT_EQ(matchBeaconId(layout, "07"), 2);   // numeric value
-    EXPECT_EQ(matchBeaconId(layout, "2"), 1);    // trailing number of B02
-    EXPECT_EQ(matchBeaconId(layout, "1"), -1);   // ambiguous: B01, x1, y1
+    EXPECT_EQ(matchBeaconId(layout, "07"), 2);  // numeric value
+    EXPECT_EQ(matchBeaconId(layout, "2"), 1);   // trailing number of B02
+    EXPECT_EQ(matchBeaconId(layout, "1"), -1);  // ambiguous: B01, x1, y1
     EXPECT_EQ(matchBeaconId(layout, "Z"), -1);
 }
 
@@ -73,7 +73,8 @@ TEST(TdoaStream, GroupsRepeatedTimesIntoEpochsWithNumericIds) {
     info.kind = "lps-tdoa";
     info.columns = {{"beacon", ""}, {"dt", "s"}};
     StreamData d(7, 2);
-    const double rows[7][3] = {{0.0, 1, 1e-6}, {0.0, 2, 2e-6}, {0.0, 4, 3e-6}, {0.1, 3, 4e-6}, {0.1, 1, NAN}, {0.1, 2, 5e-6}, {0.2, 4, 6e-6}};
+    const double rows[7][3] = {{0.0, 1, 1e-6}, {0.0, 2, 2e-6}, {0.0, 4, 3e-6}, {0.1, 3, 4e-6},
+                               {0.1, 1, NAN},  {0.1, 2, 5e-6}, {0.2, 4, 6e-6}};
     for (int r = 0; r < 7; ++r) {
         d.t[size_t(r)] = rows[r][0];
         d.at(size_t(r), 0) = rows[r][1];

@@ -14,7 +14,8 @@ BeaconLayout ring(int n, double radius = 60.0) {
     for (int i = 0; i < n; ++i) {
         const double a = 2 * std::numbers::pi * i / n + 0.1 * i;
         layout.ids << QString::number(i + 1);
-        layout.positions.emplace_back(radius * std::cos(a) * 1.4, radius * std::sin(a), 3.0 + 5.0 * ((i * 37) % 11) / 10.0);
+        layout.positions.emplace_back(radius * std::cos(a) * 1.4, radius * std::sin(a),
+                                      3.0 + 5.0 * ((i * 37) % 11) / 10.0);
     }
     return layout;
 }

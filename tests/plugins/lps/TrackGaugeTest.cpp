@@ -46,8 +46,14 @@ std::vector<TrajectorySample> randomWalk(int steps, std::uint64_t seed) {
         walk.push_back({double(k), p, heading});
         heading += 0.6 * n(rng);
         p += 1.4 * Vector3(std::cos(heading), std::sin(heading), 0.0);
-        if (std::abs(p.x()) > 70.0) { p.x() = std::copysign(70.0, p.x()); heading = std::numbers::pi - heading; }
-        if (std::abs(p.y()) > 30.0) { p.y() = std::copysign(30.0, p.y()); heading = -heading; }
+        if (std::abs(p.x()) > 70.0) {
+            p.x() = std::copysign(70.0, p.x());
+            heading = std::numbers::pi - heading;
+        }
+        if (std::abs(p.y()) > 30.0) {
+            p.y() = std::copysign(30.0, p.y());
+            heading = -heading;
+        }
     }
     return walk;
 }
@@ -122,7 +128,8 @@ TEST(LpsCalibrationGauge, TrackGaugeRemovesARotatedGuess) {
     EXPECT_GT(std::abs(yawGuess), 0.005);
     EXPECT_LT(std::abs(yawTrack), 1e-3);
     EXPECT_NEAR(byTrack->report.gauge.fit.lateralOffset, track.laneOffset(3), 0.2);
-    EXPECT_NEAR(byTrack->report.gauge.rotation, yawGuess, 1e-3);  // the rotation that maps the guess gauge onto the truth
+    EXPECT_NEAR(byTrack->report.gauge.rotation, yawGuess,
+                1e-3);  // the rotation that maps the guess gauge onto the truth
     EXPECT_NEAR(byTrack->report.nrmsrCalibrated, byGuess->report.nrmsrCalibrated, 1e-6);  // a pure gauge change
 }
 
@@ -174,10 +181,12 @@ TEST(LpsCalibrationGauge, JudgedFlowPassesOnSeveralVenues) {
     for (const int venue : {1, 2, 3, 4, 5}) {
         QTemporaryDir dir;
         auto project = Project::create(dir.filePath("p.athlos"));
-        ASSERT_TRUE(run(*project, simulate, {}, "walk/tdoa", {{"scenario", "walk"}, {"venue_seed", venue}, {"seed", 1}}));
+        ASSERT_TRUE(
+            run(*project, simulate, {}, "walk/tdoa", {{"scenario", "walk"}, {"venue_seed", venue}, {"seed", 1}}));
         ASSERT_TRUE(run(*project, simulate, {}, "test/tdoa",
                         {{"scenario", "run"}, {"venue_seed", venue}, {"seed", 2}, {"lane", 3}}));
-        ASSERT_TRUE(run(*project, positioning, {"test/tdoa", "test/tdoa-beacons"}, "test/ref", {{"tag_height", "1.2"}}));
+        ASSERT_TRUE(
+            run(*project, positioning, {"test/tdoa", "test/tdoa-beacons"}, "test/ref", {{"tag_height", "1.2"}}));
         const double surveyed = rmse(*project->stream("test/ref"), *project->stream("test/tdoa-truth"));
         double calibrated[2] = {NAN, NAN};
         const char* gauges[2] = {"auto", "guess"};
@@ -193,8 +202,8 @@ TEST(LpsCalibrationGauge, JudgedFlowPassesOnSeveralVenues) {
             ASSERT_TRUE(run(*project, positioning, {"test/tdoa", out}, fixes, {{"tag_height", "1.2"}}));
             calibrated[k] = rmse(*project->stream(fixes), *project->stream("test/tdoa-truth"));
         }
-        std::printf("venue %d: surveyed %.3f m, gauge=auto %.3f m, gauge=guess %.3f m\n", venue, surveyed, calibrated[0],
-                    calibrated[1]);
+        std::printf("venue %d: surveyed %.3f m, gauge=auto %.3f m, gauge=guess %.3f m\n", venue, surveyed,
+                    calibrated[0], calibrated[1]);
         EXPECT_LE(calibrated[0], surveyed + 0.10) << "venue " << venue;
         guessFailures += calibrated[1] > surveyed + 0.10;
     }

@@ -48,7 +48,8 @@ TEST(Ctra, SmallOmegaLimitIsContinuous) {
         EXPECT_LT((a.dOmega - b.dOmega).norm(), 1e-6);
         // Both branches agree at the switch-over |ωT| = 1e-3.
         const double w = 1e-3 / T;
-        const auto below = ctraIncrement(6.0, 0.5, 0.3, w * 0.999999, T), above = ctraIncrement(6.0, 0.5, 0.3, w * 1.000001, T);
+        const auto below = ctraIncrement(6.0, 0.5, 0.3, w * 0.999999, T),
+                   above = ctraIncrement(6.0, 0.5, 0.3, w * 1.000001, T);
         EXPECT_LT((below.delta - above.delta).norm(), 1e-8 * (1 + below.delta.norm()));
         EXPECT_LT((below.dOmega - above.dOmega).norm(), 1e-6 * (1 + below.dOmega.norm()));
     }

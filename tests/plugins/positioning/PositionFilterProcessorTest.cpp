@@ -15,9 +15,12 @@ namespace {
 
 std::unique_ptr<Project> simulatedProject(int seed) {
     auto project = Project::create(QDir::temp().filePath(QStringLiteral("athlos-position-filter-test.athlos")));
-    const auto out = runProcessor(*project, SimulateTrackRunProcessor(),
-                                  {QStringLiteral("simulate-track-run"), {}, QStringLiteral("sim/run"),
-                                   {{QStringLiteral("seed"), QString::number(seed)}, {QStringLiteral("distance"), QStringLiteral("400")}}});
+    const auto out = runProcessor(
+        *project, SimulateTrackRunProcessor(),
+        {QStringLiteral("simulate-track-run"),
+         {},
+         QStringLiteral("sim/run"),
+         {{QStringLiteral("seed"), QString::number(seed)}, {QStringLiteral("distance"), QStringLiteral("400")}}});
     EXPECT_TRUE(out.ok()) << out.message().toStdString();
     return project;
 }
@@ -41,8 +44,11 @@ TEST(SimulateTrackRunProcessor, WritesMeasurementsAndTruth) {
 
 TEST(PositionFilterProcessor, FiltersOntoGridWithOutlierOutputs) {
     auto project = simulatedProject(5);
-    RunRequest request{QStringLiteral("position-filter"), {QStringLiteral("sim/run")}, QStringLiteral("sim/filtered"),
-                       {{QStringLiteral("output_rate"), QStringLiteral("10")}, {QStringLiteral("noise"), QStringLiteral("auto")}}};
+    RunRequest request{
+        QStringLiteral("position-filter"),
+        {QStringLiteral("sim/run")},
+        QStringLiteral("sim/filtered"),
+        {{QStringLiteral("output_rate"), QStringLiteral("10")}, {QStringLiteral("noise"), QStringLiteral("auto")}}};
     const auto out = runProcessor(*project, PositionFilterProcessor(), request);
     ASSERT_TRUE(out.ok()) << out.message().toStdString();
     const Stream* filtered = project->stream(QStringLiteral("sim/filtered"));
@@ -73,23 +79,28 @@ TEST(PositionFilterProcessor, FiltersOntoGridWithOutlierOutputs) {
 TEST(PositionFilterProcessor, ParameterErrorsNameTheParameter) {
     auto project = simulatedProject(7);
     auto run = [&](QVariantMap params) {
-        return runProcessor(*project, PositionFilterProcessor(),
-                            {QStringLiteral("position-filter"), {QStringLiteral("sim/run")}, QStringLiteral("sim/f"), params});
+        return runProcessor(
+            *project, PositionFilterProcessor(),
+            {QStringLiteral("position-filter"), {QStringLiteral("sim/run")}, QStringLiteral("sim/f"), params});
     };
-    auto bad = run({{QStringLiteral("track"), QStringLiteral("nowhere")}, {QStringLiteral("noise"), QStringLiteral("manual")}});
+    auto bad = run(
+        {{QStringLiteral("track"), QStringLiteral("nowhere")}, {QStringLiteral("noise"), QStringLiteral("manual")}});
     ASSERT_FALSE(bad.ok());
     EXPECT_TRUE(bad.message().contains(QStringLiteral("track"))) << bad.message().toStdString();
     bad = run({{QStringLiteral("filter"), QStringLiteral("kalman")}});
     ASSERT_FALSE(bad.ok());
     EXPECT_TRUE(bad.message().contains(QStringLiteral("filter"))) << bad.message().toStdString();
-    bad = run({{QStringLiteral("output_rate"), QStringLiteral("0")}, {QStringLiteral("noise"), QStringLiteral("manual")}});
+    bad = run(
+        {{QStringLiteral("output_rate"), QStringLiteral("0")}, {QStringLiteral("noise"), QStringLiteral("manual")}});
     ASSERT_FALSE(bad.ok());
     EXPECT_TRUE(bad.message().contains(QStringLiteral("output_rate"))) << bad.message().toStdString();
     // Manual noise, project geometry by name with a pose.
     TrackGeometry shifted = TrackGeometry::iaaf400m();
     project->geometry()[QStringLiteral("home")] = shifted.toJson();
-    const auto ok = run({{QStringLiteral("track"), QStringLiteral("home")}, {QStringLiteral("noise"), QStringLiteral("manual")},
-                         {QStringLiteral("smoother"), QStringLiteral("fixed-lag")}, {QStringLiteral("filter"), QStringLiteral("srukf")}});
+    const auto ok = run({{QStringLiteral("track"), QStringLiteral("home")},
+                         {QStringLiteral("noise"), QStringLiteral("manual")},
+                         {QStringLiteral("smoother"), QStringLiteral("fixed-lag")},
+                         {QStringLiteral("filter"), QStringLiteral("srukf")}});
     EXPECT_TRUE(ok.ok()) << ok.message().toStdString();
 }
 
@@ -97,9 +108,10 @@ TEST(PositionFilterProcessor, HonoursCancellation) {
     auto project = simulatedProject(9);
     CancelToken token;
     token.cancel();
-    const auto out = runProcessor(*project, PositionFilterProcessor(),
-                                  {QStringLiteral("position-filter"), {QStringLiteral("sim/run")}, QStringLiteral("sim/f"), {}},
-                                  Progress([](double, const QString&) {}, token));
+    const auto out =
+        runProcessor(*project, PositionFilterProcessor(),
+                     {QStringLiteral("position-filter"), {QStringLiteral("sim/run")}, QStringLiteral("sim/f"), {}},
+                     Progress([](double, const QString&) {}, token));
     ASSERT_FALSE(out.ok());
     EXPECT_EQ(out.message(), QStringLiteral("cancelled"));
     EXPECT_EQ(project->stream(QStringLiteral("sim/f")), nullptr);

@@ -49,7 +49,8 @@ TEST(PositionFilterValidation, AugmentedBeatsUnconstrainedAndPseudo) {
             RecordProperty("rmse_" + std::to_string(seed) + "_" + std::to_string(m), std::to_string(r));
         }
     }
-    const double u = sum[int(ModelKind::Unconstrained)], ps = sum[int(ModelKind::Pseudo)], a = sum[int(ModelKind::Augmented)];
+    const double u = sum[int(ModelKind::Unconstrained)], ps = sum[int(ModelKind::Pseudo)],
+                 a = sum[int(ModelKind::Augmented)];
     std::printf("mean RMSE: unconstrained %.3f m, pseudo %.3f m, augmented %.3f m\n", u, ps, a);
     EXPECT_LE(a, 0.6 * u);
     EXPECT_LT(a, ps);

@@ -35,9 +35,14 @@ Scenario scenario(const TrackGeometry& track, double duration, double gapBegin, 
     for (int k = 0; k <= int(std::lround(duration * 10)); ++k) {
         const double t = 0.1 * k, h = 1e-4;
         const TrackPoint p = track.pointAt(s(t), d);
-        const double speed = (track.pointAt(s(t + h), d).position - track.pointAt(s(t - h), d).position).norm() / (2 * h);
-        Kinematics truth{p.position.x(), p.position.y(), speed,
-                         sign > 0 ? p.heading : math::wrapAngle(p.heading + std::numbers::pi), sign * speed * p.curvature, 0.0};
+        const double speed =
+            (track.pointAt(s(t + h), d).position - track.pointAt(s(t - h), d).position).norm() / (2 * h);
+        Kinematics truth{p.position.x(),
+                         p.position.y(),
+                         speed,
+                         sign > 0 ? p.heading : math::wrapAngle(p.heading + std::numbers::pi),
+                         sign * speed * p.curvature,
+                         0.0};
         sc.truth.push_back(truth);
         sc.result.t.push_back(t);
         const bool inGap = t > gapBegin + 1e-9 && t < gapEnd - 1e-9;
@@ -55,7 +60,8 @@ double gapError(const Scenario& sc, double gapBegin, double gapEnd) {
     double worst = 0.0;
     for (std::size_t k = 0; k < sc.result.t.size(); ++k) {
         if (sc.result.t[k] <= gapBegin || sc.result.t[k] >= gapEnd) continue;
-        worst = std::max(worst, std::hypot(sc.result.states[k].x - sc.truth[k].x, sc.result.states[k].y - sc.truth[k].y));
+        worst =
+            std::max(worst, std::hypot(sc.result.states[k].x - sc.truth[k].x, sc.result.states[k].y - sc.truth[k].y));
     }
     return worst;
 }
@@ -103,7 +109,8 @@ TEST(TrackGapBridge, MoreThanALapUnseenAndRunningTheWrongWay) {
     EXPECT_EQ(bridgeFor(track).apply(laps.in, laps.result), 1);
     EXPECT_LT(gapError(laps, 5.0, 70.0), 0.5);
     // Clockwise (heading against the track): s decreases.
-    auto reverse = scenario(*track, 30.0, 6.0, 18.0, d, [](double t) { return 300.0 - 6.5 * t; }, -1.0);
+    auto reverse = scenario(
+        *track, 30.0, 6.0, 18.0, d, [](double t) { return 300.0 - 6.5 * t; }, -1.0);
     EXPECT_EQ(bridgeFor(track).apply(reverse.in, reverse.result), 1);
     EXPECT_LT(gapError(reverse, 6.0, 18.0), 0.5);
     for (std::size_t k = 0; k < reverse.result.t.size(); ++k)

@@ -46,10 +46,18 @@ double analyticMagnitude(Type type, int n, double f, double fs, double fc, doubl
     const double w = std::tan(kPi * f / fs), wl = std::tan(kPi * fc / fs), wh = std::tan(kPi * fh / fs);
     double ratio = 0.0;  // the argument x of 1/sqrt(1 + x^(2n))
     switch (type) {
-    case Type::LowPass: ratio = w / wl; break;
-    case Type::HighPass: ratio = wl / w; break;
-    case Type::BandPass: ratio = (w * w - wl * wh) / (w * (wh - wl)); break;
-    case Type::BandStop: ratio = w * (wh - wl) / (wl * wh - w * w); break;
+        case Type::LowPass:
+            ratio = w / wl;
+            break;
+        case Type::HighPass:
+            ratio = wl / w;
+            break;
+        case Type::BandPass:
+            ratio = (w * w - wl * wh) / (w * (wh - wl));
+            break;
+        case Type::BandStop:
+            ratio = w * (wh - wl) / (wl * wh - w * w);
+            break;
     }
     return 1.0 / std::sqrt(1.0 + std::pow(ratio, 2 * n));
 }
@@ -95,18 +103,32 @@ TEST(SignalButterworth, FilteringMatchesScipy) {
         std::vector<std::pair<int, double>> expected;
     };
     const std::vector<Case> cases = {
-        {make(Type::LowPass, 4, 10, 100), true,
-         {{0, 0.5043004191259609}, {1, 0.598570674020597}, {30, 0.7112063907447066}, {58, -0.06669954838717367},
+        {make(Type::LowPass, 4, 10, 100),
+         true,
+         {{0, 0.5043004191259609},
+          {1, 0.598570674020597},
+          {30, 0.7112063907447066},
+          {58, -0.06669954838717367},
           {59, 0.17110619300525917}}},
-        {make(Type::LowPass, 4, 10, 100), false,
-         {{0, 0.5000000000000001}, {1, 0.4987509676606802}, {30, 1.2517289118796597}, {58, 0.12093907267985596},
+        {make(Type::LowPass, 4, 10, 100),
+         false,
+         {{0, 0.5000000000000001},
+          {1, 0.4987509676606802},
+          {30, 1.2517289118796597},
+          {58, 0.12093907267985596},
           {59, -0.1165176617138722}}},
-        {make(Type::BandPass, 3, 5, 100, 15), true,
-         {{0, -0.05305305069921966}, {1, -0.16279801111787567}, {30, 0.16568690704155936},
-          {58, -0.4458249312925342}, {59, 0.006172155412418667}}},
-        {make(Type::HighPass, 3, 10, 100), true,
+        {make(Type::BandPass, 3, 5, 100, 15),
+         true,
+         {{0, -0.05305305069921966},
+          {1, -0.16279801111787567},
+          {30, 0.16568690704155936},
+          {58, -0.4458249312925342},
+          {59, 0.006172155412418667}}},
+        {make(Type::HighPass, 3, 10, 100),
+         true,
          {{0, 0.00296435199990569}, {30, 0.37507932629111684}, {59, 0.008585335717070097}}},
-        {make(Type::BandStop, 2, 8, 100, 12), true,
+        {make(Type::BandStop, 2, 8, 100, 12),
+         true,
          {{0, 0.4840270026715767}, {30, 1.0847321908492047}, {59, 0.1775853762169}}},
     };
     for (std::size_t k = 0; k < cases.size(); ++k) {
@@ -136,7 +158,7 @@ TEST(SignalButterworth, PolesInsideUnitCircleAndPreWarpedEdge) {
             const Butterworth b = make(type, n, 7, 100, 19);
             for (Eigen::Index s = 0; s < b.sos().rows(); ++s) {
                 const double a1 = b.sos()(s, 4), a2 = b.sos()(s, 5);
-                EXPECT_LT(std::abs(a2), 1.0);               // Jury: |a2| < 1 and |a1| < 1 + a2
+                EXPECT_LT(std::abs(a2), 1.0);  // Jury: |a2| < 1 and |a1| < 1 + a2
                 EXPECT_LT(std::abs(a1), 1.0 + a2 + 1e-15);
             }
             EXPECT_NEAR(std::abs(b.response(7)), 1 / std::sqrt(2.0), 1e-10) << "order " << n;
@@ -238,8 +260,8 @@ TEST(SignalButterworth, ConstantInputGivesConstantOutput) {
 }
 
 TEST(SignalButterworth, PadLengthFollowsScipy) {
-    EXPECT_EQ(make(Type::LowPass, 4, 10, 100).defaultPadLength(), 15);   // 3·(2·2 + 1)
-    EXPECT_EQ(make(Type::LowPass, 3, 10, 100).defaultPadLength(), 12);   // one first-order section
+    EXPECT_EQ(make(Type::LowPass, 4, 10, 100).defaultPadLength(), 15);  // 3·(2·2 + 1)
+    EXPECT_EQ(make(Type::LowPass, 3, 10, 100).defaultPadLength(), 12);  // one first-order section
     EXPECT_EQ(make(Type::BandPass, 3, 5, 100, 15).defaultPadLength(), 21);
     // Shorter than the padding: clipped to the data, still finite and DC-preserving.
     Eigen::VectorXd y = Eigen::VectorXd::Constant(5, 2.0);

@@ -62,7 +62,8 @@ protected:
 
     Expected<RunOutcome> run(const Processor& processor, const QString& input, const QVariantMap& params,
                              const Progress& progress = {}) {
-        return runProcessor(*project_, processor, {processor.id(), {input}, QStringLiteral("run1/out"), params}, progress);
+        return runProcessor(*project_, processor, {processor.id(), {input}, QStringLiteral("run1/out"), params},
+                            progress);
     }
 
     QTemporaryDir dir_;
@@ -114,7 +115,8 @@ TEST_F(SignalProcessors, ResampleErrorsNameTheParameterOrStream) {
     project_->putStream(QStringLiteral("run1/single"), makeImuStream({0.5}));
     auto single = run(resample, QStringLiteral("run1/single"), params({{"rate", "10"}}));
     ASSERT_FALSE(single.ok());
-    EXPECT_TRUE(single.message().contains(QLatin1String("run1/single")) && single.message().contains(QLatin1String("at least 2")))
+    EXPECT_TRUE(single.message().contains(QLatin1String("run1/single")) &&
+                single.message().contains(QLatin1String("at least 2")))
         << single.message().toStdString();
 }
 
@@ -147,14 +149,17 @@ TEST_F(SignalProcessors, ButterworthErrorsNameTheParameter) {
     };
     const QString imu = QStringLiteral("run1/imu");
     const QString nyquist = message(imu, params({{"cutoff", "100"}}));
-    EXPECT_TRUE(nyquist.contains(QLatin1String("cutoff")) && nyquist.contains(QLatin1String("Nyquist frequency 100 Hz")))
+    EXPECT_TRUE(nyquist.contains(QLatin1String("cutoff")) &&
+                nyquist.contains(QLatin1String("Nyquist frequency 100 Hz")))
         << nyquist.toStdString();
     const QString jitter = message(QStringLiteral("run1/raw"), params({{"cutoff", "10"}}));
     EXPECT_TRUE(jitter.contains(QLatin1String("not uniformly sampled")) && jitter.contains(QLatin1String("resample")))
         << jitter.toStdString();
-    EXPECT_TRUE(message(imu, params({{"cutoff", "10"}, {"columns", "acc_x,qw"}})).contains(QLatin1String("quaternion")));
+    EXPECT_TRUE(
+        message(imu, params({{"cutoff", "10"}, {"columns", "acc_x,qw"}})).contains(QLatin1String("quaternion")));
     EXPECT_TRUE(message(imu, params({{"cutoff", "10"}, {"columns", "movement"}})).contains(QLatin1String("flag")));
-    EXPECT_TRUE(message(imu, params({{"cutoff", "10"}, {"columns", "gyr_x"}})).contains(QLatin1String("no column 'gyr_x'")));
+    EXPECT_TRUE(
+        message(imu, params({{"cutoff", "10"}, {"columns", "gyr_x"}})).contains(QLatin1String("no column 'gyr_x'")));
     EXPECT_TRUE(message(imu, params({{"cutoff", "10"}, {"type", "bandpass"}})).contains(QLatin1String("cutoff_high")));
     EXPECT_TRUE(message(imu, params({{"cutoff", "10"}, {"cutoff_high", "20"}})).contains(QLatin1String("cutoff_high")));
     EXPECT_TRUE(message(imu, params({})).contains(QLatin1String("cutoff")));
@@ -162,7 +167,8 @@ TEST_F(SignalProcessors, ButterworthErrorsNameTheParameter) {
     project_->putStream(QStringLiteral("run1/short"), makeImuStream(uniformTimes(12, 200.0)));
     const QString tooShort = message(QStringLiteral("run1/short"), params({{"cutoff", "10"}, {"order", "4"}}));
     EXPECT_TRUE(tooShort.contains(QLatin1String("at least 16 rows"))) << tooShort.toStdString();
-    EXPECT_TRUE(run(butterworth, QStringLiteral("run1/short"), params({{"cutoff", "10"}, {"zero_phase", "false"}})).ok());
+    EXPECT_TRUE(
+        run(butterworth, QStringLiteral("run1/short"), params({{"cutoff", "10"}, {"zero_phase", "false"}})).ok());
     EXPECT_FALSE(project_->stream(QStringLiteral("run1/out")) == nullptr);
 }
 
@@ -182,7 +188,8 @@ TEST_F(SignalProcessors, CancellationLeavesProjectUnchanged) {
 }
 
 TEST_F(SignalProcessors, PluginIsDiscoveredAndRunsFromTheRegistry) {
-    const QString file = QDir(QStringLiteral(ATHLOS_BUILD_PLUGIN_DIR)).absoluteFilePath(QStringLiteral("athlos_plugin_signal.so"));
+    const QString file =
+        QDir(QStringLiteral(ATHLOS_BUILD_PLUGIN_DIR)).absoluteFilePath(QStringLiteral("athlos_plugin_signal.so"));
     QPluginLoader loader(file);
     const QJsonObject meta = loader.metaData().value(QStringLiteral("MetaData")).toObject();
     EXPECT_EQ(meta.value(QStringLiteral("family")).toString(), QStringLiteral("signal"));
@@ -204,8 +211,11 @@ TEST_F(SignalProcessors, PluginIsDiscoveredAndRunsFromTheRegistry) {
     // resample → butterworth, the pipeline a user runs on jittered data.
     ASSERT_TRUE(run(*resample, QStringLiteral("run1/raw"), params({{"rate", "200"}})).ok());
     auto filtered = runProcessor(*project_, *butterworth,
-                                 {QStringLiteral("butterworth"), {QStringLiteral("run1/out")}, QStringLiteral("run1/smooth"),
+                                 {QStringLiteral("butterworth"),
+                                  {QStringLiteral("run1/out")},
+                                  QStringLiteral("run1/smooth"),
                                   params({{"cutoff", "5"}, {"order", "4"}})});
     ASSERT_TRUE(filtered.ok()) << filtered.message().toStdString();
-    EXPECT_EQ(project_->stream(QStringLiteral("run1/smooth"))->info().provenance.processorId, QStringLiteral("butterworth"));
+    EXPECT_EQ(project_->stream(QStringLiteral("run1/smooth"))->info().provenance.processorId,
+              QStringLiteral("butterworth"));
 }

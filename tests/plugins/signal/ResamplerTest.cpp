@@ -57,8 +57,8 @@ TEST(SignalResampler, GridCoversSpanUniformly) {
     EXPECT_GT(out.t.back(), t.back() - 1.0 / 33.0);
     for (std::size_t k = 0; k < out.rows(); ++k) EXPECT_NEAR(out.t[k], t.front() + double(k) / 33.0, 1e-12);
 
-    const StreamData aligned = run(columnData(t, [](double) { return 0.0; }), {100.0, Method::Linear, 0.0, true},
-                                   {QStringLiteral("x")});
+    const StreamData aligned =
+        run(columnData(t, [](double) { return 0.0; }), {100.0, Method::Linear, 0.0, true}, {QStringLiteral("x")});
     EXPECT_DOUBLE_EQ(aligned.t.front(), 0.02);  // first multiple of 0.01 at or after 0.0137 (+ jitter)
     for (double tk : aligned.t) EXPECT_NEAR(tk * 100.0, std::round(tk * 100.0), 1e-9);
 }
@@ -71,8 +71,8 @@ TEST(SignalResampler, LinearIsExactOnRamp) {
 
 TEST(SignalResampler, CubicIsExactOnQuadraticFromNonUniformTimes) {
     auto quadratic = [](double t) { return 1.0 + 2.0 * t - 3.0 * t * t; };
-    const StreamData out = run(columnData(jitteredTimes(300, 0.01, 0.45), quadratic), {123.0, Method::Cubic},
-                               {QStringLiteral("x")});
+    const StreamData out =
+        run(columnData(jitteredTimes(300, 0.01, 0.45), quadratic), {123.0, Method::Cubic}, {QStringLiteral("x")});
     EXPECT_LT(maxError(out, quadratic), 1e-11);
     // Linear interpolation cannot do that (so the test above can fail).
     const StreamData lin = run(columnData(jitteredTimes(300, 0.01, 0.45), quadratic), {123.0}, {QStringLiteral("x")});
@@ -87,7 +87,8 @@ TEST(SignalResampler, SineFromNonUniformTimesHasSmallError) {
     // Linear interpolation error bound: h²/8 · max|y''| = h²/8 · (2πf)².
     const double linearBound = h * h / 8 * std::pow(2 * kPi * f, 2);
     EXPECT_LT(maxError(run(columnData(t, wave), {250.0}, {QStringLiteral("x")}), wave), linearBound);
-    EXPECT_LT(maxError(run(columnData(t, wave), {250.0, Method::Cubic}, {QStringLiteral("x")}), wave), linearBound / 100);
+    EXPECT_LT(maxError(run(columnData(t, wave), {250.0, Method::Cubic}, {QStringLiteral("x")}), wave),
+              linearBound / 100);
 }
 
 TEST(SignalResampler, SlerpMidpointIsHalfAngleRotation) {
@@ -98,7 +99,8 @@ TEST(SignalResampler, SlerpMidpointIsHalfAngleRotation) {
     for (double sign : {1.0, -1.0}) {  // −q1 is the same rotation; SLERP must take the short arc
         StreamData in(2, 4);
         in.t = {0.0, 1.0};
-        const Eigen::Vector4d a(q0.w(), q0.x(), q0.y(), q0.z()), b = sign * Eigen::Vector4d(q1.w(), q1.x(), q1.y(), q1.z());
+        const Eigen::Vector4d a(q0.w(), q0.x(), q0.y(), q0.z()),
+            b = sign * Eigen::Vector4d(q1.w(), q1.x(), q1.y(), q1.z());
         for (int c = 0; c < 4; ++c) {
             in.at(0, c) = a[c];
             in.at(1, c) = b[c];
@@ -132,8 +134,8 @@ TEST(SignalResampler, QuaternionOutputIsUnitNormAndGroupsByPrefix) {
     for (Method m : {Method::Linear, Method::Nearest, Method::Cubic}) {
         const StreamData out = run(in, {77.0, m}, names);
         for (std::size_t k = 0; k < out.rows(); ++k) {
-            const double norm = std::sqrt(std::pow(out.at(k, 0), 2) + std::pow(out.at(k, 2), 2)
-                                          + std::pow(out.at(k, 3), 2) + std::pow(out.at(k, 4), 2));
+            const double norm = std::sqrt(std::pow(out.at(k, 0), 2) + std::pow(out.at(k, 2), 2) +
+                                          std::pow(out.at(k, 3), 2) + std::pow(out.at(k, 4), 2));
             EXPECT_NEAR(norm, 1.0, 1e-12);
         }
     }
@@ -182,9 +184,10 @@ TEST(SignalResampler, FlagColumnsUseNearestNeighbour) {
     const StreamData out = run(in, {61.0}, names);
     bool interpolatedSpeed = false;
     for (std::size_t k = 0; k < out.rows(); ++k) {
-        const auto nearest = std::min_element(t.begin(), t.end(), [&](double a, double b) {
-            return std::abs(a - out.t[k]) < std::abs(b - out.t[k]);
-        }) - t.begin();
+        const auto nearest =
+            std::min_element(t.begin(), t.end(),
+                             [&](double a, double b) { return std::abs(a - out.t[k]) < std::abs(b - out.t[k]); }) -
+            t.begin();
         EXPECT_EQ(out.at(k, 1), in.at(std::size_t(nearest), 1)) << "t = " << out.t[k];
         EXPECT_EQ(out.at(k, 2), in.at(std::size_t(nearest), 2)) << "t = " << out.t[k];
         interpolatedSpeed |= out.at(k, 0) != std::round(out.at(k, 0));
@@ -201,8 +204,8 @@ TEST(SignalResampler, GnssQualityColumnsAreNotInterpolated) {
     in.t = t;
     for (std::size_t i = 0; i < t.size(); ++i) {
         in.at(i, 0) = 0.5 * double(i);
-        in.at(i, 1) = i % 5 == 0 ? 1.0 : 4.0;    // GGA fix quality: GPS or RTK fixed
-        in.at(i, 2) = double(7 + (i / 9) % 4);   // satellites
+        in.at(i, 1) = i % 5 == 0 ? 1.0 : 4.0;     // GGA fix quality: GPS or RTK fixed
+        in.at(i, 2) = double(7 + (i / 9) % 4);    // satellites
         in.at(i, 3) = 0.8 + 0.1 * double(i % 3);  // HDOP
     }
     const StreamData out = run(in, {23.0}, names);
@@ -226,9 +229,9 @@ TEST(SignalResampler, NaNNeighboursGiveNaNAndNothingElse) {
             const double d = out.t[k] - 2.0;
             // Linear uses the bracketing samples, cubic one more on each side (but an exact hit on
             // another sample returns that sample), nearest the closer one (ties go to the later).
-            const bool expectNaN = m == Method::Linear ? std::abs(d) < 0.125
-                                 : m == Method::Cubic  ? std::abs(d) < 0.25 && std::abs(d) != 0.125
-                                                       : d >= -0.0625 && d < 0.0625;
+            const bool expectNaN = m == Method::Linear  ? std::abs(d) < 0.125
+                                   : m == Method::Cubic ? std::abs(d) < 0.25 && std::abs(d) != 0.125
+                                                        : d >= -0.0625 && d < 0.0625;
             EXPECT_EQ(std::isnan(out.at(k, 0)), expectNaN) << "method " << int(m) << " t = " << out.t[k];
             if (!expectNaN) {
                 EXPECT_NEAR(out.at(k, 0), out.t[k], 1e-12 + (m == Method::Nearest ? 0.0625 : 0.0));

@@ -148,7 +148,9 @@ TEST(SimulateTeamProcessor, WritesOneNamedStreamPerPlayer) {
     auto project = Project::create(QDir::temp().filePath(QStringLiteral("athlos-team-test.athlos")));
     SimulateTeamProcessor processor;
     const auto out = runProcessor(*project, processor,
-                                  {QStringLiteral("simulate-team"), {}, QStringLiteral("match/player"),
+                                  {QStringLiteral("simulate-team"),
+                                   {},
+                                   QStringLiteral("match/player"),
                                    {{QStringLiteral("seed"), 2}, {QStringLiteral("duration"), 120}}});
     ASSERT_TRUE(out.ok()) << out.message().toStdString();
     ASSERT_EQ(out->written.size(), 22);
@@ -169,7 +171,9 @@ TEST(SimulateTeamProcessor, WritesOneNamedStreamPerPlayer) {
     EXPECT_EQ(s->info().provenance.processorId, QStringLiteral("simulate-team"));
 
     const auto bad = runProcessor(*project, processor,
-                                  {QStringLiteral("simulate-team"), {}, QStringLiteral("match/p"),
+                                  {QStringLiteral("simulate-team"),
+                                   {},
+                                   QStringLiteral("match/p"),
                                    {{QStringLiteral("top_speed_min"), 9.0}, {QStringLiteral("top_speed_max"), 8.0}}});
     ASSERT_FALSE(bad.ok());
     EXPECT_TRUE(bad.message().contains(QStringLiteral("top_speed_max")));
