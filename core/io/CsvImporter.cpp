@@ -6,11 +6,15 @@
 #include "core/io/CsvColumns.h"
 #include "core/io/CsvReader.h"
 #include "core/io/CsvRecords.h"
+#include "core/io/ImportPreview.h"
 #include "core/io/TdoaLayout.h"
+#include "core/io/TimeFormats.h"
 #include "core/io/TimeOrder.h"
 #include "core/model/StreamKinds.h"
+#include "core/util/Units.h"
 
 #include <QFileInfo>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -244,6 +248,46 @@ Expected<ImportResult> readTable(CsvReader& reader, const QString& file, const I
     return result;
 }
 
+// Real exports name their time column "Time", "Timestamp", "Elapsed Time", ... and write clock
+// times, ISO date-times or epochs in it. Without a 't' column and without --time-column, the first
+// such column (by name, detectChannel) is the time column, in the unit of its header or else in
+// the format its first value shows (guessTimeFormat). The returned note says what was chosen.
+QString chooseTimeColumn(const MappedFile& mapped, const QString& file, ImportOptions& options) {
+    if (!options.timeColumn.isEmpty()) return {};
+    CsvReader reader(mapped.begin(), mapped.end());
+    QStringList cells;
+    if (!reader.readHeader(cells)) return {};
+    int column = -1;
+    QString source, unit;
+    for (int i = 0; i < int(cells.size()); ++i) {
+        QString name, headerUnit;
+        splitNameAndUnit(cells[i], name, headerUnit);
+        if (name == QLatin1String("t")) return {};  // the interchange layout
+        const bool mapped = std::any_of(options.columns.begin(), options.columns.end(),
+                                        [&](const ColumnMapping& m) { return m.source == name; });
+        if (column >= 0 || mapped || name == options.labelColumn || detectChannel(name) != QLatin1String("t")) continue;
+        column = i;
+        source = name;
+        unit = headerUnit;
+    }
+    if (column < 0) return {};
+    options.timeColumn = source;
+    if (!options.timeUnit.isEmpty() || !unit.isEmpty()) return {};
+    QString first;
+    if (reader.nextRecord()) {
+        std::string cell;
+        for (int i = 0; i <= column && reader.text(cell); ++i)
+            if (i == column) first = QString::fromUtf8(cell.data(), qsizetype(cell.size()));
+        reader.finishRecord();
+    }
+    options.timeUnit = guessTimeFormat(first);
+    return QStringLiteral("%1: column '%2' taken as the time column, %3 (from its first value '%4'); "
+                          "--time-column COL:FORMAT chooses another")
+        .arg(QFileInfo(file).fileName(), source,
+             options.timeUnit.isEmpty() ? QStringLiteral("in seconds") : QStringLiteral("format ") + options.timeUnit,
+             first.trimmed().left(40));
+}
+
 }  // namespace
 
 QString CsvImporter::description() const {
@@ -263,11 +307,14 @@ Expected<ImportResult> CsvImporter::read(const QString& file, const ImportOption
     if (Status s = mapped.open(file); !s) return s.error();
 
     QString kindName = options.kind;
+    const StreamKind* given = kindName.isEmpty() ? nullptr : lookupKind(kindName);
+    ImportOptions chosen = options;
+    const QString timeNote = given && given->table ? QString() : chooseTimeColumn(mapped, file, chosen);
     if (kindName.isEmpty()) {
         CsvReader peek(mapped.begin(), mapped.end());
         QStringList cells;
         if (!peek.readHeader(cells)) return makeError(QStringLiteral("%1: empty file (no header row)").arg(file));
-        const QStringList names = mappedColumnNames(cells, options);
+        const QStringList names = mappedColumnNames(cells, chosen);
         kindName = inferCsvKind(names);
         if (kindName.isEmpty())
             return makeError(
@@ -280,8 +327,10 @@ Expected<ImportResult> CsvImporter::read(const QString& file, const ImportOption
     CsvReader reader(mapped.begin(), mapped.end());
     progress.report(0.0, QStringLiteral("Reading %1").arg(QFileInfo(file).fileName()));
     auto result = kind && kind->table ? readTable(reader, file, options, kindName, kind)
-                                      : readStream(reader, mapped, file, options, kindName, kind, progress);
-    if (result) progress.report(1.0);
+                                      : readStream(reader, mapped, file, chosen, kindName, kind, progress);
+    if (!result) return result;
+    if (!timeNote.isEmpty() && !(kind && kind->table)) result->warnings.prepend(timeNote);
+    progress.report(1.0);
     return result;
 }
 

@@ -77,6 +77,23 @@ QString timeFormatNames() {
         "unix_ns (or epoch_...); iso; hh:mm:ss, hh:mm:ss.fff (clock); excel");
 }
 
+QString guessTimeFormat(const QString& cell) {
+    const QString c = cell.trimmed();
+    static const QRegularExpression clock(QStringLiteral("^\\d{1,2}:\\d{2}:\\d{2}([.,]\\d+)?$"));
+    static const QRegularExpression iso(QStringLiteral("^\\d{4}-\\d{2}-\\d{2}[T ]\\d{2}:\\d{2}"));
+    if (clock.match(c).hasMatch()) return QStringLiteral("hh:mm:ss");
+    if (iso.match(c).hasMatch()) return QStringLiteral("iso");
+    bool ok = false;
+    const double v = c.toDouble(&ok);
+    if (!ok || !std::isfinite(v)) return {};
+    // 2000-01-01 and 2100-01-01 in s since the Unix epoch.
+    constexpr double kFrom = 946684800.0, kTo = 4102444800.0;
+    const std::pair<double, const char*> units[] = {{1.0, "unix"}, {1e3, "unix_ms"}, {1e6, "unix_us"}, {1e9, "unix_ns"}};
+    for (const auto& [perSecond, name] : units)
+        if (v >= kFrom * perSecond && v < kTo * perSecond) return QLatin1String(name);
+    return {};
+}
+
 Expected<TimeFormat> parseTimeFormat(const QString& spec) {
     const QString s = spec.trimmed();
     if (s.isEmpty()) return TimeFormat{TimeKind::Duration, 1.0, QStringLiteral("s")};

@@ -50,6 +50,13 @@ Expected<std::pair<QString, QString>> splitTimeColumnSpec(const QString& spec);
 // "s, ms, ..., excel", for messages and help.
 QString timeFormatNames();
 
+// The format a time cell is written in, guessed from the cell alone (a file's first time stamp,
+// when neither the header nor the user says): "hh:mm:ss" for clock times, "iso" for ISO 8601
+// date-times, "unix" / "unix_ms" / "unix_us" / "unix_ns" for numbers that are instants between
+// 2000-01-01 and 2100-01-01 in that unit (no recording lasts 30 years, so such a number is no
+// duration), else "" (a duration in seconds).
+QString guessTimeFormat(const QString& cell);
+
 constexpr qint64 kNsPerSecond = 1000000000LL;
 constexpr qint64 kNsPerDay = 86400LL * kNsPerSecond;
 

@@ -7,8 +7,9 @@ printf 'Date;Time [ms];AccX [g];Gyro Z;Load\n2024-05-01;0;0.5;180;1\n2024-05-01;
 expect_ok "new" "$ATHLOS" new "$P"
 cp "$P" "$WORK/before.athlos"
 
-# Without a mapping the text column and the missing t column stop the import.
-expect_fail "no time column" "watch\.csv:1: no 't' column" "$ATHLOS" import "$P" "$WORK/watch.csv" --as anna --kind imu
+# Without a mapping 'Time' is taken as the time column, and the text column stops the import.
+expect_fail "text column" "watch\.csv:2:1 \(column 'Date'\): '2024-05-01' is not a number" \
+  "$ATHLOS" import "$P" "$WORK/watch.csv" --as anna --kind imu
 expect_fail "unknown unit" "column mapping for 'AccX': unknown unit 'furlong'" \
   "$ATHLOS" import "$P" "$WORK/watch.csv" --as anna --kind imu --time-column Time --skip Date --column AccX=acc_x:furlong
 expect_fail "duplicate channel" "duplicate channel 'acc_x'" \

@@ -143,8 +143,9 @@ TEST_F(ColumnMap, BadMappingsNameTheParameter) {
     o.timeUnit = "m";
     expectError(importFile(file, o), "time column 'Time': unknown time format 'm' (accepted: s, ms");
 
-    o.timeColumn.clear();  // no time column at all
+    o.timeColumn.clear();  // no time column at all, and none named like one
     o.timeUnit.clear();
+    o.columns = {{"Time", "stamp", {}, false}};
     expectError(importFile(file, o), "export.csv:1: no 't' column");
 
     o.timeColumn = "Time";

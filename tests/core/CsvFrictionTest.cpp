@@ -64,10 +64,11 @@ TEST_F(CsvFriction, KnownChannelNamesInAnyCase) {
     ASSERT_FALSE(r.ok());
     EXPECT_TRUE(r.message().contains("f.csv:1:3 (column 'ACC_X'): duplicate column name (also column 2)"))
         << qPrintable(r.message());
-    // The time column is never guessed: "Time" is not t.
+    // Without a 't' column, "Time" is taken as the time column, and the import says so.
     r = import("Time,acc_x\n0,1\n", "imu");
-    ASSERT_FALSE(r.ok());
-    EXPECT_TRUE(r.message().contains("no 't' column"));
+    ASSERT_TRUE(r.ok()) << qPrintable(r.message());
+    EXPECT_TRUE(r->warnings.join('\n').contains("column 'Time' taken as the time column, in seconds"))
+        << qPrintable(r->warnings.join('\n'));
 }
 
 TEST_F(CsvFriction, DropUnmappedLeavesOnlyWhatTheKindKnows) {

@@ -121,7 +121,7 @@ TEST_F(CsvImport, WrongFieldCount) {
 }
 
 TEST_F(CsvImport, HeaderErrors) {
-    expectError(import(write("not.csv", "time,acc_x\n0,1\n"), "imu"), "not.csv:1: no 't' column");
+    expectError(import(write("not.csv", "stamp,acc_x\n0,1\n"), "imu"), "not.csv:1: no 't' column");
     expectError(import(write("dup.csv", "t,acc_x,acc_x\n0,1,2\n"), "imu"),
                 "dup.csv:1:3 (column 'acc_x'): duplicate column name");
     expectError(import(write("empty.csv", ""), "imu"), "empty.csv: empty file");

@@ -191,7 +191,9 @@ TEST_F(TimeImport, DurationsAndUptimeKeepTheirOrigin) {
 TEST_F(TimeImport, HeaderUnitIsATimeFormatToo) {
     const auto r =
         import("Time (hh:mm:ss.fff),Date,acc_x\n10:00:00.000,2024-05-01,1\n10:00:00.020,2024-05-01,2\n", "", "");
-    ASSERT_FALSE(r.ok());  // the time column is not 't'
+    // Not 't', but named like time: its header unit is the format (and the date comes from 'Date').
+    ASSERT_TRUE(r.ok()) << qPrintable(r.message());
+    EXPECT_EQ(attribute(*r, "t0_utc"), QStringLiteral("2024-05-01T10:00:00Z"));
     const auto named =
         import("t (hh:mm:ss.fff),Date,acc_x\n10:00:00.000,2024-05-01,1\n10:00:00.020,2024-05-01,2\n", "", "");
     ASSERT_TRUE(named.ok()) << qPrintable(named.message());
@@ -248,4 +250,53 @@ TEST_F(TimeImport, AbsurdSamplingRateWarns) {
     r = import(fast, "t", "ms");  // 100 Hz: fine
     ASSERT_TRUE(r.ok());
     EXPECT_TRUE(r->warnings.isEmpty());
+}
+
+TEST(TimeFormats, GuessesTheFormatOfAFirstTimeStamp) {
+    EXPECT_EQ(guessTimeFormat("10:00:00"), QStringLiteral("hh:mm:ss"));
+    EXPECT_EQ(guessTimeFormat(" 9:59:59.25 "), QStringLiteral("hh:mm:ss"));
+    EXPECT_EQ(guessTimeFormat("2024-05-01T10:00:00.250Z"), QStringLiteral("iso"));
+    EXPECT_EQ(guessTimeFormat("2024-05-01 10:00:00"), QStringLiteral("iso"));
+    EXPECT_EQ(guessTimeFormat("1714557600"), QStringLiteral("unix"));
+    EXPECT_EQ(guessTimeFormat("1714557600.5"), QStringLiteral("unix"));
+    EXPECT_EQ(guessTimeFormat("1714557600250"), QStringLiteral("unix_ms"));
+    EXPECT_EQ(guessTimeFormat("1714557600250000"), QStringLiteral("unix_us"));
+    EXPECT_EQ(guessTimeFormat("1734501485317590607"), QStringLiteral("unix_ns"));  // the ROS stamps of shared/data
+    // Durations: seconds since a start, however long, and numbers outside 2000–2100 in every unit.
+    EXPECT_EQ(guessTimeFormat("0"), QString());
+    EXPECT_EQ(guessTimeFormat("12.5"), QString());
+    EXPECT_EQ(guessTimeFormat("86400"), QString());
+    EXPECT_EQ(guessTimeFormat("5e8"), QString());
+    EXPECT_EQ(guessTimeFormat("-1714557600"), QString());
+    EXPECT_EQ(guessTimeFormat("nan"), QString());
+    EXPECT_EQ(guessTimeFormat("24 Jul"), QString());
+}
+
+// No 't' column and no --time-column: a column named like time is the time column, in the format
+// its first value shows, with a warning that says so.
+TEST_F(TimeImport, ATimeLikeColumnIsTheTimeColumnInTheFormatItShows) {
+    const auto clock = import("Time,acc_x\n10:00:00.000,1\n10:00:00.500,2\n10:00:01.000,3\n", "", "");
+    ASSERT_TRUE(clock.ok()) << qPrintable(clock.message());
+    expectTimes(times(*clock), {0.0, 0.5, 1.0});
+    EXPECT_EQ(attribute(*clock, "t0_time_of_day"), QStringLiteral("10:00:00"));
+    ASSERT_FALSE(clock->warnings.isEmpty());
+    EXPECT_TRUE(clock->warnings[0].contains("column 'Time' taken as the time column, format hh:mm:ss"))
+        << qPrintable(clock->warnings[0]);
+
+    const auto epoch = import("Timestamp,acc_x\n1714557600250,1\n1714557600260,2\n", "", "");
+    ASSERT_TRUE(epoch.ok()) << qPrintable(epoch.message());
+    expectTimes(times(*epoch), {0.0, 0.01});
+    EXPECT_EQ(attribute(*epoch, "t0_utc"), QStringLiteral("2024-05-01T10:00:00.250Z"));
+
+    const auto seconds = import("Elapsed Time,acc_x\n0,1\n0.01,2\n", "", "");
+    ASSERT_TRUE(seconds.ok()) << qPrintable(seconds.message());
+    expectTimes(times(*seconds), {0.0, 0.01});
+    EXPECT_TRUE(seconds->warnings.join('\n').contains("in seconds")) << qPrintable(seconds->warnings.join('\n'));
+
+    // A header unit wins over the guess; an interchange 't' column is never second-guessed.
+    const auto unit = import("time [ms],acc_x\n0,1\n10,2\n", "", "");
+    ASSERT_TRUE(unit.ok()) << qPrintable(unit.message());
+    expectTimes(times(*unit), {0.0, 0.01});
+    const auto plain = import("t,Time,acc_x\n0,10:00:00,1\n1,10:00:01,2\n", "", "");
+    EXPECT_FALSE(plain.ok());  // 'Time' is text in a data column: refused with file:line:column, not taken as time
 }
