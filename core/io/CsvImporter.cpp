@@ -281,8 +281,9 @@ QString chooseTimeColumn(const MappedFile& mapped, const QString& file, ImportOp
         reader.finishRecord();
     }
     options.timeUnit = guessTimeFormat(first);
-    return QStringLiteral("%1: column '%2' taken as the time column, %3 (from its first value '%4'); "
-                          "--time-column COL:FORMAT chooses another")
+    return QStringLiteral(
+               "%1: column '%2' taken as the time column, %3 (from its first value '%4'); "
+               "--time-column COL:FORMAT chooses another")
         .arg(QFileInfo(file).fileName(), source,
              options.timeUnit.isEmpty() ? QStringLiteral("in seconds") : QStringLiteral("format ") + options.timeUnit,
              first.trimmed().left(40));

@@ -88,7 +88,8 @@ QString guessTimeFormat(const QString& cell) {
     if (!ok || !std::isfinite(v)) return {};
     // 2000-01-01 and 2100-01-01 in s since the Unix epoch.
     constexpr double kFrom = 946684800.0, kTo = 4102444800.0;
-    const std::pair<double, const char*> units[] = {{1.0, "unix"}, {1e3, "unix_ms"}, {1e6, "unix_us"}, {1e9, "unix_ns"}};
+    const std::pair<double, const char*> units[] = {
+        {1.0, "unix"}, {1e3, "unix_ms"}, {1e6, "unix_us"}, {1e9, "unix_ns"}};
     for (const auto& [perSecond, name] : units)
         if (v >= kFrom * perSecond && v < kTo * perSecond) return QLatin1String(name);
     return {};
