@@ -35,10 +35,17 @@ AnnotationLayer::AnnotationLayer(TimeSeriesPanel* panel, AnnotationEditor* edito
         if (rec == recording_) rebuild();
     });
     connect(editor_, &AnnotationEditor::classesChanged, this, &AnnotationLayer::rebuild);
+    connect(panel, &TimeSeriesPanel::lanesChanged, this, &AnnotationLayer::rebuild);
     panel->installEventFilter(this);
 }
 
 QCustomPlot* AnnotationLayer::plot() const { return panel_->plot(); }
+
+bool AnnotationLayer::inAnyLane(const QPoint& pos) const {
+    for (int lane = 0; lane < plot()->axisRectCount(); ++lane)
+        if (plot()->axisRect(lane)->rect().contains(pos)) return true;
+    return false;
+}
 
 void AnnotationLayer::setRecording(const QString& recording) {
     recording_ = recording;
@@ -50,6 +57,7 @@ void AnnotationLayer::clearSpans() {
     for (const Span& span : spans_) {
         plot()->removeItem(span.rect);
         plot()->removeItem(span.label);
+        for (QCPItemRect* shade : span.shades) plot()->removeItem(shade);
     }
     spans_.clear();
 }
@@ -88,6 +96,24 @@ void AnnotationLayer::rebuild() {
                 text += QStringLiteral(" (%1%)").arg(std::lround(a.confidence * 100));
             span.label->setText(text);
             span.label->setColor(color.darker(220));
+            // The other lanes of a stacked panel shade the same interval (their time axis is the same).
+            for (int lane = 1; lane < plot()->axisRectCount(); ++lane) {
+                QCPAxisRect* axisRect = plot()->axisRect(lane);
+                auto* shade = new QCPItemRect(plot());
+                shade->setLayer(kLayerName);
+                shade->setSelectable(false);
+                shade->setClipAxisRect(axisRect);
+                for (QCPItemPosition* p : {shade->topLeft, shade->bottomRight}) {
+                    p->setAxes(axisRect->axis(QCPAxis::atBottom), axisRect->axis(QCPAxis::atLeft));
+                    p->setAxisRect(axisRect);
+                    p->setTypeY(QCPItemPosition::ptAxisRectRatio);
+                }
+                shade->topLeft->setCoords(a.tStart, 0.0);
+                shade->bottomRight->setCoords(a.tEnd, 1.0);
+                shade->setBrush(span.rect->brush());
+                shade->setPen(span.rect->pen());
+                span.shades.push_back(shade);
+            }
             spans_.push_back(span);
         }
     }
@@ -124,7 +150,7 @@ int AnnotationLayer::spanAt(double pixelX, Drag* edge) const {
 void AnnotationLayer::onPress(QMouseEvent* event) {
     const bool annotating = annotateMode_ || (event->modifiers() & Qt::ShiftModifier);
     if (!annotating || event->button() != Qt::LeftButton || recording_.isEmpty()) return;
-    if (!plot()->axisRect()->rect().contains(event->pos())) return;
+    if (!inAnyLane(event->pos())) return;
     Drag edge = Drag::None;
     const int index = spanAt(event->pos().x(), &edge);
     if (index >= 0 && edge != Drag::None) {
@@ -162,9 +188,12 @@ void AnnotationLayer::onMove(QMouseEvent* event) {
         preview_->topLeft->setCoords(std::min(t, dragOrigin_), 0.0);
         preview_->bottomRight->setCoords(std::max(t, dragOrigin_), 1.0);
     } else if (dragIndex_ >= 0 && dragIndex_ < spanCount()) {
-        QCPItemRect* rect = spans_[std::size_t(dragIndex_)].rect;
-        (drag_ == Drag::MoveStart ? rect->topLeft : rect->bottomRight)
-            ->setCoords(t, drag_ == Drag::MoveStart ? 0.0 : 1.0);
+        const Span& span = spans_[std::size_t(dragIndex_)];
+        std::vector<QCPItemRect*> rects = span.shades;
+        rects.push_back(span.rect);
+        for (QCPItemRect* rect : rects)
+            (drag_ == Drag::MoveStart ? rect->topLeft : rect->bottomRight)
+                ->setCoords(t, drag_ == Drag::MoveStart ? 0.0 : 1.0);
     }
     plot()->replot(QCustomPlot::rpQueuedReplot);
 }

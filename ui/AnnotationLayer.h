@@ -34,6 +34,8 @@ public:
     void setSelected(int index);
     int spanCount() const { return int(spans_.size()); }
     QCPItemRect* span(int index) const { return spans_.at(std::size_t(index)).rect; }
+    // The span's shades in the other lanes of a stacked panel (lane 1, 2, ...).
+    const std::vector<QCPItemRect*>& shades(int index) const { return spans_.at(std::size_t(index)).shades; }
 
 public slots:
     void rebuild();
@@ -43,9 +45,11 @@ protected:
 
 private:
     struct Span {
-        QCPItemRect* rect = nullptr;
+        QCPItemRect* rect = nullptr;  // in the top lane (the plot's main axis rect), with the label
         QCPItemText* label = nullptr;
+        std::vector<QCPItemRect*> shades;  // the same interval in the other stacked lanes
     };
+    bool inAnyLane(const QPoint& pos) const;
     enum class Drag { None, Create, MoveStart, MoveEnd };
 
     void onPress(QMouseEvent* event);

@@ -163,6 +163,7 @@ void TimeSeriesPanel::clear() {
     removeExtraLanes();
     applyTimeAxis();
     graphLane_.clear();
+    emit lanesChanged();
     plot_->legend->setVisible(false);
     plot_->yAxis->setLabel({});
     readout_->clear();
@@ -286,6 +287,7 @@ void TimeSeriesPanel::rebuildGraphs() {
     plot_->yAxis->setLabel(lanes.count() > 0 ? PlotStyle::unitSuffix(lanes.unit.front()).trimmed() : QString());
     applyTimeAxis();
     PlotStyle::applyPalette(plot_, plot_->palette());
+    emit lanesChanged();
 }
 
 void TimeSeriesPanel::setClockTime(bool on) {

@@ -99,6 +99,8 @@ public slots:
 signals:
     void loaded();
     void loadFailed(const QString& message);
+    // The stacked lanes were rebuilt (other axis rects now; overlays such as annotations redraw).
+    void lanesChanged();
 
 protected:
     // Transport keys (space, arrows, J/K/L) go to the time controller while the panel has focus.

@@ -189,10 +189,18 @@ void GuiAnnotationTest::shiftDragCreatesAndDeleteRemoves() {
     QCOMPARE(plot->xAxis->range(), rangeBefore);  // the drag annotated, it did not pan
     QCOMPARE(window.annotationLayer()->spanCount(), 1);
     QCOMPARE(window.annotationLayer()->selected(), 0);
+    // acc and gyr are stacked lanes: the span shades the gyr lane too, over the same interval.
+    QCOMPARE(plot->axisRectCount(), 2);
+    QCOMPARE(int(window.annotationLayer()->shades(0).size()), 1);
+    QCPItemRect* shade = window.annotationLayer()->shades(0).front();
+    QCOMPARE(shade->clipAxisRect(), plot->axisRect(1));
+    QVERIFY(std::abs(shade->topLeft->coords().x() - t0) < 1e-9 &&
+            std::abs(shade->bottomRight->coords().x() - t1) < 1e-9);
 
-    // Dragging the end edge moves it.
-    const QPoint edge(int(plot->xAxis->coordToPixel(t1)), area.center().y());
-    const QPoint further(area.left() + 3 * area.width() / 4, area.center().y());
+    // Dragging the end edge moves it, in the lower lane as well.
+    const QRect lower = plot->axisRect(1)->rect();
+    const QPoint edge(int(plot->xAxis->coordToPixel(t1)), lower.center().y());
+    const QPoint further(area.left() + 3 * area.width() / 4, lower.center().y());
     QTest::mousePress(plot, Qt::LeftButton, Qt::ShiftModifier, edge);
     QTest::mouseMove(plot, further);
     QTest::mouseRelease(plot, Qt::LeftButton, Qt::ShiftModifier, further);
