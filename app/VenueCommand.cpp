@@ -36,31 +36,6 @@ void printPitch(const PitchGeometry& g) {
     }
 }
 
-// "A,B;A,B;…" → pairs; count < 0: any number ≥ 1.
-Expected<std::vector<Eigen::Vector2d>> parsePairs(const QString& text, const QString& option, int count) {
-    std::vector<Eigen::Vector2d> points;
-    const QStringList items = text.split(QLatin1Char(';'), Qt::SkipEmptyParts);
-    for (qsizetype i = 0; i < items.size(); ++i) {
-        const QStringList parts = items[i].split(QLatin1Char(','));
-        bool ok0 = false, ok1 = false;
-        const double v0 = parts.size() == 2 ? parts[0].trimmed().toDouble(&ok0) : 0.0;
-        const double v1 = parts.size() == 2 ? parts[1].trimmed().toDouble(&ok1) : 0.0;
-        if (!ok0 || !ok1 || !std::isfinite(v0) || !std::isfinite(v1))
-            return makeError(QStringLiteral("%1: point %2 '%3' is not a pair of numbers A,B")
-                                 .arg(option)
-                                 .arg(i + 1)
-                                 .arg(items[i].trimmed()));
-        points.emplace_back(v0, v1);
-    }
-    if (count > 0 && int(points.size()) != count)
-        return makeError(QStringLiteral("%1: expected %2 points separated by ';', got %3")
-                             .arg(option)
-                             .arg(count)
-                             .arg(points.size()));
-    if (points.empty()) return makeError(QStringLiteral("%1: no points").arg(option));
-    return points;
-}
-
 Expected<std::vector<Eigen::Vector2d>> toEnu(const std::vector<Eigen::Vector2d>& latLon, const GeodeticOrigin& origin,
                                              const QString& option) {
     const LocalTangentPlane plane(origin.lat, origin.lon, origin.height);
@@ -229,9 +204,9 @@ int cmdVenue(const QStringList& args) {
         return fail(QStringLiteral("--max-residual '%1': expected a positive number of metres")
                         .arg(opt.value(QStringLiteral("max-residual"))),
                     Usage);
-    const auto points = mode == Mode::Pitch
-                            ? PitchGeometry::parseCorners(opt.value(given.front()), pointsOption)
-                            : parsePairs(opt.value(given.front()), pointsOption, mode == Mode::Oval ? 2 : -1);
+    const auto points = mode == Mode::Pitch ? PitchGeometry::parseCorners(opt.value(given.front()), pointsOption)
+                                            : PitchGeometry::parsePoints(opt.value(given.front()), pointsOption,
+                                                                         mode == Mode::Oval ? 2 : -1);
     if (!points) return fail(points.message(), Usage);
     std::optional<TrackGeometry> oval;
     if (mode == Mode::Oval) {

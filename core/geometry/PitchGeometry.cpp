@@ -185,7 +185,8 @@ PitchGeometry PitchGeometry::placed(Kind kind, double length, double width, cons
     return g;
 }
 
-Expected<std::vector<Eigen::Vector2d>> PitchGeometry::parseCorners(const QString& text, const QString& option) {
+Expected<std::vector<Eigen::Vector2d>> PitchGeometry::parsePoints(const QString& text, const QString& option, int count,
+                                                                  const QString& noun) {
     std::vector<Eigen::Vector2d> points;
     const QStringList items = text.split(QLatin1Char(';'), Qt::SkipEmptyParts);
     for (qsizetype i = 0; i < items.size(); ++i) {
@@ -194,16 +195,24 @@ Expected<std::vector<Eigen::Vector2d>> PitchGeometry::parseCorners(const QString
         const double v0 = parts.size() == 2 ? parts[0].trimmed().toDouble(&ok0) : 0.0;
         const double v1 = parts.size() == 2 ? parts[1].trimmed().toDouble(&ok1) : 0.0;
         if (!ok0 || !ok1 || !std::isfinite(v0) || !std::isfinite(v1))
-            return makeError(QStringLiteral("%1: corner %2 '%3' is not a pair of numbers A,B")
-                                 .arg(option)
+            return makeError(QStringLiteral("%1: %2 %3 '%4' is not a pair of numbers A,B")
+                                 .arg(option, noun)
                                  .arg(i + 1)
                                  .arg(items[i].trimmed()));
         points.emplace_back(v0, v1);
     }
-    if (points.size() != 4)
-        return makeError(
-            QStringLiteral("%1: expected 4 corners separated by ';', got %2").arg(option).arg(points.size()));
+    if (count > 0 && int(points.size()) != count)
+        return makeError(QStringLiteral("%1: expected %2 %3s separated by ';', got %4")
+                             .arg(option)
+                             .arg(count)
+                             .arg(noun)
+                             .arg(points.size()));
+    if (points.empty()) return makeError(QStringLiteral("%1: no %2s").arg(option, noun));
     return points;
+}
+
+Expected<std::vector<Eigen::Vector2d>> PitchGeometry::parseCorners(const QString& text, const QString& option) {
+    return parsePoints(text, option, 4, QStringLiteral("corner"));
 }
 
 QString PitchGeometry::kindId(Kind kind) {

@@ -57,6 +57,11 @@ public:
 
     // "x,y;x,y;x,y;x,y" or "lat,lon;…" (whitespace allowed): the 4 pairs, errors name the pair.
     static Expected<std::vector<Eigen::Vector2d>> parseCorners(const QString& text, const QString& option);
+    // "A,B;A,B;…" (an option's value) → points; count > 0: exactly that many. Errors name the option
+    // and the item ("--polyline: point 2 '3,x' is not a pair of numbers A,B").
+    static Expected<std::vector<Eigen::Vector2d>> parsePoints(const QString& text, const QString& option,
+                                                              int count = -1,
+                                                              const QString& noun = QStringLiteral("point"));
 
     // Stable ids "football", "rugby", "rectangle".
     static QString kindId(Kind kind);
