@@ -48,9 +48,8 @@ MotionSeries rawMotion(const PositionSamples& in, double maxGap) {
     };
     for (std::size_t k = 0; k < n; ++k)
         if (s.valid[k])
-            s.speed[k] = derivative(k, [&](std::size_t lo, std::size_t hi) {
-                return std::hypot(s.x[hi] - s.x[lo], s.y[hi] - s.y[lo]);
-            });
+            s.speed[k] = derivative(
+                k, [&](std::size_t lo, std::size_t hi) { return std::hypot(s.x[hi] - s.x[lo], s.y[hi] - s.y[lo]); });
     for (std::size_t k = 0; k < n; ++k)
         if (s.valid[k])
             s.accel[k] = derivative(k, [&](std::size_t lo, std::size_t hi) { return s.speed[hi] - s.speed[lo]; });
@@ -155,8 +154,8 @@ Expected<MotionResult> motionFromPositions(const PositionSamples& in, const Moti
     bool anyStep = false;
     for (std::size_t k = 1; k < in.t.size() && !anyStep; ++k) anyStep = in.t[k] - in.t[k - 1] <= params.maxGap;
     if (!anyStep)
-        return makeError(QStringLiteral("no two position fixes are within max_gap = %1 s of each other")
-                             .arg(params.maxGap));
+        return makeError(
+            QStringLiteral("no two position fixes are within max_gap = %1 s of each other").arg(params.maxGap));
     MotionResult result;
     if (!params.filter) {
         result.series = rawMotion(in, params.maxGap);
@@ -170,10 +169,8 @@ Expected<MotionResult> motionFromPositions(const PositionSamples& in, const Moti
     fp.noise = params.noise;
     if (params.estimateNoise) {
         const auto chunks = noiseChunks(in, params.noiseChunk, params.noiseChunks);
-        const auto estimate =
-            PositionFilter::estimateNoise(fp, chunks, estimation::NoiseEstimator::Params{}, [&](double f) {
-                return !progress || progress(0.7 * f);
-            });
+        const auto estimate = PositionFilter::estimateNoise(fp, chunks, estimation::NoiseEstimator::Params{},
+                                                            [&](double f) { return !progress || progress(0.7 * f); });
         if (estimate.cancelled) {
             result.cancelled = true;
             return result;

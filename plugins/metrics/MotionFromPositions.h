@@ -32,11 +32,11 @@ namespace athlos::metrics {
 struct MotionParams {
     bool filter = true;  // false: raw positions, speed and acceleration by central differences
     positioning::ModelKind model = positioning::ModelKind::ConstantVelocity;  // or Unconstrained (CTRA)
-    double rate = 10.0;          // Hz, output grid of the filtered motion
-    double maxGap = 2.0;         // s, longer outages are not bridged
-    double noiseChunk = 60.0;    // s, length of one chunk of the noise estimate
-    int noiseChunks = 8;         // chunks of the noise estimate (0 = estimate on the whole recording)
-    bool estimateNoise = true;   // false: use `noise` as given
+    double rate = 10.0;                                                       // Hz, output grid of the filtered motion
+    double maxGap = 2.0;                                                      // s, longer outages are not bridged
+    double noiseChunk = 60.0;            // s, length of one chunk of the noise estimate
+    int noiseChunks = 8;                 // chunks of the noise estimate (0 = estimate on the whole recording)
+    bool estimateNoise = true;           // false: use `noise` as given
     double stationaryWindow = 2.0;       // s, window of the standing test (0 = off)
     double stationaryConfidence = 0.99;  // χ² quantile of the standing test
     positioning::NoiseSettings noise;

@@ -67,8 +67,8 @@ int countEfforts(const MotionSeries& s, const std::vector<double>& value, std::s
             runStart = fromBelow ? crossing(s.t[k - 1], value[k - 1], s.t[k], value[k], threshold) : s.t[k];
             inside = true;
         } else if (!now && inside) {
-            const double runEnd = s.valid[k] ? crossing(s.t[k - 1], value[k - 1], s.t[k], value[k], threshold)
-                                             : s.t[k - 1];
+            const double runEnd =
+                s.valid[k] ? crossing(s.t[k - 1], value[k - 1], s.t[k], value[k], threshold) : s.t[k - 1];
             if (runEnd - runStart >= minDuration - 1e-9) ++count;
             inside = false;
         }
@@ -134,8 +134,7 @@ PeriodMetrics computePeriod(const MotionSeries& s, double start, double end, con
             while (j + 1 <= last && s.t[j + 1] <= tEnd) ++j;
             double atEnd = cumulative[j - first];
             if (j < last && s.t[j] < tEnd)
-                atEnd += (cumulative[j + 1 - first] - cumulative[j - first]) * (tEnd - s.t[j]) /
-                         (s.t[j + 1] - s.t[j]);
+                atEnd += (cumulative[j + 1 - first] - cumulative[j - first]) * (tEnd - s.t[j]) / (s.t[j + 1] - s.t[j]);
             best = std::max(best, atEnd - cumulative[i - first]);
         }
         m.peakDistance[w] = best;

@@ -39,14 +39,14 @@ struct MetricsParams {
     // Lower edges of the speed zones (m/s): 0, 7, 14.4, 19.8, 25.2 km/h (the usual five bands of
     // Bradley et al. 2009 and the vendors' defaults).
     std::vector<double> zoneEdges{0.0, 7.0 / 3.6, 14.4 / 3.6, 19.8 / 3.6, 25.2 / 3.6};
-    double hsrSpeed = 5.5;            // m/s, high-speed running (19.8 km/h; Bradley et al. 2009)
-    double sprintSpeed = 7.0;         // m/s, sprint entry speed (25.2 km/h; Bradley et al. 2009)
-    double sprintMinDuration = 1.0;   // s (Di Salvo et al. 2010: sprints of at least 1 s)
-    double maxSpeedDuration = 0.5;    // s, max_speed is the highest speed held this long (0 = instantaneous)
-    double accelThreshold = 3.0;      // m/s², acceleration / deceleration efforts (Akenhead et al. 2013)
-    double accelMinDuration = 0.5;    // s (Varley et al. 2012, the vendors' default dwell time)
+    double hsrSpeed = 5.5;           // m/s, high-speed running (19.8 km/h; Bradley et al. 2009)
+    double sprintSpeed = 7.0;        // m/s, sprint entry speed (25.2 km/h; Bradley et al. 2009)
+    double sprintMinDuration = 1.0;  // s (Di Salvo et al. 2010: sprints of at least 1 s)
+    double maxSpeedDuration = 0.5;   // s, max_speed is the highest speed held this long (0 = instantaneous)
+    double accelThreshold = 3.0;     // m/s², acceleration / deceleration efforts (Akenhead et al. 2013)
+    double accelMinDuration = 0.5;   // s (Varley et al. 2012, the vendors' default dwell time)
     std::vector<double> peakWindows{60.0, 180.0, 300.0};  // s
-    double highPowerThreshold = 20.0;  // W/kg, high metabolic power (Osgnach et al. 2010)
+    double highPowerThreshold = 20.0;                     // W/kg, high metabolic power (Osgnach et al. 2010)
     MetabolicParams metabolic;
 };
 
@@ -58,10 +58,10 @@ struct PeriodMetrics {
     std::vector<double> zoneDistance;               // m, one per zone
     double hsrDistance = 0.0;                       // m
     int sprintCount = 0, accelerationCount = 0, decelerationCount = 0;
-    std::vector<double> peakDistance;     // m per MetricsParams::peakWindows; NaN if the period is shorter
-    double metabolicEnergy = 0.0;         // J/kg
-    double metabolicPowerMean = 0.0;      // W/kg over the valid time
-    double highPowerDistance = 0.0;       // m covered above the high-power threshold
+    std::vector<double> peakDistance;  // m per MetricsParams::peakWindows; NaN if the period is shorter
+    double metabolicEnergy = 0.0;      // J/kg
+    double metabolicPowerMean = 0.0;   // W/kg over the valid time
+    double highPowerDistance = 0.0;    // m covered above the high-power threshold
 };
 
 // The metrics of the samples with start ≤ t ≤ end.

@@ -52,8 +52,9 @@ struct Period {
 Expected<positioning::PositionSamples> loadFixes(const RunContext& context, const InputSamples& input) {
     const int cx = input.info().columnIndex(QStringLiteral("x")), cy = input.info().columnIndex(QStringLiteral("y"));
     if (cx < 0 || cy < 0)
-        return input.error(QStringLiteral("needs columns x and y (m); a gnss stream gets them from lat, lon on import "
-                                          "(the project's geodetic origin)"));
+        return input.error(
+            QStringLiteral("needs columns x and y (m); a gnss stream gets them from lat, lon on import "
+                           "(the project's geodetic origin)"));
     (void)context;
     positioning::PositionSamples fixes;
     const StreamData& d = *input.data;
@@ -95,7 +96,8 @@ MotionSeries trajectoryMotion(const InputSamples& input, double maxGap) {
     }
     if (ca < 0) {  // no acceleration column: differentiate the speed
         for (std::size_t k = 0; k < s.size(); ++k) {
-            const std::size_t lo = k > 0 && s.valid[k - 1] ? k - 1 : k, hi = k + 1 < s.size() && s.valid[k + 1] ? k + 1 : k;
+            const std::size_t lo = k > 0 && s.valid[k - 1] ? k - 1 : k,
+                              hi = k + 1 < s.size() && s.valid[k + 1] ? k + 1 : k;
             s.accel[k] = hi > lo && s.valid[k] ? (s.speed[hi] - s.speed[lo]) / (s.t[hi] - s.t[lo]) : 0.0;
         }
     }
@@ -181,7 +183,10 @@ QList<InputSpec> SessionMetricsProcessor::inputs() const {
                       false,
                       tr("Positions t, x, y (m): LPS fixes, GNSS (x, y in the project's ENU frame) or a filtered "
                          "trajectory.")},
-            InputSpec{QStringLiteral("imu"), {QStringLiteral("imu")}, false, true,
+            InputSpec{QStringLiteral("imu"),
+                      {QStringLiteral("imu")},
+                      false,
+                      true,
                       tr("Optional IMU (acc_x, acc_y, acc_z) for PlayerLoad.")}};
 }
 
@@ -230,7 +235,8 @@ Expected<SessionMetricsProcessor::Plan> SessionMetricsProcessor::makePlan(const 
         return makeError(QStringLiteral("parameter 'period_pattern': not a valid regular expression: %1")
                              .arg(QRegularExpression(plan.periodPattern).errorString()));
     const Stream* positions = c.stream(0);
-    if (positions->info().columnIndex(QStringLiteral("x")) < 0 || positions->info().columnIndex(QStringLiteral("y")) < 0)
+    if (positions->info().columnIndex(QStringLiteral("x")) < 0 ||
+        positions->info().columnIndex(QStringLiteral("y")) < 0)
         return c.inputError(0, QStringLiteral("needs columns x and y (m); a gnss stream gets them from lat, lon on "
                                               "import (the project's geodetic origin)"));
     if (positions->info().kind == QLatin1String("trajectory") && plan.filterMode == QLatin1String("auto") &&
@@ -295,8 +301,7 @@ Expected<std::vector<ProcessorOutput>> SessionMetricsProcessor::run(const RunCon
     const Recording* recording = context.project().recording(recordingName);
     const Annotations annotations = recording ? recording->annotations : Annotations{};
     std::vector<Period> periods{{QStringLiteral("whole"), tBegin, tEnd}};
-    const QStringList periodLabels =
-        plan.periods == QLatin1String("auto") ? QStringList{} : splitList(plan.periods);
+    const QStringList periodLabels = plan.periods == QLatin1String("auto") ? QStringList{} : splitList(plan.periods);
     const QRegularExpression pattern(plan.periodPattern, QRegularExpression::CaseInsensitiveOption);
     auto isPeriod = [&](const Annotation& a) {
         if (!(a.tEnd > a.tStart)) return false;
@@ -329,7 +334,8 @@ Expected<std::vector<ProcessorOutput>> SessionMetricsProcessor::run(const RunCon
     if (context.stream(1)) {
         auto imu = context.samples(1);
         if (!imu) return imu.error();
-        const int ax = imu->info().columnIndex(QStringLiteral("acc_x")), ay = imu->info().columnIndex(QStringLiteral("acc_y")),
+        const int ax = imu->info().columnIndex(QStringLiteral("acc_x")),
+                  ay = imu->info().columnIndex(QStringLiteral("acc_y")),
                   az = imu->info().columnIndex(QStringLiteral("acc_z"));
         AccelerationSeries a;
         const StreamData& d = *imu->data;
@@ -362,13 +368,15 @@ Expected<std::vector<ProcessorOutput>> SessionMetricsProcessor::run(const RunCon
     const auto cDistance = numberColumn(QStringLiteral("distance"), QStringLiteral("m"));
     const auto cMaxSpeed = numberColumn(QStringLiteral("max_speed"), QStringLiteral("m/s"));
     const auto cZones = table.columns.size();
-    for (std::size_t z = 0; z < plan.metrics.zoneEdges.size(); ++z) numberColumn(QStringLiteral("distance_zone%1").arg(z + 1), QStringLiteral("m"));
+    for (std::size_t z = 0; z < plan.metrics.zoneEdges.size(); ++z)
+        numberColumn(QStringLiteral("distance_zone%1").arg(z + 1), QStringLiteral("m"));
     const auto cHsr = numberColumn(QStringLiteral("hsr_distance"), QStringLiteral("m"));
     const auto cSprints = numberColumn(QStringLiteral("sprint_count"), QStringLiteral("1"));
     const auto cAcc = numberColumn(QStringLiteral("acceleration_count"), QStringLiteral("1"));
     const auto cDec = numberColumn(QStringLiteral("deceleration_count"), QStringLiteral("1"));
     const auto cPeaks = table.columns.size();
-    for (double w : plan.metrics.peakWindows) numberColumn(QStringLiteral("peak_distance_%1").arg(windowName(w)), QStringLiteral("m"));
+    for (double w : plan.metrics.peakWindows)
+        numberColumn(QStringLiteral("peak_distance_%1").arg(windowName(w)), QStringLiteral("m"));
     const auto cEnergy = numberColumn(QStringLiteral("metabolic_energy"), QStringLiteral("J/kg"));
     const auto cPower = numberColumn(QStringLiteral("metabolic_power"), QStringLiteral("W/kg"));
     const auto cHighPower = numberColumn(QStringLiteral("high_power_distance"), QStringLiteral("m"));
@@ -413,9 +421,9 @@ Expected<std::vector<ProcessorOutput>> SessionMetricsProcessor::run(const RunCon
                       QStringLiteral("di Prampero et al. 2005 / Osgnach et al. 2010, KT = %1")
                           .arg(plan.metrics.metabolic.terrainFactor));
     if (acc)
-        attributes.insert(QStringLiteral("player_load"),
-                          QStringLiteral("Boyd et al. 2011 formula at the IMU's %1 Hz (defined for 100 Hz)")
-                              .arg(imuRate, 0, 'f', 1));
+        attributes.insert(
+            QStringLiteral("player_load"),
+            QStringLiteral("Boyd et al. 2011 formula at the IMU's %1 Hz (defined for 100 Hz)").arg(imuRate, 0, 'f', 1));
     table.attributes = attributes;
 
     StreamData motion(series.size(), 5);
@@ -427,13 +435,12 @@ Expected<std::vector<ProcessorOutput>> SessionMetricsProcessor::run(const RunCon
         motion.at(k, 3) = series.accel[k];
         motion.at(k, 4) = series.valid[k];
     }
-    Stream motionStream = outputStream(
-        QStringLiteral("trajectory"), input->info().frame,
-        columnsOf({QStringLiteral("x"), QStringLiteral("y"), QStringLiteral("speed"), QStringLiteral("accel"),
-                   QStringLiteral("valid")},
-                  {QStringLiteral("m"), QStringLiteral("m"), QStringLiteral("m/s"), QStringLiteral("m/s^2"),
-                   QStringLiteral("1")}),
-        std::move(motion), attributes);
+    Stream motionStream = outputStream(QStringLiteral("trajectory"), input->info().frame,
+                                       columnsOf({QStringLiteral("x"), QStringLiteral("y"), QStringLiteral("speed"),
+                                                  QStringLiteral("accel"), QStringLiteral("valid")},
+                                                 {QStringLiteral("m"), QStringLiteral("m"), QStringLiteral("m/s"),
+                                                  QStringLiteral("m/s^2"), QStringLiteral("1")}),
+                                       std::move(motion), attributes);
 
     std::vector<ProcessorOutput> outputs;
     outputs.push_back({QString(), std::move(table)});

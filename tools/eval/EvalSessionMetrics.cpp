@@ -104,17 +104,28 @@ int main(int argc, char** argv) {
             if (i + 1 >= argc) usage(), std::exit(2);
             return argv[++i];
         };
-        if (!std::strcmp(argv[i], "--noise")) o.noise = next();
-        else if (!std::strcmp(argv[i], "--sigma")) o.sigma = std::atof(next());
-        else if (!std::strcmp(argv[i], "--sigma-gm")) o.sigmaGm = std::atof(next());
-        else if (!std::strcmp(argv[i], "--tau")) o.tau = std::atof(next());
-        else if (!std::strcmp(argv[i], "--outliers")) o.outliers = std::atof(next());
-        else if (!std::strcmp(argv[i], "--duration")) o.duration = std::atof(next());
-        else if (!std::strcmp(argv[i], "--players")) o.players = std::atoi(next());
-        else if (!std::strcmp(argv[i], "--seed")) o.seed = std::strtoull(next(), nullptr, 10);
-        else if (!std::strcmp(argv[i], "--model")) o.model = next();
-        else if (!std::strcmp(argv[i], "--verbose")) o.verbose = true;
-        else return usage(), 2;
+        if (!std::strcmp(argv[i], "--noise"))
+            o.noise = next();
+        else if (!std::strcmp(argv[i], "--sigma"))
+            o.sigma = std::atof(next());
+        else if (!std::strcmp(argv[i], "--sigma-gm"))
+            o.sigmaGm = std::atof(next());
+        else if (!std::strcmp(argv[i], "--tau"))
+            o.tau = std::atof(next());
+        else if (!std::strcmp(argv[i], "--outliers"))
+            o.outliers = std::atof(next());
+        else if (!std::strcmp(argv[i], "--duration"))
+            o.duration = std::atof(next());
+        else if (!std::strcmp(argv[i], "--players"))
+            o.players = std::atoi(next());
+        else if (!std::strcmp(argv[i], "--seed"))
+            o.seed = std::strtoull(next(), nullptr, 10);
+        else if (!std::strcmp(argv[i], "--model"))
+            o.model = next();
+        else if (!std::strcmp(argv[i], "--verbose"))
+            o.verbose = true;
+        else
+            return usage(), 2;
     }
     if (o.noise != "lps" && o.noise != "gnss") return usage(), 2;
     team::TeamSimulator::Params sp;
@@ -125,14 +136,16 @@ int main(int argc, char** argv) {
     const MetricsParams params;
     MotionParams raw, smoothed;
     raw.filter = false;
-    smoothed.model = o.model == "ctra" ? positioning::ModelKind::Unconstrained : positioning::ModelKind::ConstantVelocity;
+    smoothed.model =
+        o.model == "ctra" ? positioning::ModelKind::Unconstrained : positioning::ModelKind::ConstantVelocity;
     Errors rawErrors, smoothedErrors;
     double truthDistance = 0, truthSprints = 0, truthAccels = 0;
     const int players = std::min<int>(o.players, static_cast<int>(match.tracks.size()));
     for (int p = 0; p < players; ++p) {
         positioning::PositionSamples exact;
         exact.t = match.t;
-        for (std::size_t k = 0; k < match.t.size(); ++k) exact.p.emplace_back(match.tracks[p].x[k], match.tracks[p].y[k]);
+        for (std::size_t k = 0; k < match.t.size(); ++k)
+            exact.p.emplace_back(match.tracks[p].x[k], match.tracks[p].y[k]);
         const auto truthMotion = motionFromPositions(exact, raw);
         const auto fixes = observe(match.t, match.tracks[p], o, rng);
         const auto t0 = std::chrono::steady_clock::now();
@@ -157,16 +170,18 @@ int main(int argc, char** argv) {
         add(smoothedErrors, truth, computePeriod(smoothMotion->series, 0, end, params),
             std::chrono::duration<double>(t2 - t1).count());
     }
-    std::printf("Simulated match: %d players × %.0f s at 10 Hz (seed %llu); truth per player: %.0f m, %.1f sprints, "
-                "%.1f accelerations.\n",
-                players, o.duration, static_cast<unsigned long long>(o.seed), truthDistance, truthSprints, truthAccels);
+    std::printf(
+        "Simulated match: %d players × %.0f s at 10 Hz (seed %llu); truth per player: %.0f m, %.1f sprints, "
+        "%.1f accelerations.\n",
+        players, o.duration, static_cast<unsigned long long>(o.seed), truthDistance, truthSprints, truthAccels);
     if (o.noise == "lps")
         std::printf("Noise: lps, white σ = %.3g m per axis, outliers p = %.3g.\n\n", o.sigma, o.outliers);
     else
         std::printf("Noise: gnss, Gauss–Markov σ = %.3g m, τ = %.3g s, white σ = %.3g m, outliers p = %.3g.\n\n",
                     o.sigmaGm, o.tau, o.sigma, o.outliers);
-    std::printf("| positions | distance error %% | max speed error m/s | HSR error %% | sprints Δ | accelerations Δ | "
-                "decelerations Δ | s per player |\n|---|---|---|---|---|---|---|---|\n");
+    std::printf(
+        "| positions | distance error %% | max speed error m/s | HSR error %% | sprints Δ | accelerations Δ | "
+        "decelerations Δ | s per player |\n|---|---|---|---|---|---|---|---|\n");
     for (int row = 0; row < 2; ++row) {
         const Errors& e = row ? smoothedErrors : rawErrors;
         std::printf("| %s | %s | %s | %s | %s | %s | %s | %s |\n", row ? "smoothed (filter=auto)" : "raw (filter=none)",

@@ -110,9 +110,10 @@ TEST(SessionMetricsProcessor, PlayerLoadFromAnImu) {
     }
     StreamInfo info;
     info.kind = QStringLiteral("imu");
-    info.columns = {{QStringLiteral("acc_x"), QStringLiteral("m/s^2")}, {QStringLiteral("acc_y"), QStringLiteral("m/s^2")},
-                    {QStringLiteral("acc_z"), QStringLiteral("m/s^2")}, {QStringLiteral("gyr_x"), QStringLiteral("rad/s")},
-                    {QStringLiteral("gyr_y"), QStringLiteral("rad/s")}, {QStringLiteral("gyr_z"), QStringLiteral("rad/s")}};
+    info.columns = {
+        {QStringLiteral("acc_x"), QStringLiteral("m/s^2")}, {QStringLiteral("acc_y"), QStringLiteral("m/s^2")},
+        {QStringLiteral("acc_z"), QStringLiteral("m/s^2")}, {QStringLiteral("gyr_x"), QStringLiteral("rad/s")},
+        {QStringLiteral("gyr_y"), QStringLiteral("rad/s")}, {QStringLiteral("gyr_z"), QStringLiteral("rad/s")}};
     p->putStream(QStringLiteral("s/imu"), Stream(info, std::move(d)));
     const auto out = run(*p, QStringLiteral("s/pos,s/imu"), QStringLiteral("s/m"), {{QStringLiteral("window"), 0}});
     ASSERT_TRUE(out.ok()) << out.message().toStdString();
@@ -138,7 +139,9 @@ TEST(SessionMetricsProcessor, RawAndSmoothedOnNoisyFixes) {
     for (std::size_t k = 0; k < d.rows(); ++k) d.at(k, 0) += 0.1 * gauss(), d.at(k, 1) += 0.1 * gauss();
     p->putStream(QStringLiteral("s/gnss"), Stream(noisy.info(), std::move(d)));
     ASSERT_TRUE(run(*p, QStringLiteral("s/gnss"), QStringLiteral("s/smooth")).ok());
-    ASSERT_TRUE(run(*p, QStringLiteral("s/gnss"), QStringLiteral("s/raw"), {{QStringLiteral("filter"), QStringLiteral("none")}}).ok());
+    ASSERT_TRUE(
+        run(*p, QStringLiteral("s/gnss"), QStringLiteral("s/raw"), {{QStringLiteral("filter"), QStringLiteral("none")}})
+            .ok());
     const double smooth = column(*p->table(QStringLiteral("s/smooth")), "distance").numbers[0];
     const double raw = column(*p->table(QStringLiteral("s/raw")), "distance").numbers[0];
     EXPECT_NEAR(smooth, 2700.0, 27.0);
@@ -149,13 +152,16 @@ TEST(SessionMetricsProcessor, RawAndSmoothedOnNoisyFixes) {
 
 TEST(SessionMetricsProcessor, ParameterAndInputErrors) {
     auto p = project();
-    const auto zones = run(*p, QStringLiteral("s/pos"), QStringLiteral("s/m"), {{QStringLiteral("zones"), QStringLiteral("0,14,7")}});
+    const auto zones =
+        run(*p, QStringLiteral("s/pos"), QStringLiteral("s/m"), {{QStringLiteral("zones"), QStringLiteral("0,14,7")}});
     ASSERT_FALSE(zones.ok());
     EXPECT_TRUE(zones.message().contains(QStringLiteral("zones"))) << zones.message().toStdString();
-    const auto peaks = run(*p, QStringLiteral("s/pos"), QStringLiteral("s/m"), {{QStringLiteral("peak_windows"), QStringLiteral("60,abc")}});
+    const auto peaks = run(*p, QStringLiteral("s/pos"), QStringLiteral("s/m"),
+                           {{QStringLiteral("peak_windows"), QStringLiteral("60,abc")}});
     ASSERT_FALSE(peaks.ok());
     EXPECT_TRUE(peaks.message().contains(QStringLiteral("peak_windows")));
-    const auto pattern = run(*p, QStringLiteral("s/pos"), QStringLiteral("s/m"), {{QStringLiteral("period_pattern"), QStringLiteral("(")}});
+    const auto pattern = run(*p, QStringLiteral("s/pos"), QStringLiteral("s/m"),
+                             {{QStringLiteral("period_pattern"), QStringLiteral("(")}});
     ASSERT_FALSE(pattern.ok());
     EXPECT_TRUE(pattern.message().contains(QStringLiteral("period_pattern")));
     // A position stream without x, y.

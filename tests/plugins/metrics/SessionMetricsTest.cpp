@@ -50,7 +50,8 @@ double sprintAccel(double t) { return t < 2 ? 4 : t < 5 ? 0 : t < 7 ? -4 : 0; }
 
 TEST(SessionMetrics, ConstantSpeedRun) {
     // 5 m/s for 60 s: 300 m, all in zone 3 (14.4–19.8 km/h = 4–5.5 m/s), no efforts.
-    const MotionSeries s = straightRun(60, 10, [](double) { return 5.0; }, [](double) { return 0.0; });
+    const MotionSeries s = straightRun(
+        60, 10, [](double) { return 5.0; }, [](double) { return 0.0; });
     const PeriodMetrics m = computePeriod(s, 0, 60, MetricsParams{});
     EXPECT_NEAR(m.distance, 300.0, 1e-9);
     EXPECT_DOUBLE_EQ(m.maxSpeed, 5.0);
@@ -66,7 +67,7 @@ TEST(SessionMetrics, ConstantSpeedRun) {
     EXPECT_NEAR(m.metabolicPowerMean, 23.22, 1e-9);
     EXPECT_NEAR(m.highPowerDistance, 300.0, 1e-9);
     EXPECT_NEAR(m.peakDistance[0], 300.0, 1e-9);  // 1 min window = the whole minute
-    EXPECT_TRUE(std::isnan(m.peakDistance[1]));    // period shorter than 3 min
+    EXPECT_TRUE(std::isnan(m.peakDistance[1]));   // period shorter than 3 min
 }
 
 TEST(SessionMetrics, OneSprintOneAccelerationOneDeceleration) {
@@ -134,14 +135,16 @@ TEST(SessionMetrics, AccelerationEffortsNeedTheirDuration) {
         if (t >= 6.0 && t < 6.6) return -3.2;
         return 0.0;
     };
-    MotionSeries s = straightRun(10, 100, [](double) { return 3.0; }, accel);
+    MotionSeries s = straightRun(
+        10, 100, [](double) { return 3.0; }, accel);
     const PeriodMetrics m = computePeriod(s, 0, 10, MetricsParams{});
     EXPECT_EQ(m.accelerationCount, 1);
     EXPECT_EQ(m.decelerationCount, 1);
 }
 
 TEST(SessionMetrics, OutagesAddNoDistanceAndSplitEfforts) {
-    MotionSeries s = straightRun(20, 10, [](double) { return 7.5; }, [](double) { return 0.0; });
+    MotionSeries s = straightRun(
+        20, 10, [](double) { return 7.5; }, [](double) { return 0.0; });
     // Samples 50..59 (5.0–5.9 s) inside an outage.
     for (std::size_t k = 50; k < 60; ++k) s.valid[k] = 0;
     const PeriodMetrics m = computePeriod(s, 0, 20, MetricsParams{});
