@@ -31,6 +31,7 @@ const char* kUsage =
     "  export <project> <rec/stream> --to <file.csv|file.h5>\n"
     "  pipeline <project> <pipeline.json>        run a list of processor steps\n"
     "  screenshot <project> --view <name> --to <file.png>   render a view offscreen\n"
+    "  report <project> --to <file.pdf> [--recording R] [--csv F]   coach's session report (PDF)\n"
     "  video <project> <recording> <file> [--offset S] | --detach | --info\n"
     "                                            attach a video to a recording\n"
     "  venue <project> --corners \"LAT,LON;…\" | --corners-xy \"X,Y;…\" [--kind football|rugby|rectangle]\n"
@@ -84,6 +85,16 @@ int main(int argc, char** argv) {
         QCoreApplication::setApplicationName(QStringLiteral("Athlos"));
         QStringList args = app.arguments().mid(1);
         return it->second(args);
+    }
+    if (command == u"report") {
+        // The report's plots are widgets: rendered offscreen, with or without a display.
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+        ensureRuntimeDir();
+        previousHandler = qInstallMessageHandler(dropOffscreenNoise);
+        QApplication app(argc, argv);
+        QCoreApplication::setApplicationName(QStringLiteral("Athlos"));
+        athlos::ui::installTranslations(app);
+        return cmdReport(app.arguments().mid(1));
     }
     if (command == u"screenshot") {
         // Rendering is always offscreen: deterministic, and it works without a display (CI).

@@ -62,8 +62,8 @@ void putAnnotations(Project& project, const QString& path, Annotations annotatio
 
 }  // namespace
 
-Expected<RunOutcome> runProcessor(Project& project, const Processor& processor, const RunRequest& request,
-                                  const Progress& progress) {
+Expected<ComputedRun> computeRun(const Project& project, const Processor& processor, const RunRequest& request,
+                                 const Progress& progress) {
     const QString pid = processor.id();
     const auto specs = processor.inputs();
 
@@ -139,18 +139,26 @@ Expected<RunOutcome> runProcessor(Project& project, const Processor& processor, 
         if (Status useful = checkOutputUseful(item, outputPathFor(request.output, item.suffix)); !useful)
             return makeError(QStringLiteral("%1: %2").arg(pid, useful.message()));
 
-    Provenance provenance;
+    ComputedRun computed;
+    computed.output = request.output;
+    computed.produced = std::move(*produced);
+    Provenance& provenance = computed.provenance;
     provenance.processorId = pid;
     provenance.processorVersion = processor.version();
     provenance.parameters = QJsonObject::fromVariantMap(*params);
     provenance.inputs = provenanceInputs;
     provenance.appVersion = appVersion();
     provenance.time = QDateTime::currentDateTimeUtc();
+    progress.report(1.0, QStringLiteral("done"));
+    return computed;
+}
 
+RunOutcome storeRun(Project& project, ComputedRun run) {
+    const Provenance& provenance = run.provenance;
     RunOutcome outcome;
     outcome.parameters = provenance.parameters;
-    for (auto& item : *produced) {
-        const QString path = outputPathFor(request.output, item.suffix);
+    for (auto& item : run.produced) {
+        const QString path = outputPathFor(run.output, item.suffix);
         if (auto* stream = std::get_if<Stream>(&item.item)) {
             stream->info().provenance = provenance;
             project.putStream(path, std::move(*stream));
@@ -164,8 +172,14 @@ Expected<RunOutcome> runProcessor(Project& project, const Processor& processor, 
         }
         outcome.written << path;
     }
-    progress.report(1.0, QStringLiteral("done"));
     return outcome;
+}
+
+Expected<RunOutcome> runProcessor(Project& project, const Processor& processor, const RunRequest& request,
+                                  const Progress& progress) {
+    auto computed = computeRun(project, processor, request, progress);
+    if (!computed) return computed.error();
+    return storeRun(project, std::move(*computed));
 }
 
 Expected<RunOutcome> runProcessor(Project& project, const RunRequest& request, const Progress& progress) {

@@ -28,6 +28,19 @@ struct RunOutcome {
 
 Expected<RunOutcome> runProcessor(Project& project, const Processor& processor, const RunRequest& request,
                                   const Progress& progress = {});
+
+// runProcessor() in two steps, so that independent runs (e.g. one per athlete) can be computed on
+// worker threads against the unchanged project and then stored one after the other on the owning
+// thread. computeRun() only reads the project (thread-safe, samples load lazily under a lock) and
+// returns the checked outputs with their provenance; storeRun() stores them as runProcessor() does.
+struct ComputedRun {
+    QString output;
+    std::vector<ProcessorOutput> produced;
+    Provenance provenance;
+};
+Expected<ComputedRun> computeRun(const Project& project, const Processor& processor, const RunRequest& request,
+                                 const Progress& progress = {});
+RunOutcome storeRun(Project& project, ComputedRun run);
 // Looks the processor up in the registry first.
 Expected<RunOutcome> runProcessor(Project& project, const RunRequest& request, const Progress& progress = {});
 

@@ -60,9 +60,4 @@ Expected<MotionResult> motionFromPositions(const positioning::PositionSamples& f
 // relative error < 1 % for k ≥ 3 at p = 0.99).
 double chiSquareQuantile(double p, double k);
 
-// The chunks of the noise estimate: `count` windows of `duration` seconds spread evenly over the fixes
-// (the whole input when it is shorter than count × duration).
-std::vector<positioning::PositionSamples> noiseChunks(const positioning::PositionSamples& fixes, double duration,
-                                                      int count);
-
 }  // namespace athlos::metrics

@@ -435,7 +435,11 @@ Expected<std::vector<ProcessorOutput>> SessionMetricsProcessor::run(const RunCon
         motion.at(k, 3) = series.accel[k];
         motion.at(k, 4) = series.valid[k];
     }
-    Stream motionStream = outputStream(QStringLiteral("trajectory"), input->info().frame,
+    // GNSS x, y are East-North-Up about the project's origin, whatever the lat/lon frame is called.
+    const QString frame = input->info().kind == QLatin1String("gnss") ? QStringLiteral("ENU") : input->info().frame;
+    if (input->info().attributes.contains(QStringLiteral("enu_origin")))
+        attributes.insert(QStringLiteral("enu_origin"), input->info().attributes.value(QStringLiteral("enu_origin")));
+    Stream motionStream = outputStream(QStringLiteral("trajectory"), frame,
                                        columnsOf({QStringLiteral("x"), QStringLiteral("y"), QStringLiteral("speed"),
                                                   QStringLiteral("accel"), QStringLiteral("valid")},
                                                  {QStringLiteral("m"), QStringLiteral("m"), QStringLiteral("m/s"),

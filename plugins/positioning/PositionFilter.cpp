@@ -269,6 +269,25 @@ PositionFilter::Estimate PositionFilter::estimateNoise(const Params& params, con
     return e;
 }
 
+std::vector<PositionSamples> PositionFilter::noiseChunks(const PositionSamples& fixes, double duration, int count) {
+    const double t0 = fixes.t.front(), t1 = fixes.t.back();
+    if (count <= 0 || !(duration > 0) || (t1 - t0) <= count * duration) return {fixes};
+    std::vector<PositionSamples> chunks;
+    const double spacing = (t1 - t0 - duration) / (count - 1 > 0 ? count - 1 : 1);
+    for (int c = 0; c < count; ++c) {
+        const double a = t0 + c * spacing, b = a + duration;
+        const auto lo = std::lower_bound(fixes.t.begin(), fixes.t.end(), a) - fixes.t.begin();
+        const auto hi = std::upper_bound(fixes.t.begin(), fixes.t.end(), b) - fixes.t.begin();
+        if (hi - lo < 10) continue;
+        PositionSamples chunk;
+        chunk.t.assign(fixes.t.begin() + lo, fixes.t.begin() + hi);
+        chunk.p.assign(fixes.p.begin() + lo, fixes.p.begin() + hi);
+        chunks.push_back(std::move(chunk));
+    }
+    if (chunks.empty()) return {fixes};
+    return chunks;
+}
+
 std::vector<double> PositionFilter::outputGrid(double tBegin, double tEnd, double rate) {
     std::vector<double> grid;
     if (!(rate > 0) || tEnd < tBegin) return grid;

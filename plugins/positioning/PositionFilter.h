@@ -81,6 +81,10 @@ public:
     static Estimate estimateNoise(const Params& params, const std::vector<PositionSamples>& runs,
                                   const estimation::NoiseEstimator::Params& search, const ProgressFn& progress = {});
 
+    // A representative subsample for estimateNoise(): `count` windows of `duration` seconds spread
+    // evenly over the fixes (the whole input when it is shorter than count × duration). The noise of a
+    // device does not change within a session, so a 90-min match needs no 54 000-sample estimate.
+    static std::vector<PositionSamples> noiseChunks(const PositionSamples& fixes, double duration, int count);
     // Uniform grid on multiples of 1/rate covering [tBegin, tEnd].
     static std::vector<double> outputGrid(double tBegin, double tEnd, double rate);
     // Rough measurement variance from the data: MAD of second differences (robust to outliers).

@@ -81,6 +81,11 @@ ParameterSpecs PositionFilterProcessor::parameters() const {
                               QStringLiteral("auto"),
                               tr("auto: estimate Q, R and the gate from the input itself (innovation likelihood, no "
                                  "ground truth); manual: use the q_*, r_* and gate parameters.")),
+        ParameterSpec::integer(QStringLiteral("noise_chunks"), 8, 0, 1000,
+                               tr("noise=auto estimates on this many evenly spread chunks of noise_chunk seconds (a "
+                                  "representative subsample; 0 or a shorter recording: all of it).")),
+        ParameterSpec::number(QStringLiteral("noise_chunk"), 60.0, 5.0, kInf, QStringLiteral("s"),
+                              tr("Length of one chunk of the noise estimate.")),
         ParameterSpec::number(QStringLiteral("q_position"), n.qPosition, 0.0, kInf, QStringLiteral("m^2/s"),
                               tr("Process noise density of the position (manual).")),
         ParameterSpec::number(QStringLiteral("q_speed"), n.qSpeed, 0.0, kInf, QStringLiteral("m^2/s^3"),
@@ -216,10 +221,13 @@ Expected<std::vector<ProcessorOutput>> PositionFilterProcessor::run(const RunCon
     if (autoNoise) {
         const Progress sub = context.progress().sub(0.0, 0.8);
         const auto estimate =
-            PositionFilter::estimateNoise(params, {in}, estimation::NoiseEstimator::Params{}, [&](double f) {
-                sub.report(f, QStringLiteral("estimating noise"));
-                return !context.isCancelled();
-            });
+            PositionFilter::estimateNoise(params,
+                                          PositionFilter::noiseChunks(in, context.number(QStringLiteral("noise_chunk")),
+                                                                      context.integer(QStringLiteral("noise_chunks"))),
+                                          estimation::NoiseEstimator::Params{}, [&](double f) {
+                                              sub.report(f, QStringLiteral("estimating noise"));
+                                              return !context.isCancelled();
+                                          });
         if (estimate.cancelled || context.isCancelled()) return cancelledError();
         params.noise = estimate.noise;
         QJsonObject estimated;

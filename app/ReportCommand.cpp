@@ -1,0 +1,67 @@
+// `athlos report`: the coach's PDF report (ui/report/SessionReport): session metrics computed where
+// missing (both cores), the project saved with them, then the team page and a page per athlete.
+#include "app/CommandParser.h"
+#include "app/Commands.h"
+#include "app/TerminalProgress.h"
+#include "core/io/Exporter.h"
+#include "ui/report/SessionReport.h"
+
+#include <cstdio>
+
+namespace athlos::cli {
+
+namespace {
+int exitCode(const Error& error) { return error.message == u"cancelled" ? Cancelled : Failed; }
+}  // namespace
+
+int cmdReport(const QStringList& args) {
+    CommandParser p(QStringLiteral("report <project> --to report.pdf [--recording R] [--csv team.csv] [--param k=v …]"),
+                    QStringLiteral("Write the coach's session report as a PDF: a team page (table and distance bars) "
+                                   "and a page per athlete (speed over time, zone bars, heat map on the venue, splits, "
+                                   "action counts). session-metrics runs first for every athlete whose metrics are "
+                                   "missing or stale (with the given parameters) and the project is saved with them; "
+                                   "Ctrl-C cancels and leaves the project untouched."));
+    p.addPositional(QStringLiteral("project"), QStringLiteral("The .athlos file."));
+    p.addOption({QStringLiteral("to"), QStringLiteral("The PDF to write."), QStringLiteral("file")});
+    p.addOption({QStringLiteral("recording"),
+                 QStringLiteral("Only this recording (default: every recording with "
+                                "athletes)."),
+                 QStringLiteral("rec")});
+    p.addOption({QStringLiteral("csv"), QStringLiteral("Also write the team table as CSV."), QStringLiteral("file")});
+    p.addOption({QStringLiteral("param"), QStringLiteral("session-metrics parameter for missing metrics, repeatable."),
+                 QStringLiteral("k=v")});
+    if (auto code = p.parse(args, 1, 1)) return *code;
+    const QString pdf = p.parser().value(QStringLiteral("to"));
+    if (pdf.isEmpty()) return fail(QStringLiteral("report needs --to <file.pdf>"), Usage);
+    QVariantMap parameters;
+    for (const QString& kv : p.parser().values(QStringLiteral("param"))) {
+        const int eq = kv.indexOf(QLatin1Char('='));
+        if (eq <= 0) return fail(QStringLiteral("--param '%1': expected name=value").arg(kv), Usage);
+        parameters.insert(kv.left(eq).trimmed(), kv.mid(eq + 1).trimmed());
+    }
+
+    auto project = openForChange(p.positional()[0]);
+    if (!project) return fail(project.message());
+    auto athletes = ui::SessionReport::athletes(**project, p.parser().value(QStringLiteral("recording")));
+    if (!athletes) return fail(athletes.message());
+    TerminalProgress bar(QStringLiteral("report"));
+    auto computed = ui::SessionReport::computeMissing(**project, *athletes, parameters, bar.progress().sub(0.0, 0.75));
+    if (!computed) return fail(computed.message(), exitCode(computed.error()));
+    if (*computed > 0)
+        if (Status s = (*project)->save(bar.progress().sub(0.75, 0.8)); !s)
+            return fail(s.message(), exitCode(s.error()));
+    if (p.parser().isSet(QStringLiteral("csv"))) {
+        auto team = ui::SessionReport::teamTable(**project, *athletes);
+        if (!team) return fail(team.message());
+        if (Status s = exportTableCsv(*team, p.parser().value(QStringLiteral("csv"))); !s) return fail(s.message());
+    }
+    if (Status s = ui::SessionReport::writePdf(**project, *athletes, pdf, bar.progress().sub(0.8, 1.0)); !s)
+        return fail(s.message(), exitCode(s.error()));
+    bar.finish();
+    std::printf("computed session metrics for %d of %lld athletes\nwrote %s (%lld pages)\n", *computed,
+                static_cast<long long>(athletes->size()), qUtf8Printable(pdf),
+                static_cast<long long>(athletes->size() + 1));
+    return Ok;
+}
+
+}  // namespace athlos::cli
