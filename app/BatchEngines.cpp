@@ -54,9 +54,10 @@ std::vector<TaskResult> runLocal(const QString& executable, const QString& pipel
             QStringLiteral("%1/%2 projects, %3 running").arg(finished).arg(projects.size()).arg(running.size()));
     };
     std::function<void()> fill;
-    auto complete = [&](Worker* w, int exitCode, QProcess::ExitStatus status) {
+    auto complete = [&](Worker* w, int exitCode, QProcess::ExitStatus status, const QString& why = {}) {
         TaskResult r =
             taskResultFrom(exitCode, w->process->readAllStandardOutput(), w->process->readAllStandardError());
+        if (!why.isEmpty()) r.reason = why;
         if (cancelled && r.state == TaskResult::State::Failed) r.state = TaskResult::State::Cancelled;
         if (status == QProcess::CrashExit) {
             r.state = cancelled ? TaskResult::State::Cancelled : TaskResult::State::Failed;
@@ -80,13 +81,16 @@ std::vector<TaskResult> runLocal(const QString& executable, const QString& pipel
             Worker* raw = w.get();
             QObject::connect(raw->process.get(), &QProcess::finished, &loop,
                              [&complete, raw](int code, QProcess::ExitStatus status) { complete(raw, code, status); });
-            QObject::connect(raw->process.get(), &QProcess::errorOccurred, &loop,
-                             [&complete, raw](QProcess::ProcessError e) {
-                                 if (e == QProcess::FailedToStart) complete(raw, 127, QProcess::NormalExit);
-                             });
+            QObject::connect(
+                raw->process.get(), &QProcess::errorOccurred, &loop, [&complete, raw](QProcess::ProcessError e) {
+                    if (e == QProcess::FailedToStart)
+                        complete(raw, 127, QProcess::NormalExit,
+                                 QStringLiteral("the worker could not start: %1").arg(raw->process->errorString()));
+                });
             raw->clock.start();
-            raw->process->start(executable, {QStringLiteral("batch-task"), pipelineFile, projects[w->project]});
+            // In the list before start(): a failure to start may be reported from inside start().
             running.push_back(std::move(w));
+            raw->process->start(executable, {QStringLiteral("batch-task"), pipelineFile, projects[raw->project]});
         }
         if (running.empty()) loop.quit();
     };
