@@ -134,6 +134,28 @@ expect_ok "slurm re-run" "$ATHLOS" batch pipe.json slurm/p{1..5}.athlos --engine
 for i in 1 2 3 4 5; do cmp -s "slurm/p$i.athlos" "slurm-after/p$i.athlos" || fail "slurm re-run changed p$i"; done
 [ -e "$WORK/wd2" ] && fail "the work folder of a successful run was not removed"
 
+# Ctrl-C while the array runs: scancel, exit code 130, the project as it was, no task left in the queue.
+expect_ok "new slow" "$ATHLOS" new slow.athlos
+expect_ok "simulate slow" "$ATHLOS" run slow.athlos simulate-track-run --output sim/run --param distance=3000 \
+  --param top_speed=5
+cp slow.athlos slow.copy
+echo '{"steps": [{"processor": "position-filter", "input": "sim/run", "output": "sim/filtered"}]}' > slow.json
+"$ATHLOS" batch slow.json slow.athlos --engine slurm --poll 0.5 --work-dir "$WORK/wd4" > int.out 2> int.err &
+BATCH=$!
+running=""
+for _ in $(seq 100); do
+  running=$(squeue -h -o %T 2>/dev/null | grep -c RUNNING)
+  [ "$running" -gt 0 ] && break
+  sleep 0.2
+done
+sleep 1
+kill -INT "$BATCH"
+wait "$BATCH"; rc=$?
+[ "$rc" = 130 ] || fail "cancelled slurm batch exited $rc: $(cat int.out int.err)"
+cmp -s slow.athlos slow.copy || fail "cancelled slurm batch: the project changed"
+for _ in $(seq 50); do [ -z "$(squeue -h 2>/dev/null)" ] && break; sleep 0.2; done
+[ -z "$(squeue -h 2>/dev/null)" ] || fail "tasks left in the queue after cancelling: $(squeue -h)"
+
 # sbatch refusing the job (an unknown partition) is one line naming sbatch.
 expect_fail "bad partition" "sbatch refused" "$ATHLOS" batch pipe.json slurm/p1.athlos --engine slurm \
   --slurm-args "--partition=nosuchpartition" --work-dir "$WORK/wd3"
