@@ -36,6 +36,8 @@ const char* kUsage =
     "                                            attach a video to a recording\n"
     "  venue <project> --corners \"LAT,LON;…\" | --corners-xy \"X,Y;…\" [--kind football|rugby|rectangle]\n"
     "                                            place a pitch from its 4 corners (no corners: list venues)\n"
+    "  batch <pipeline.json> <project>… [--jobs N] [--engine local|slurm] [--slurm-args '…'] [--summary out.csv]\n"
+    "                                            run a pipeline over many projects (worker processes or Slurm)\n"
     "\n"
     "Every command has --help. Exit code 0 on success, non-zero with a one-line reason otherwise.\n";
 
@@ -63,11 +65,17 @@ void dropOffscreenNoise(QtMsgType type, const QMessageLogContext& context, const
 int main(int argc, char** argv) {
     using namespace athlos::cli;
     const std::map<QString, std::function<int(const QStringList&)>> headless = {
-        {QStringLiteral("new"), cmdNew},           {QStringLiteral("import"), cmdImport},
-        {QStringLiteral("info"), cmdInfo},         {QStringLiteral("processors"), cmdProcessors},
-        {QStringLiteral("run"), cmdRun},           {QStringLiteral("export"), cmdExport},
-        {QStringLiteral("pipeline"), cmdPipeline}, {QStringLiteral("video"), cmdVideo},
+        {QStringLiteral("new"), cmdNew},
+        {QStringLiteral("import"), cmdImport},
+        {QStringLiteral("info"), cmdInfo},
+        {QStringLiteral("processors"), cmdProcessors},
+        {QStringLiteral("run"), cmdRun},
+        {QStringLiteral("export"), cmdExport},
+        {QStringLiteral("pipeline"), cmdPipeline},
+        {QStringLiteral("video"), cmdVideo},
         {QStringLiteral("venue"), cmdVenue},
+        {QStringLiteral("batch"), cmdBatch},
+        {QStringLiteral("batch-task"), cmdBatchTask},
     };
     const QString command = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QString();
 

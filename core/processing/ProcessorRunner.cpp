@@ -16,7 +16,6 @@
 #include <utility>
 
 namespace athlos {
-namespace {
 
 QByteArray tableHash(const Table& table) {
     QCryptographicHash hash(QCryptographicHash::Sha256);
@@ -35,6 +34,22 @@ QByteArray tableHash(const Table& table) {
 QString outputPathFor(const QString& output, const QString& suffix) {
     return suffix.isEmpty() ? output : output + QLatin1Char('-') + suffix;
 }
+
+RunRequest pipelineStepRequest(const QJsonObject& step) {
+    RunRequest request;
+    request.processorId = step.value(QStringLiteral("processor")).toString();
+    const QJsonValue input = step.value(QStringLiteral("input"));
+    if (input.isArray()) {
+        for (const auto& v : input.toArray()) request.inputs << v.toString();
+    } else {
+        request.inputs = input.toString().split(QLatin1Char(','), Qt::SkipEmptyParts);
+    }
+    request.output = step.value(QStringLiteral("output")).toString();
+    request.parameters = step.value(QStringLiteral("params")).toObject().toVariantMap();
+    return request;
+}
+
+namespace {
 
 // An item a run may replace; imported data is never overwritten by a processor result.
 bool isImported(const Provenance& p) { return p.processorId.startsWith(QLatin1String("import:")); }
@@ -242,16 +257,7 @@ Expected<QStringList> runPipeline(Project& project, const QJsonObject& pipeline,
             restore(project, snapshots, wasModified);
             return makeError(QStringLiteral("pipeline step %1: %2").arg(i + 1).arg(message));
         };
-        RunRequest request;
-        request.processorId = step.value(QStringLiteral("processor")).toString();
-        const QJsonValue input = step.value(QStringLiteral("input"));
-        if (input.isArray()) {
-            for (const auto& v : input.toArray()) request.inputs << v.toString();
-        } else {
-            request.inputs = input.toString().split(QLatin1Char(','), Qt::SkipEmptyParts);
-        }
-        request.output = step.value(QStringLiteral("output")).toString();
-        request.parameters = step.value(QStringLiteral("params")).toObject().toVariantMap();
+        const RunRequest request = pipelineStepRequest(step);
         if (request.processorId.isEmpty()) return fail(QStringLiteral("missing \"processor\""));
 
         auto processor = ProcessorRegistry::instance().find(request.processorId);

@@ -48,6 +48,12 @@ Expected<RunOutcome> runProcessor(Project& project, const RunRequest& request, c
 // "output", "params": {k: v}}, ...]}. Steps run in order; any failure leaves the project unchanged.
 // The pipeline (with timestamps and outputs) is appended to the project's pipeline history.
 Expected<QStringList> runPipeline(Project& project, const QJsonObject& pipeline, const Progress& progress = {});
+// The run request of one pipeline step ({"processor", "input" (string or array), "output", "params"}).
+RunRequest pipelineStepRequest(const QJsonObject& step);
+// Where an output with the given suffix is stored: "<output>" or "<output>-<suffix>".
+QString outputPathFor(const QString& output, const QString& suffix);
+// The content hash recorded in provenance for a table input (SHA-256 over names and values, hex).
+QByteArray tableHash(const Table& table);
 // Parses a pipeline file, naming the file and the JSON error offset on failure.
 Expected<QJsonObject> readPipelineFile(const QString& path);
 
