@@ -21,6 +21,7 @@ int cmdPipeline(const QStringList& args);
 int cmdScreenshot(const QStringList& args);
 int cmdVenue(const QStringList& args);
 int cmdReport(const QStringList& args);
+int cmdHistory(const QStringList& args);
 int cmdBatch(const QStringList& args);
 // The per-project worker of batch (not listed in --help).
 int cmdBatchTask(const QStringList& args);

@@ -32,6 +32,7 @@ const char* kUsage =
     "  pipeline <project> <pipeline.json>        run a list of processor steps\n"
     "  screenshot <project> --view <name> --to <file.png>   render a view offscreen\n"
     "  report <project> --to <file.pdf> [--recording R] [--csv F]   coach's session report (PDF)\n"
+    "  history <project>… --to <file.csv> [--athlete A]   sessions against a rolling 4-week baseline, flags\n"
     "  video <project> <recording> <file> [--offset S] | --detach | --info\n"
     "                                            attach a video to a recording\n"
     "  venue <project> --corners \"LAT,LON;…\" | --corners-xy \"X,Y;…\" [--kind football|rugby|rectangle]\n"
@@ -65,17 +66,12 @@ void dropOffscreenNoise(QtMsgType type, const QMessageLogContext& context, const
 int main(int argc, char** argv) {
     using namespace athlos::cli;
     const std::map<QString, std::function<int(const QStringList&)>> headless = {
-        {QStringLiteral("new"), cmdNew},
-        {QStringLiteral("import"), cmdImport},
-        {QStringLiteral("info"), cmdInfo},
-        {QStringLiteral("processors"), cmdProcessors},
-        {QStringLiteral("run"), cmdRun},
-        {QStringLiteral("export"), cmdExport},
-        {QStringLiteral("pipeline"), cmdPipeline},
-        {QStringLiteral("video"), cmdVideo},
-        {QStringLiteral("venue"), cmdVenue},
-        {QStringLiteral("batch"), cmdBatch},
-        {QStringLiteral("batch-task"), cmdBatchTask},
+        {QStringLiteral("new"), cmdNew},           {QStringLiteral("import"), cmdImport},
+        {QStringLiteral("info"), cmdInfo},         {QStringLiteral("processors"), cmdProcessors},
+        {QStringLiteral("run"), cmdRun},           {QStringLiteral("export"), cmdExport},
+        {QStringLiteral("pipeline"), cmdPipeline}, {QStringLiteral("video"), cmdVideo},
+        {QStringLiteral("venue"), cmdVenue},       {QStringLiteral("batch"), cmdBatch},
+        {QStringLiteral("history"), cmdHistory},   {QStringLiteral("batch-task"), cmdBatchTask},
     };
     const QString command = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QString();
 
