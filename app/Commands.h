@@ -20,6 +20,7 @@ int cmdExport(const QStringList& args);
 int cmdPipeline(const QStringList& args);
 int cmdScreenshot(const QStringList& args);
 int cmdVenue(const QStringList& args);
+int cmdTrain(const QStringList& args);
 
 // Prints "athlos: <message>" on stderr and returns code.
 int fail(const QString& message, int code = Failed);

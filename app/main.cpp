@@ -30,6 +30,8 @@ const char* kUsage =
     "  run <project> <processor> --input <rec/stream>[,…] --output <rec/stream> [--param k=v …]\n"
     "  export <project> <rec/stream> --to <file.csv|file.h5>\n"
     "  pipeline <project> <pipeline.json>        run a list of processor steps\n"
+    "  train <project> --model NAME --input STREAM [--window S --step S --classifier C --cv SCHEME]\n"
+    "                                            train an activity classifier from annotated recordings\n"
     "  screenshot <project> --view <name> --to <file.png>   render a view offscreen\n"
     "  video <project> <recording> <file> [--offset S] | --detach | --info\n"
     "                                            attach a video to a recording\n"
@@ -66,7 +68,7 @@ int main(int argc, char** argv) {
         {QStringLiteral("info"), cmdInfo},         {QStringLiteral("processors"), cmdProcessors},
         {QStringLiteral("run"), cmdRun},           {QStringLiteral("export"), cmdExport},
         {QStringLiteral("pipeline"), cmdPipeline}, {QStringLiteral("video"), cmdVideo},
-        {QStringLiteral("venue"), cmdVenue},
+        {QStringLiteral("venue"), cmdVenue},       {QStringLiteral("train"), cmdTrain},
     };
     const QString command = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QString();
 
