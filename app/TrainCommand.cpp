@@ -12,6 +12,7 @@
 #include <QDateTime>
 #include <QJsonArray>
 #include <cstdio>
+#include <set>
 
 namespace athlos::cli {
 
@@ -56,16 +57,19 @@ int cmdTrain(const QStringList& args) {
                  QStringLiteral("--classifier vote: members and weights (default "
                                 "random-forest,svm,knn, equal weights)."),
                  QStringLiteral("C[:W],…")});
-    p.addOption({QStringLiteral("cv"),
-                 QStringLiteral("Cross-validation: leave-one-athlete-out (default; athlete from the recording's "
-                                "metadata, else its name), leave-one-recording-out, k-fold or none."),
-                 QStringLiteral("SCHEME"), QStringLiteral("leave-one-athlete-out")});
+    p.addOption(
+        {QStringLiteral("cv"),
+         QStringLiteral(
+             "Cross-validation: leave-one-athlete-out (default; athlete from the recording's "
+             "metadata, else its name), leave-one-recording-out (more than 10 subjects: dealt into 10 folds, a subject "
+             "never in its own training fold), k-fold or none."),
+         QStringLiteral("SCHEME"), QStringLiteral("leave-one-athlete-out")});
     p.addOption({QStringLiteral("folds"), QStringLiteral("Folds of --cv k-fold (default 5)."), QStringLiteral("K"),
                  QStringLiteral("5")});
     p.addOption({QStringLiteral("sensors"), QStringLiteral("Sensors the features use (default acc,gyr; acc needed)."),
                  QStringLiteral("acc,gyr,mag"), QStringLiteral("acc,gyr")});
-    p.addOption({QStringLiteral("trees"), QStringLiteral("Trees of the random forest (default 150)."),
-                 QStringLiteral("N"), QStringLiteral("150")});
+    p.addOption({QStringLiteral("trees"), QStringLiteral("Trees of the random forest (default 100)."),
+                 QStringLiteral("N"), QStringLiteral("100")});
     p.addOption({QStringLiteral("min-label-fraction"),
                  QStringLiteral("Share of a window its label must cover to be trained on (default 0.5)."),
                  QStringLiteral("F"), QStringLiteral("0.5")});
@@ -137,8 +141,9 @@ int cmdTrain(const QStringList& args) {
         auto evaluation = crossValidate(*dataset, *groups, options, progress.sub(0.2, 0.85));
         if (!evaluation) return fail(evaluation.message(), evaluation.message() == u"cancelled" ? Cancelled : Failed);
         bar.finish();
-        std::printf("cross-validation (%s, %s):\n%s", qUtf8Printable(options.validation),
-                    qUtf8Printable(options.classifier.kind), qUtf8Printable(evaluation->toText()));
+        const auto folds = std::set<int>(groups->begin(), groups->end()).size();
+        std::printf("cross-validation (%s, %s, %zu folds):\n%s", qUtf8Printable(options.validation),
+                    qUtf8Printable(options.classifier.kind), folds, qUtf8Printable(evaluation->toText()));
         validation = evaluation->toJson();
         validation[QStringLiteral("scheme")] = options.validation;
         if (options.validation == u"k-fold") validation[QStringLiteral("folds")] = options.folds;

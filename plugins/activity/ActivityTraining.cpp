@@ -200,10 +200,15 @@ Expected<std::vector<int>> foldGroups(const Dataset& dataset, const std::vector<
     } else if (scheme == QLatin1String("k-fold")) {
         if (options.folds < 2) return makeError(QStringLiteral("--folds must be at least 2"));
         for (std::size_t i = 0; i < groups.size(); ++i) groups[i] = dataset.source[i] % options.folds;
+        return groups;
     } else {
         return makeError(
             QStringLiteral("--cv '%1': use leave-one-athlete-out, leave-one-recording-out or k-fold").arg(scheme));
     }
+    // More subjects than maxGroups: whole subjects (recordings) dealt into maxGroups folds, so that
+    // 50 people do not mean 50 trainings; a subject is still never in its own training fold.
+    if (options.maxGroups > 1)
+        for (int& g : groups) g %= options.maxGroups;
     return groups;
 }
 

@@ -33,6 +33,7 @@ struct TrainingOptions {
     ClassifierOptions classifier;
     QString validation = QStringLiteral("leave-one-athlete-out");  // or leave-one-recording-out, k-fold, none
     int folds = 5;
+    int maxGroups = 10;  // leave-one-*-out with more subjects: subjects dealt into this many folds
 };
 
 struct Dataset {

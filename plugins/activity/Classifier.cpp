@@ -10,16 +10,26 @@ namespace athlos::activity {
 namespace {
 using namespace cv::ml;
 
-// Row indices with every class oversampled (drawn with replacement) to the size of the largest.
+// Row indices with every class resampled to one size: the largest class's, but at most 2N/K (so a
+// dominant class does not multiply the training set): smaller classes are oversampled (drawn with
+// replacement), larger ones subsampled.
 std::vector<int> balancedRows(const std::vector<int>& labels, int classCount, unsigned seed) {
     std::vector<std::vector<int>> byClass(std::size_t(std::max(classCount, 1)));
     for (std::size_t i = 0; i < labels.size(); ++i) byClass[std::size_t(labels[i])].push_back(int(i));
-    std::size_t largest = 0;
-    for (const auto& rows : byClass) largest = std::max(largest, rows.size());
+    std::size_t largest = 0, present = 0;
+    for (const auto& rows : byClass) {
+        largest = std::max(largest, rows.size());
+        present += !rows.empty();
+    }
+    largest = std::min(largest, std::max<std::size_t>(1, 2 * labels.size() / std::max<std::size_t>(present, 1)));
     std::mt19937 rng(seed);
     std::vector<int> rows;
-    for (const auto& members : byClass) {
+    for (auto members : byClass) {
         if (members.empty()) continue;
+        if (members.size() > largest) {
+            std::shuffle(members.begin(), members.end(), rng);
+            members.resize(largest);
+        }
         rows.insert(rows.end(), members.begin(), members.end());
         std::uniform_int_distribution<std::size_t> pick(0, members.size() - 1);
         for (std::size_t k = members.size(); k < largest; ++k) rows.push_back(members[pick(rng)]);

@@ -61,7 +61,7 @@ for person in 101 102; do
 done
 expect_ok "train" "$ATHLOS" train "$P" --model m --input imu --window 3 --step 1.5
 grep -q "from 5 recordings" "$WORK/out" || fail "train used other recordings: $(head -1 "$WORK/out")"
-grep -q "cross-validation (leave-one-athlete-out, random-forest)" "$WORK/out" || fail "no cross-validation: $(cat "$WORK/out")"
+grep -q "cross-validation (leave-one-athlete-out, random-forest, 5 folds)" "$WORK/out" || fail "no cross-validation: $(cat "$WORK/out")"
 grep -q "confusion (rows: annotated, columns: predicted)" "$WORK/out" || fail "no confusion matrix"
 grep -qE "^stored model 'm' \(random-forest, 7 classes" "$WORK/out" || fail "model not stored: $(tail -1 "$WORK/out")"
 cv=$(awk '/^balanced accuracy/ {print $3; exit}' "$WORK/out" | tr -d ,)
