@@ -190,13 +190,13 @@ Expected<Classifier> Classifier::train(const cv::Mat& samples, const std::vector
         }
         auto model = makeModel(options.kind, options, x.rows);
         if (options.kind == QLatin1String("svm")) {
-            // Grid search (C, gamma) by 3-fold cross-validation on at most 1500 windows, then the
+            // Grid search (C, gamma) by 3-fold cross-validation on at most 1000 windows, then the
             // chosen parameters on all of them (trainAuto on everything is quadratic and slow).
             auto svm = model.dynamicCast<SVM>();
             std::vector<int> subset(std::size_t(x.rows));
             std::iota(subset.begin(), subset.end(), 0);
             std::shuffle(subset.begin(), subset.end(), std::mt19937(options.seed));
-            subset.resize(std::min<std::size_t>(subset.size(), 1500));
+            subset.resize(std::min<std::size_t>(subset.size(), 1000));
             svm->trainAuto(TrainData::create(selectRows(x, subset), ROW_SAMPLE, labelColumn(y, subset)), 3);
             svm->train(TrainData::create(x, ROW_SAMPLE, y));
         } else if (options.kind == QLatin1String("mlp")) {

@@ -9,9 +9,14 @@ namespace athlos::activity {
 
 namespace {
 // Per-channel statistics, in the order of Table 5.1 of the thesis.
-const char* const kStatistics[] = {"median",  "mean", "sd",  "skewness", "kurtosis", "dom_freq",
-                                   "dom_amp", "max",  "min", "argmax",   "argmin",   "energy"};
-constexpr int kStatisticCount = 12;
+// Then percentiles and the share of the spectral energy in four bands (0.3–1, 1–3, 3–6, 6–12 Hz: posture
+// drift, gait, running and impacts): shape and rhythm independent of a person's movement amplitude.
+const char* const kStatistics[] = {"median", "mean", "sd",     "skewness",   "kurtosis", "dom_freq", "dom_amp",
+                                   "max",    "min",  "argmax", "argmin",     "energy",   "p10",      "p25",
+                                   "p75",    "p90",  "iqr",    "band_0.3_1", "band_1_3", "band_3_6", "band_6_12"};
+constexpr int kStatisticCount = 21;
+constexpr double kBandEdges[] = {0.3, 1.0, 3.0, 6.0, 12.0};
+constexpr int kBands = 4;
 
 // Channels of a sensor beyond x, y, z, norm.
 int extraChannels(const QString& sensor) {
@@ -156,18 +161,13 @@ void FeatureExtractor::compute(const StreamData& data, std::size_t begin, std::s
             const cv::Vec2d* bin = spectrum_.ptr<cv::Vec2d>(channel);
             for (std::size_t k = 0; k < bins; ++k) magnitude_[k] = std::hypot(bin[k][0], bin[k][1]);
             const Dominant d = dominantFromSpectrum(magnitude_.data(), bins, std::size_t(length), n, rate);
-            const double values[kStatisticCount] = {median(x, n, scratch_.data()),
-                                                    m.mean,
-                                                    m.sd,
-                                                    m.skewness,
-                                                    m.kurtosis,
-                                                    d.frequency,
-                                                    d.amplitude,
-                                                    e.max,
-                                                    e.min,
-                                                    e.argmax,
-                                                    e.argmin,
-                                                    m.energy};
+            const Quantiles q = quantiles(x, n, scratch_.data());
+            double shares[kBands];
+            bandShares(magnitude_.data(), bins, std::size_t(length), rate, kBandEdges, kBands, shares);
+            const double values[kStatisticCount] = {
+                q.p50, m.mean, m.sd,          m.skewness, m.kurtosis, d.frequency, d.amplitude,
+                e.max, e.min,  e.argmax,      e.argmin,   m.energy,   q.p10,       q.p25,
+                q.p75, q.p90,  q.p75 - q.p25, shares[0],  shares[1],  shares[2],   shares[3]};
             for (double v : values) *o++ = std::isfinite(v) ? float(v) : 0.0f;
         }
         const double* base = channels_.data() + std::size_t(channel - count) * n;

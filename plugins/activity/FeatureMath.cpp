@@ -65,6 +65,48 @@ double median(const double* x, std::size_t n, double* scratch) {
     return 0.5 * (upper + *std::max_element(scratch, scratch + mid));
 }
 
+Quantiles quantiles(const double* x, std::size_t n, double* scratch) {
+    Quantiles q;
+    if (n == 0) return q;
+    std::copy(x, x + n, scratch);
+    const auto at = [&](double p) { return std::size_t(std::floor(p * double(n - 1))); };
+    if (n < 8) {  // the nested partial sorts below need i10 ≤ i25 ≤ i50 ≤ i75 ≤ i90
+        std::sort(scratch, scratch + n);
+        const std::size_t mid = n / 2;
+        return {scratch[at(0.10)], scratch[at(0.25)], n % 2 ? scratch[mid] : 0.5 * (scratch[mid - 1] + scratch[mid]),
+                scratch[at(0.75)], scratch[at(0.90)]};
+    }
+    const std::size_t i10 = at(0.10), i25 = at(0.25), i50 = n / 2, i75 = at(0.75), i90 = at(0.90);
+    // Each partial sort works inside the part the previous one left (O(n) in all); a value is read
+    // before a later partial sort of its part may move it.
+    std::nth_element(scratch, scratch + i50, scratch + n);
+    q.p50 = n % 2 ? scratch[i50] : 0.5 * (scratch[i50] + *std::max_element(scratch, scratch + i50));
+    std::nth_element(scratch, scratch + i25, scratch + i50);
+    q.p25 = scratch[i25];
+    std::nth_element(scratch, scratch + i10, scratch + i25);
+    q.p10 = scratch[i10];
+    std::nth_element(scratch + i50, scratch + i75, scratch + n);
+    q.p75 = scratch[i75];
+    std::nth_element(scratch + i75, scratch + i90, scratch + n);
+    q.p90 = scratch[i90];
+    return q;
+}
+
+void bandShares(const double* magnitude, std::size_t bins, std::size_t length, double rate, const double* edges,
+                int bands, double* out) {
+    std::fill(out, out + bands, 0.0);
+    double total = 0;
+    for (std::size_t k = 1; k < bins; ++k) {
+        const double power = magnitude[k] * magnitude[k];
+        total += power;
+        const double f = double(k) * rate / double(length);
+        for (int b = 0; b < bands; ++b)
+            if (f >= edges[b] && f < edges[b + 1]) out[b] += power;
+    }
+    if (total > 0)
+        for (int b = 0; b < bands; ++b) out[b] /= total;
+}
+
 double correlation(const double* x, const double* y, std::size_t n) {
     if (n < 2) return 0.0;
     double mx = 0, my = 0;

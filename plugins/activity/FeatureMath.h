@@ -23,6 +23,17 @@ Extremes extremes(const double* x, std::size_t n);
 // Median of x (sorts `scratch`, which must hold n values; x is left as it is).
 double median(const double* x, std::size_t n, double* scratch);
 
+struct Quantiles {
+    double p10 = 0, p25 = 0, p50 = 0, p75 = 0, p90 = 0;  // order statistics at ⌊q (n − 1)⌋ (p50: the median)
+};
+// Quantiles of x by partial sorts of `scratch` (n values; x is left as it is).
+Quantiles quantiles(const double* x, std::size_t n, double* scratch);
+
+// Share of the spectral energy (|X_k|², k ≥ 1) in [lo, hi) Hz for each of `bands` bands given as
+// edges[0..bands]; out[b] in 0..1 (0 for a constant signal).
+void bandShares(const double* magnitude, std::size_t bins, std::size_t length, double rate, const double* edges,
+                int bands, double* out);
+
 // Pearson correlation of x and y; 0 when either is constant.
 double correlation(const double* x, const double* y, std::size_t n);
 

@@ -69,3 +69,37 @@ TEST(FeatureMathTest, Correlation) {
     const double negative[] = {-1, -2, -3};
     EXPECT_NEAR(correlation(x, negative, 3), -1.0, 1e-12);
 }
+
+TEST(FeatureMathTest, QuantilesAndBandShares) {
+    // 0, 1, …, 20 shuffled: ⌊q·20⌋ → p10 = 2, p25 = 5, p50 = 10, p75 = 15, p90 = 18.
+    const double x[] = {7, 19, 0, 12, 3, 15, 9, 20, 1, 11, 5, 17, 2, 14, 8, 18, 4, 13, 6, 16, 10};
+    double scratch[21];
+    const Quantiles q = quantiles(x, 21, scratch);
+    EXPECT_EQ(q.p10, 2.0);
+    EXPECT_EQ(q.p25, 5.0);
+    EXPECT_EQ(q.p50, 10.0);
+    EXPECT_EQ(q.p75, 15.0);
+    EXPECT_EQ(q.p90, 18.0);
+    // Spectrum of length 100 at 50 Hz (bins 0.5 Hz apart): power 1 at 2 Hz (bin 4), 3 at 5 Hz (bin 10).
+    std::vector<double> magnitude(51, 0.0);
+    magnitude[4] = 1.0;
+    magnitude[10] = std::sqrt(3.0);
+    const double edges[] = {0.3, 1.0, 3.0, 6.0, 12.0};
+    double shares[4];
+    bandShares(magnitude.data(), magnitude.size(), 100, 50.0, edges, 4, shares);
+    EXPECT_DOUBLE_EQ(shares[0], 0.0);
+    EXPECT_DOUBLE_EQ(shares[1], 0.25);
+    EXPECT_DOUBLE_EQ(shares[2], 0.75);
+    EXPECT_DOUBLE_EQ(shares[3], 0.0);
+}
+
+TEST(FeatureMathTest, QuantilesOfShortWindows) {
+    const double x[] = {3, 1, 2};
+    double scratch[3];
+    const Quantiles q = quantiles(x, 3, scratch);  // ⌊q·2⌋: p10 = p25 = 1, p75 = p90 = 2 (indices 0 and 1)
+    EXPECT_EQ(q.p10, 1.0);
+    EXPECT_EQ(q.p25, 1.0);
+    EXPECT_EQ(q.p50, 2.0);
+    EXPECT_EQ(q.p75, 2.0);
+    EXPECT_EQ(q.p90, 2.0);
+}
