@@ -25,6 +25,7 @@ int cmdHistory(const QStringList& args);
 int cmdBatch(const QStringList& args);
 // The per-project worker of batch (not listed in --help).
 int cmdBatchTask(const QStringList& args);
+int cmdTrain(const QStringList& args);
 
 // Prints "athlos: <message>" on stderr and returns code.
 int fail(const QString& message, int code = Failed);

@@ -76,6 +76,17 @@ QJsonObject tableJson(const QString& rec, const Table& t) {
     return json;
 }
 
+// Models without their definitions (which can be MBs of OpenCV text).
+QJsonArray modelsJson(const Project& project) {
+    QJsonArray models;
+    for (const auto& [name, model] : project.models())
+        models.append(QJsonObject{{QStringLiteral("name"), name},
+                                  {QStringLiteral("format"), model.format},
+                                  {QStringLiteral("bytes"), double(model.definition.size())},
+                                  {QStringLiteral("description"), model.description}});
+    return models;
+}
+
 QJsonObject projectJson(const Project& project) {
     const auto& m = project.meta();
     QJsonArray recordings;
@@ -100,7 +111,8 @@ QJsonObject projectJson(const Project& project) {
             {QStringLiteral("recordings"), recordings},
             {QStringLiteral("geometry"), geometry},
             {QStringLiteral("annotation_classes"), QJsonArray::fromStringList(project.annotationClasses())},
-            {QStringLiteral("pipelines"), project.pipelineHistory()}};
+            {QStringLiteral("pipelines"), project.pipelineHistory()},
+            {QStringLiteral("models"), modelsJson(project)}};
 }
 
 void printText(const Project& project) {
@@ -133,6 +145,21 @@ void printText(const Project& project) {
     }
     if (!project.pipelineHistory().isEmpty())
         std::printf("%lld pipeline run(s) recorded\n", qlonglong(project.pipelineHistory().size()));
+    for (const auto& [name, model] : project.models()) {
+        const QJsonObject& d = model.description;
+        QStringList classes;
+        for (const auto& c : d.value(QStringLiteral("classes")).toArray()) classes << c.toString();
+        const QJsonObject cv = d.value(QStringLiteral("cross_validation")).toObject();
+        std::printf("model %s: %s on %s, %lld classes (%s), %.1f kB", qUtf8Printable(name),
+                    qUtf8Printable(d.value(QStringLiteral("classifier")).toString(model.format)),
+                    qUtf8Printable(d.value(QStringLiteral("input")).toString()), qlonglong(classes.size()),
+                    qUtf8Printable(classes.join(QStringLiteral(", "))), double(model.definition.size()) / 1e3);
+        if (cv.contains(QStringLiteral("balanced_accuracy")))
+            std::printf(", cross-validated balanced accuracy %.3f (%s)",
+                        cv.value(QStringLiteral("balanced_accuracy")).toDouble(),
+                        qUtf8Printable(cv.value(QStringLiteral("scheme")).toString()));
+        std::printf("\n");
+    }
 }
 
 }  // namespace

@@ -30,6 +30,8 @@ const char* kUsage =
     "  run <project> <processor> --input <rec/stream>[,…] --output <rec/stream> [--param k=v …]\n"
     "  export <project> <rec/stream> --to <file.csv|file.h5>\n"
     "  pipeline <project> <pipeline.json>        run a list of processor steps\n"
+    "  train <project> --model NAME --input STREAM [--window S --step S --classifier C --cv SCHEME]\n"
+    "                                            train an activity classifier from annotated recordings\n"
     "  screenshot <project> --view <name> --to <file.png>   render a view offscreen\n"
     "  report <project> --to <file.pdf> [--recording R] [--csv F]   coach's session report (PDF)\n"
     "  history <project>… --to <file.csv> [--athlete A]   sessions against a rolling 4-week baseline, flags\n"
@@ -72,6 +74,7 @@ int main(int argc, char** argv) {
         {QStringLiteral("pipeline"), cmdPipeline}, {QStringLiteral("video"), cmdVideo},
         {QStringLiteral("venue"), cmdVenue},       {QStringLiteral("batch"), cmdBatch},
         {QStringLiteral("history"), cmdHistory},   {QStringLiteral("batch-task"), cmdBatchTask},
+        {QStringLiteral("train"), cmdTrain},
     };
     const QString command = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QString();
 

@@ -162,6 +162,11 @@ const Recording* Project::recording(const QString& name) const {
     return it == recordings_.end() ? nullptr : &it->second;
 }
 
+const TrainedModel* Project::model(const QString& name) const {
+    auto it = models_.find(name);
+    return it == models_.end() ? nullptr : &it->second;
+}
+
 Recording& Project::ensureRecording(const QString& name) {
     auto& rec = recordings_[name];
     if (rec.name.isEmpty()) {

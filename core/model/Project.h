@@ -6,6 +6,7 @@
 // renames it over (atomic). A failed or cancelled operation therefore never touches the file:
 // callers simply do not save.
 #include "core/model/Recording.h"
+#include "core/model/TrainedModel.h"
 #include "core/util/Expected.h"
 #include "core/util/Progress.h"
 
@@ -108,6 +109,12 @@ public:
     QJsonArray& pipelineHistory() { return pipelineHistory_; }
     const QJsonArray& pipelineHistory() const { return pipelineHistory_; }
 
+    // Trained models (e.g. activity classifiers), by name; always in memory (bounded in size by
+    // TrainedModel::kMaxDefinitionBytes), saved with the project.
+    std::map<QString, TrainedModel>& models() { return models_; }
+    const std::map<QString, TrainedModel>& models() const { return models_; }
+    const TrainedModel* model(const QString& name) const;
+
     // Internal: used by the file store.
     std::map<QString, Recording>& recordings() { return recordings_; }
     const std::map<QString, Recording>& recordings() const { return recordings_; }
@@ -121,6 +128,7 @@ private:
     std::map<QString, QJsonObject> geometry_;
     QStringList annotationClasses_;
     QJsonArray pipelineHistory_;
+    std::map<QString, TrainedModel> models_;
     bool modified_ = false;
     std::unique_ptr<ProjectLock> lock_;
     QStringList notes_;

@@ -471,6 +471,40 @@ void writeTextColumn(hid_t parent, const QString& name, const QStringList& value
               QStringLiteral("cannot write ") + childPath(parent, name));
 }
 
+void writeText(hid_t parent, const QString& name, const QByteArray& text) {
+    Handle type = fixedStringType(std::max<std::size_t>(1, std::size_t(text.size())));
+    Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+    if (!space.valid()) fail(QStringLiteral("cannot create a dataspace for ") + childPath(parent, name));
+    Handle dataset(H5Dcreate2(parent, name.toUtf8().constData(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                   H5Dclose);
+    if (!dataset.valid()) fail(QStringLiteral("cannot create ") + childPath(parent, name));
+    QByteArray padded = text;
+    if (padded.isEmpty()) padded.append('\0');
+    check(H5Dwrite(dataset, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, padded.constData()),
+          QStringLiteral("cannot write ") + childPath(parent, name));
+}
+
+QByteArray readText(hid_t parent, const QString& name, long long maxBytes) {
+    Handle dataset = openDataset(parent, name);
+    Handle fileType(H5Dget_type(dataset), H5Tclose);
+    if (!extent(dataset).empty() || H5Tget_class(fileType) != H5T_STRING || H5Tis_variable_str(fileType) > 0)
+        throw Failure{childPath(parent, name) + QStringLiteral(" is not a scalar fixed-length text dataset")};
+    const std::size_t width = H5Tget_size(fileType);
+    if (static_cast<long double>(width) > static_cast<long double>(maxBytes))
+        throw Failure{QStringLiteral("%1 holds %2 bytes, more than the limit of %3 bytes")
+                          .arg(childPath(parent, name))
+                          .arg(qulonglong(width))
+                          .arg(maxBytes)};
+    QByteArray data(qsizetype(checkedBytes(dataset, 1, width, isCompressed(dataset), childPath(parent, name))),
+                    Qt::Uninitialized);
+    Handle memType(H5Tcopy(fileType), H5Tclose);
+    check(H5Dread(dataset, memType, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()),
+          QStringLiteral("cannot read ") + childPath(parent, name));
+    const qsizetype end = data.indexOf('\0');
+    if (end >= 0) data.truncate(end);
+    return data;
+}
+
 std::vector<double> readNumberColumn(hid_t parent, const QString& name) {
     Handle dataset = openDataset(parent, name);
     const auto dims = extent(dataset);

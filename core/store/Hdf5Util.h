@@ -7,6 +7,7 @@
 
 #include <hdf5.h>
 
+#include <QByteArray>
 #include <QJsonArray>
 #include <QJsonObject>
 #include <QString>
@@ -97,6 +98,10 @@ QJsonArray readJsonArray(hid_t object, const char* name);    // [] if the attrib
 void writeNumberColumn(hid_t parent, const QString& name, const std::vector<double>& values);
 void writeTextColumn(hid_t parent, const QString& name, const QStringList& values);
 std::vector<double> readNumberColumn(hid_t parent, const QString& name);
+// One text (e.g. a serialized model) as a scalar fixed-length UTF-8 string dataset. Reading
+// refuses a text longer than maxBytes, or larger than the file can hold, before allocating.
+void writeText(hid_t parent, const QString& name, const QByteArray& text);
+QByteArray readText(hid_t parent, const QString& name, long long maxBytes);
 QStringList readTextColumn(hid_t parent, const QString& name);
 
 // Stream samples as datasets t (N) and data (N×C), chunked, shuffled and deflated. advance(rows)

@@ -91,6 +91,7 @@ struct Contents {
     std::map<QString, QJsonObject> geometry;
     QStringList annotationClasses;
     QJsonArray pipelines;
+    std::map<QString, TrainedModel> models;
 };
 
 Contents readContents(hid_t file, const QString& path, int formatVersion) {
@@ -131,6 +132,18 @@ Contents readContents(hid_t file, const QString& path, int formatVersion) {
                     throw Failure{QStringLiteral("%1 has unknown type '%2'").arg(h5::objectPath(group), type)};
                 }
             }
+        }
+    }
+    if (h5::hasChild(file, QStringLiteral("models"))) {
+        Handle models = h5::openGroup(file, QStringLiteral("models"));
+        for (const QString& name : h5::childNames(models)) {
+            Handle group = h5::openGroup(models, name);
+            TrainedModel model;
+            model.name = name;
+            model.format = h5::readString(group, "format");
+            model.description = h5::readJsonObject(group, "description");
+            model.definition = h5::readText(group, QStringLiteral("definition"), TrainedModel::kMaxDefinitionBytes);
+            c.models.emplace(name, std::move(model));
         }
     }
     if (h5::hasChild(file, QStringLiteral("annotations"))) {
@@ -353,6 +366,15 @@ void writeFile(hid_t file, const Project& project, const std::vector<StreamPlan>
         if (!rec.annotations.empty()) writeAnnotations(annotations, recName, rec.annotations);
         recGroups.emplace(recName, std::move(recGroup));
     }
+    if (!project.models().empty()) {
+        Handle models = h5::createGroup(file, QStringLiteral("models"));
+        for (const auto& [name, model] : project.models()) {
+            Handle group = h5::createGroup(models, name);
+            h5::writeString(group, "format", model.format);
+            h5::writeJson(group, "description", model.description);
+            h5::writeText(group, QStringLiteral("definition"), model.definition);
+        }
+    }
     SourceFiles sources;
     for (const StreamPlan& plan : plans) writeStream(recGroups.at(plan.recording), plan, sources, tracker);
 }
@@ -377,6 +399,7 @@ Status ProjectFile::read(const QString& path, Project& project) {
         project.geometry() = std::move(c.geometry);
         project.annotationClasses() = std::move(c.annotationClasses);
         project.pipelineHistory() = std::move(c.pipelines);
+        project.models() = std::move(c.models);
         return {};
     } catch (const Failure& failure) {
         return refuse(failure.message);

@@ -1,0 +1,63 @@
+#pragma once
+// A trained activity classifier as stored in a project (TrainedModel, /models/<name>): the feature
+// set and its input columns, the window, robust scaling (median/IQR per feature), the classes and
+// the OpenCV classifier. classify() turns an IMU stream into predicted annotations that cover the
+// whole classified span.
+#include "core/model/Annotation.h"
+#include "core/model/Stream.h"
+#include "core/model/TrainedModel.h"
+#include "core/util/Expected.h"
+#include "core/util/Progress.h"
+#include "plugins/activity/Classifier.h"
+
+#include <QJsonObject>
+#include <QStringList>
+#include <optional>
+#include <vector>
+
+namespace athlos::activity {
+
+// Median and interquartile range of each feature (column of samples); an IQR of 0 becomes 1.
+struct RobustScaling {
+    std::vector<float> centre, scale;
+    static RobustScaling fit(const cv::Mat& samples);
+    void apply(cv::Mat& samples) const;  // in place: (x − centre) / scale
+    QJsonObject toJson() const;
+    static std::optional<RobustScaling> fromJson(const QJsonObject& json, int features);
+};
+
+class ActivityModel {
+public:
+    static constexpr const char* kFormat = "opencv-yaml";
+
+    QStringList classes;
+    QStringList sensors;              // acc, gyr, mag
+    QStringList features;             // names, in the order of FeatureExtractor
+    QStringList inputColumns;         // stream columns read
+    double window = 3.0, step = 1.5;  // s
+    RobustScaling scaling;
+    std::optional<Classifier> classifier;
+    QJsonObject provenance;  // training recordings, cross-validation, parameters (stored as is)
+
+    // Parses a stored model (its JSON description and the OpenCV YAML text); the error says what is wrong.
+    static Expected<ActivityModel> fromStored(const TrainedModel& stored);
+    Expected<TrainedModel> toStored(const QString& name) const;
+
+    // Class probabilities of each window (rows) of `samples` (raw features, scaled here).
+    void probabilities(cv::Mat samples, cv::Mat& out) const;
+
+    // Refuses a stream whose columns or sensors do not match what the model was trained on.
+    Status checkStream(const StreamInfo& info) const;
+
+    // Predicted annotations for a stream: windows classified, probabilities averaged over `smoothing`
+    // windows on each side, consecutive windows of one class merged; each window owns the time up to
+    // half-way to its neighbours' centres, the first and last extend to the ends of the stream.
+    Expected<Annotations> classify(const StreamInfo& info, const StreamData& data, int smoothing,
+                                   const Progress& progress = {}) const;
+};
+
+// Intervals from window centres and their class probabilities (rows): exposed for tests.
+Annotations intervalsFromWindows(const std::vector<double>& centres, const cv::Mat& probabilities,
+                                 const QStringList& classes, double tBegin, double tEnd, int smoothing);
+
+}  // namespace athlos::activity

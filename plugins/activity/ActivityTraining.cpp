@@ -1,0 +1,270 @@
+#include "plugins/activity/ActivityTraining.h"
+
+#include "plugins/activity/FeatureExtractor.h"
+#include "plugins/activity/Windows.h"
+
+#include <QJsonArray>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+
+namespace athlos::activity {
+
+Expected<std::vector<TrainingSource>> trainingSources(const Project& project, const QString& stream,
+                                                      const QStringList& recordings) {
+    std::vector<TrainingSource> sources;
+    for (const QString& name : recordings)
+        if (!project.recording(name)) return makeError(QStringLiteral("--recordings: no recording '%1'").arg(name));
+    for (const auto& [name, rec] : project.recordings()) {
+        if (!recordings.isEmpty() && !recordings.contains(name)) continue;
+        auto it = rec.streams.find(stream);
+        if (it == rec.streams.end()) continue;
+        Annotations truth;
+        for (const Annotation& a : rec.annotations)
+            if ((a.source == QLatin1String("manual") || a.source == QLatin1String("import")) && a.tEnd > a.tStart)
+                truth.push_back(a);
+        if (truth.empty()) continue;
+        auto data = it->second.data();
+        if (!data) return makeError(QStringLiteral("%1/%2: %3").arg(name, stream, data.message()));
+        TrainingSource s;
+        s.recording = name;
+        s.athlete = rec.metadata.value(QStringLiteral("athlete")).toString(name);
+        if (s.athlete.isEmpty()) s.athlete = name;
+        s.info = it->second.info();
+        s.data = *data;
+        s.annotations = std::move(truth);
+        sources.push_back(std::move(s));
+    }
+    if (sources.empty())
+        return makeError(QStringLiteral("no recording has both a stream '%1' and annotations to train on").arg(stream));
+    return sources;
+}
+
+Expected<Dataset> buildDataset(const std::vector<TrainingSource>& sources, const TrainingOptions& options,
+                               const Progress& progress) {
+    Dataset d;
+    d.sensors = options.sensors;
+    if (!(options.window > 0) || !(options.step > 0))
+        return makeError(QStringLiteral("--window and --step must be positive (s)"));
+    // Classes: as given, else every ground-truth label (sorted, so the order does not depend on the data).
+    if (!options.classes.isEmpty()) {
+        d.classes = options.classes;
+    } else {
+        std::set<QString> labels;
+        for (const auto& s : sources)
+            for (const auto& a : s.annotations) labels.insert(a.label);
+        for (const auto& l : labels) d.classes << l;
+    }
+    std::vector<float> rows;
+    for (std::size_t si = 0; si < sources.size(); ++si) {
+        const TrainingSource& s = sources[si];
+        auto extractor = FeatureExtractor::create(s.info, options.sensors);
+        if (!extractor)
+            return makeError(QStringLiteral("%1/%2: %3").arg(s.recording, s.info.name, extractor.message()));
+        if (d.features.isEmpty()) {
+            d.features = extractor->names();
+            d.inputColumns = extractor->inputColumns();
+            for (const QString& c : d.inputColumns)
+                d.units[c] = s.info.columns[std::size_t(s.info.columnIndex(c))].unit;
+        } else {
+            for (const QString& c : d.inputColumns) {
+                const QString unit = s.info.columns[std::size_t(s.info.columnIndex(c))].unit;
+                if (unit != d.units.value(c).toString())
+                    return makeError(QStringLiteral("%1/%2: column %3 is in '%4', other recordings in '%5'")
+                                         .arg(s.recording, s.info.name, c, unit, d.units.value(c).toString()));
+            }
+        }
+        const auto windows = slidingWindows(*s.data, options.window, options.step);
+        std::vector<float> features(std::size_t(extractor->size()));
+        for (const Window& w : windows) {
+            const QString label = windowLabel(w, s.annotations, d.classes, options.minLabelFraction);
+            if (label.isEmpty()) continue;
+            extractor->compute(*s.data, w.begin, w.end, features.data());
+            rows.insert(rows.end(), features.begin(), features.end());
+            d.labels.push_back(int(d.classes.indexOf(label)));
+            d.source.push_back(int(si));
+        }
+        if (progress.isCancelled()) return makeError(QStringLiteral("cancelled"));
+        progress.report(double(si + 1) / double(sources.size()), QStringLiteral("features"));
+    }
+    if (d.labels.empty())
+        return makeError(QStringLiteral("no window of %1 s is covered by an annotation to at least %2 %")
+                             .arg(options.window)
+                             .arg(100 * options.minLabelFraction));
+    std::set<int> present(d.labels.begin(), d.labels.end());
+    if (present.size() < 2)
+        return makeError(QStringLiteral("the windows have only one class ('%1'); training needs at least two")
+                             .arg(d.classes.value(*present.begin())));
+    // Classes given but never seen are dropped, so the model does not predict what it never learnt.
+    QStringList seen;
+    std::vector<int> remap(std::size_t(d.classes.size()), -1);
+    for (int c : present) {
+        remap[std::size_t(c)] = int(seen.size());
+        seen << d.classes[c];
+    }
+    for (int& l : d.labels) l = remap[std::size_t(l)];
+    d.classes = seen;
+    d.samples = cv::Mat(int(d.labels.size()), int(d.features.size()), CV_32F, rows.data()).clone();
+    return d;
+}
+
+Evaluation evaluate(const std::vector<int>& truth, const std::vector<int>& predicted, const QStringList& classes) {
+    Evaluation e;
+    e.classes = classes;
+    const auto k = std::size_t(classes.size());
+    e.confusion.assign(k, std::vector<long long>(k, 0));
+    long long correct = 0;
+    for (std::size_t i = 0; i < truth.size(); ++i) {
+        e.confusion[std::size_t(truth[i])][std::size_t(predicted[i])]++;
+        correct += truth[i] == predicted[i];
+    }
+    e.accuracy = truth.empty() ? 0.0 : double(correct) / double(truth.size());
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    double sum = 0;
+    int present = 0;
+    for (std::size_t c = 0; c < k; ++c) {
+        long long row = 0, column = 0;
+        for (std::size_t j = 0; j < k; ++j) {
+            row += e.confusion[c][j];
+            column += e.confusion[j][c];
+        }
+        e.recall.push_back(row ? double(e.confusion[c][c]) / double(row) : nan);
+        e.precision.push_back(column ? double(e.confusion[c][c]) / double(column) : nan);
+        if (row) {
+            sum += e.recall.back();
+            ++present;
+        }
+    }
+    e.balancedAccuracy = present ? sum / present : 0.0;
+    return e;
+}
+
+QJsonObject Evaluation::toJson() const {
+    QJsonArray confusionJson, recallJson, precisionJson;
+    for (const auto& row : confusion) {
+        QJsonArray r;
+        for (long long v : row) r.append(double(v));
+        confusionJson.append(r);
+    }
+    const auto number = [](double v) { return std::isfinite(v) ? QJsonValue(v) : QJsonValue(); };
+    for (double v : recall) recallJson.append(number(v));
+    for (double v : precision) precisionJson.append(number(v));
+    return {{QStringLiteral("balanced_accuracy"), balancedAccuracy},
+            {QStringLiteral("accuracy"), accuracy},
+            {QStringLiteral("recall"), recallJson},
+            {QStringLiteral("precision"), precisionJson},
+            {QStringLiteral("confusion"), confusionJson}};
+}
+
+QString Evaluation::toText() const {
+    QString out;
+    out +=
+        QStringLiteral("balanced accuracy %1, accuracy %2\n").arg(balancedAccuracy, 0, 'f', 3).arg(accuracy, 0, 'f', 3);
+    int width = 9;
+    for (const QString& c : classes) width = std::max(width, int(c.size()) + 4);
+    out += QStringLiteral("%1 %2 %3\n")
+               .arg(QStringLiteral("class"), -width)
+               .arg(QStringLiteral("recall"), 7)
+               .arg(QStringLiteral("precision"), 10);
+    const auto cell = [](double v) { return std::isfinite(v) ? QString::number(v, 'f', 3) : QStringLiteral("-"); };
+    for (qsizetype c = 0; c < classes.size(); ++c)
+        out += QStringLiteral("%1 %2 %3\n")
+                   .arg(classes[c], -width)
+                   .arg(cell(recall[std::size_t(c)]), 7)
+                   .arg(cell(precision[std::size_t(c)]), 10);
+    out += QStringLiteral("confusion (rows: annotated, columns: predicted)\n%1").arg(QString(), width);
+    for (qsizetype c = 0; c < classes.size(); ++c) out += QStringLiteral(" %1").arg(QString::number(c), 7);
+    out += QLatin1Char('\n');
+    for (qsizetype c = 0; c < classes.size(); ++c) {
+        out += QStringLiteral("%1").arg(QString::number(c) + QLatin1Char(' ') + classes[c], -width);
+        for (long long v : confusion[std::size_t(c)]) out += QStringLiteral(" %1").arg(v, 7);
+        out += QLatin1Char('\n');
+    }
+    return out;
+}
+
+Expected<std::vector<int>> foldGroups(const Dataset& dataset, const std::vector<TrainingSource>& sources,
+                                      const TrainingOptions& options) {
+    std::vector<int> groups(dataset.source.size());
+    const QString& scheme = options.validation;
+    if (scheme == QLatin1String("leave-one-recording-out")) {
+        for (std::size_t i = 0; i < groups.size(); ++i) groups[i] = dataset.source[i];
+    } else if (scheme == QLatin1String("leave-one-athlete-out")) {
+        QStringList athletes;
+        for (const auto& s : sources)
+            if (!athletes.contains(s.athlete)) athletes << s.athlete;
+        for (std::size_t i = 0; i < groups.size(); ++i)
+            groups[i] = int(athletes.indexOf(sources[std::size_t(dataset.source[i])].athlete));
+    } else if (scheme == QLatin1String("k-fold")) {
+        if (options.folds < 2) return makeError(QStringLiteral("--folds must be at least 2"));
+        for (std::size_t i = 0; i < groups.size(); ++i) groups[i] = dataset.source[i] % options.folds;
+        return groups;
+    } else {
+        return makeError(
+            QStringLiteral("--cv '%1': use leave-one-athlete-out, leave-one-recording-out or k-fold").arg(scheme));
+    }
+    // More subjects than maxGroups: whole subjects (recordings) dealt into maxGroups folds, so that
+    // 50 people do not mean 50 trainings; a subject is still never in its own training fold.
+    if (options.maxGroups > 1)
+        for (int& g : groups) g %= options.maxGroups;
+    return groups;
+}
+
+Expected<Evaluation> crossValidate(const Dataset& dataset, const std::vector<int>& groups,
+                                   const TrainingOptions& options, const Progress& progress) {
+    std::set<int> ids(groups.begin(), groups.end());
+    if (ids.size() < 2)
+        return makeError(QStringLiteral("cross-validation (%1) needs at least two groups; there is one "
+                                        "(use --cv k-fold with several recordings, or --cv none)")
+                             .arg(options.validation));
+    std::vector<int> predicted(dataset.labels.size(), 0);
+    int done = 0;
+    for (int id : ids) {
+        std::vector<int> trainRows, testRows;
+        for (std::size_t i = 0; i < groups.size(); ++i) (groups[i] == id ? testRows : trainRows).push_back(int(i));
+        cv::Mat train(int(trainRows.size()), dataset.samples.cols, CV_32F);
+        std::vector<int> trainLabels;
+        for (std::size_t i = 0; i < trainRows.size(); ++i) {
+            dataset.samples.row(trainRows[i]).copyTo(train.row(int(i)));
+            trainLabels.push_back(dataset.labels[std::size_t(trainRows[i])]);
+        }
+        cv::Mat test(int(testRows.size()), dataset.samples.cols, CV_32F);
+        for (std::size_t i = 0; i < testRows.size(); ++i) dataset.samples.row(testRows[i]).copyTo(test.row(int(i)));
+        const RobustScaling scaling = RobustScaling::fit(train);
+        scaling.apply(train);
+        scaling.apply(test);
+        auto classifier = Classifier::train(train, trainLabels, int(dataset.classes.size()), options.classifier);
+        if (!classifier) return classifier.error();
+        cv::Mat p;
+        classifier->probabilities(test, p);
+        for (int i = 0; i < p.rows; ++i) {
+            const float* row = p.ptr<float>(i);
+            predicted[std::size_t(testRows[std::size_t(i)])] = int(std::max_element(row, row + p.cols) - row);
+        }
+        if (progress.isCancelled()) return makeError(QStringLiteral("cancelled"));
+        progress.report(double(++done) / double(ids.size()), QStringLiteral("cross-validation"));
+    }
+    return evaluate(dataset.labels, predicted, dataset.classes);
+}
+
+Expected<ActivityModel> trainModel(const Dataset& dataset, const TrainingOptions& options) {
+    ActivityModel m;
+    m.classes = dataset.classes;
+    m.sensors = dataset.sensors;
+    m.features = dataset.features;
+    m.inputColumns = dataset.inputColumns;
+    m.window = options.window;
+    m.step = options.step;
+    cv::Mat samples = dataset.samples.clone();
+    m.scaling = RobustScaling::fit(samples);
+    m.scaling.apply(samples);
+    auto classifier = Classifier::train(samples, dataset.labels, int(dataset.classes.size()), options.classifier);
+    if (!classifier) return classifier.error();
+    m.classifier = std::move(*classifier);
+    m.provenance[QStringLiteral("units")] = dataset.units;
+    return m;
+}
+
+}  // namespace athlos::activity

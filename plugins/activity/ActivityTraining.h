@@ -1,0 +1,78 @@
+#pragma once
+// Training an activity classifier from annotated recordings (seed 000 §5.2–5.3; digest §7–§9):
+// windows labelled by annotation overlap, features, cross-validation grouped by recording or
+// athlete (leave-subjects-out, as Table 5.2), metrics, and the final model trained on everything.
+#include "core/model/Project.h"
+#include "core/util/Expected.h"
+#include "core/util/Progress.h"
+#include "plugins/activity/ActivityModel.h"
+#include "plugins/activity/Classifier.h"
+
+#include <QJsonObject>
+#include <QStringList>
+#include <memory>
+#include <vector>
+
+namespace athlos::activity {
+
+// One annotated recording to learn from.
+struct TrainingSource {
+    QString recording;
+    QString athlete;  // metadata "athlete", else the recording name
+    StreamInfo info;
+    std::shared_ptr<const StreamData> data;
+    Annotations annotations;  // ground truth (manual or imported)
+};
+
+struct TrainingOptions {
+    double window = 3.0;  // s
+    double step = 1.5;    // s
+    QStringList sensors{QStringLiteral("acc"), QStringLiteral("gyr")};
+    QStringList classes;            // empty: every label found
+    double minLabelFraction = 0.5;  // a window's label must cover this much of it
+    ClassifierOptions classifier;
+    QString validation = QStringLiteral("leave-one-athlete-out");  // or leave-one-recording-out, k-fold, none
+    int folds = 5;
+    int maxGroups = 10;  // leave-one-*-out with more subjects: subjects dealt into this many folds
+};
+
+struct Dataset {
+    cv::Mat samples;          // windows × features, CV_32F (unscaled)
+    std::vector<int> labels;  // class index per window
+    std::vector<int> source;  // index into the sources per window
+    QStringList classes;
+    QStringList features, inputColumns, sensors;
+    QJsonObject units;  // column → unit of the training streams
+};
+
+struct Evaluation {
+    QStringList classes;
+    std::vector<std::vector<long long>> confusion;  // [truth][predicted]
+    double balancedAccuracy = 0;                    // mean recall over classes present
+    double accuracy = 0;
+    std::vector<double> recall, precision;  // NaN when undefined
+    QJsonObject toJson() const;
+    QString toText() const;
+};
+
+// Sources in `project`: recordings (all when `recordings` is empty) that have stream `stream` and
+// ground-truth annotations (source "manual" or "import"; predictions are never trained on).
+Expected<std::vector<TrainingSource>> trainingSources(const Project& project, const QString& stream,
+                                                      const QStringList& recordings);
+
+Expected<Dataset> buildDataset(const std::vector<TrainingSource>& sources, const TrainingOptions& options,
+                               const Progress& progress = {});
+
+Evaluation evaluate(const std::vector<int>& truth, const std::vector<int>& predicted, const QStringList& classes);
+
+// Cross-validated predictions of every window (grouped by `groups`: one id per window).
+Expected<Evaluation> crossValidate(const Dataset& dataset, const std::vector<int>& groups,
+                                   const TrainingOptions& options, const Progress& progress = {});
+// The fold groups of each window for options.validation ("k-fold": windows of one recording stay
+// together, recordings dealt into `folds` folds).
+Expected<std::vector<int>> foldGroups(const Dataset& dataset, const std::vector<TrainingSource>& sources,
+                                      const TrainingOptions& options);
+
+Expected<ActivityModel> trainModel(const Dataset& dataset, const TrainingOptions& options);
+
+}  // namespace athlos::activity
