@@ -169,6 +169,12 @@ ParameterSpecs SessionMetricsProcessor::parameters() const {
         ParameterSpec::text(QStringLiteral("period_pattern"),
                             QStringLiteral("half|period|drill|quarter|phase|warm.?up|session|game"),
                             tr("Regular expression (case-insensitive) of period labels for periods=auto.")),
+        ParameterSpec::text(QStringLiteral("track"), QString(),
+                            tr("A track (a name under the project's /geometry or a built-in: iaaf-400m, indoor-200m): "
+                               "adds a row per lap and per split_distance, from the progress along the track. Empty: "
+                               "no track.")),
+        ParameterSpec::number(QStringLiteral("split_distance"), 100.0, 0.0, kInf, QStringLiteral("m"),
+                              tr("Split length along lane 1's running line with a track (0 = laps only).")),
         ParameterSpec::number(QStringLiteral("terrain_factor"), d.metabolic.terrainFactor, 0.1, 10.0, QString(),
                               tr("KT of the energy cost: 1.29 for grass (Osgnach et al. 2010), 1 for a track.")),
         ParameterSpec::number(QStringLiteral("high_power"), d.highPowerThreshold, 0.0, kInf, QStringLiteral("W/kg"),
@@ -234,6 +240,12 @@ Expected<SessionMetricsProcessor::Plan> SessionMetricsProcessor::makePlan(const 
     if (!QRegularExpression(plan.periodPattern).isValid())
         return makeError(QStringLiteral("parameter 'period_pattern': not a valid regular expression: %1")
                              .arg(QRegularExpression(plan.periodPattern).errorString()));
+    if (const QString track = c.text(QStringLiteral("track")).trimmed(); !track.isEmpty()) {
+        auto geometry = TrackGeometry::resolve(c.project().geometry(), track);
+        if (!geometry) return makeError(QStringLiteral("parameter 'track': %1").arg(geometry.message()));
+        plan.track = std::move(*geometry);
+    }
+    plan.splits.splitDistance = c.number(QStringLiteral("split_distance"));
     const Stream* positions = c.stream(0);
     if (positions->info().columnIndex(QStringLiteral("x")) < 0 ||
         positions->info().columnIndex(QStringLiteral("y")) < 0)
@@ -318,6 +330,9 @@ Expected<std::vector<ProcessorOutput>> SessionMetricsProcessor::run(const RunCon
             actions.push_back(&a);
         }
     }
+    if (plan.track)
+        for (const TrackInterval& interval : TrackSplits::compute(series, *plan.track, plan.splits))
+            periods.push_back({interval.name, interval.start, interval.end});
     if (plan.window > 0) {
         int index = 1;
         for (double a = tBegin; a < tEnd - 1e-9; a += plan.window, ++index)

@@ -5,7 +5,11 @@
 // metabolic power and energy, PlayerLoad from an IMU and action counts from annotations. Positions are
 // smoothed first by default (MotionFromPositions.h); the smoothed motion is a second output.
 #include "core/processing/Processor.h"
+#include "core/geometry/TrackGeometry.h"
 #include "plugins/metrics/MotionFromPositions.h"
+#include "plugins/metrics/TrackSplits.h"
+
+#include <optional>
 
 namespace athlos::metrics {
 
@@ -28,6 +32,8 @@ public:
         double window = 300.0;  // s, 0 = no windows
         QString periods;        // "auto" or a list of labels
         QString periodPattern;  // regular expression of period labels (periods=auto)
+        std::optional<TrackGeometry> track;  // lap and split rows when given
+        TrackSplits::Params splits;
     };
     Expected<Plan> makePlan(const RunContext& context) const;
 };
