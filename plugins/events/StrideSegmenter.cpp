@@ -90,6 +90,13 @@ StrideSegmentation segmentStrides(const StrideSegmentationParams& p, const doubl
         const std::size_t to = lastAtOrBefore(t[pn] + p.stanceSearch);
         if (t[pn] + p.stanceSearch <= t[rows - 1]) after.back() = accept(argMin(rest, pn + 1, to));
     }
+    // Initial contact after / toe-off before a swing peak (the event definitions of GaitEventDetector).
+    const auto icAfter = [&](std::size_t peak, std::size_t limit) {
+        return argMin(w, peak + 1, std::min(limit, lastAtOrBefore(t[peak] + p.icWindow)));
+    };
+    const auto tcBefore = [&](std::size_t peak, std::size_t limit) {
+        return argMin(w, std::max(limit, firstAtOrAfter(t[peak] - p.tcWindow)), peak - 1);
+    };
     for (std::size_t i = 0; i + 1 < peaks.size(); ++i) {
         const std::size_t a = peaks[i], b = peaks[i + 1];
         if (t[b] - t[a] <= p.maxStrideTime) {
@@ -107,10 +114,8 @@ StrideSegmentation segmentStrides(const StrideSegmentationParams& p, const doubl
         s.peak = peaks[i];
         s.restStart = rest[s.start];
         s.restEnd = rest[s.end];
-        const std::size_t tcFrom = std::max(s.start, firstAtOrAfter(t[s.peak] - p.tcWindow));
-        const std::size_t icTo = std::min(s.end, lastAtOrBefore(t[s.peak] + p.icWindow));
-        s.tc = argMin(w, tcFrom, s.peak - 1);
-        s.ic = argMin(w, s.peak + 1, icTo);
+        s.tc = tcBefore(s.peak, s.start);
+        s.ic = icAfter(s.peak, s.end);
         if (s.tc == std::size_t(-1) || s.ic == std::size_t(-1)) continue;
         out.strides.push_back(s);
     }
