@@ -188,16 +188,20 @@ Expected<std::vector<ProcessorOutput>> GaitParametersProcessor::run(const RunCon
     context.report(0.1, QStringLiteral("finding strides"));
     const StrideSegmentation segmentation = segmentStrides(plan->segmentation, d.t.data(), gyr, d.rows(), 3);
     // Nothing found is refused with the likely causes, not stored as an empty table.
-    if (segmentation.strides.empty())
-        return context.inputError(
-            0, QStringLiteral("no stride found in %1 s of data (%2 swings above swing_threshold = %3 rad/s about "
-                              "ml_axis = %4, none with a mid-stance at rest on both sides, rest_threshold = %5 "
-                              "rad/s): is it a foot-mounted IMU during walking or running?")
-                   .arg(d.rows() ? d.t.back() - d.t.front() : 0.0, 0, 'g', 4)
-                   .arg(segmentation.swings)
-                   .arg(plan->segmentation.swingThreshold)
-                   .arg(context.text(QStringLiteral("ml_axis")))
-                   .arg(plan->segmentation.restThreshold));
+    if (segmentation.strides.empty()) {
+        const QString why =
+            segmentation.swings == 0
+                ? QStringLiteral("no swing above swing_threshold = %1 rad/s about ml_axis = %2")
+                      .arg(plan->segmentation.swingThreshold)
+                      .arg(context.text(QStringLiteral("ml_axis")))
+                : QStringLiteral("%1 swings, none with a mid-stance below rest_threshold = %2 rad/s on both sides")
+                      .arg(segmentation.swings)
+                      .arg(plan->segmentation.restThreshold);
+        return context.inputError(0, QStringLiteral("no stride found in %1 s of data (%2): is it a foot-mounted "
+                                                    "IMU during walking or running?")
+                                         .arg(d.rows() ? d.t.back() - d.t.front() : 0.0, 0, 'g', 4)
+                                         .arg(why));
+    }
     if (context.isCancelled()) return cancelledError();
     context.report(0.4, QStringLiteral("integrating strides"));
     const FootTrajectory trajectory =
