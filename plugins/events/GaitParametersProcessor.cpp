@@ -67,7 +67,8 @@ Expected<Plan> makePlan(const RunContext& c) {
     p.tcWindow = c.number(QStringLiteral("tc_window"));
     p.icWindow = c.number(QStringLiteral("ic_window"));
     plan.integration.levelWindow = c.number(QStringLiteral("level_window"));
-    plan.staticThreshold = c.number(QStringLiteral("static_threshold"));
+    plan.staticThreshold = p.staticThreshold = c.number(QStringLiteral("static_threshold"));
+    p.standDuration = c.number(QStringLiteral("stand_duration"));
     plan.staticDuration = c.number(QStringLiteral("static_duration"));
     if (p.maxStrideTime <= p.minStrideTime)
         return makeError(QStringLiteral("max_stride: %1 s must be longer than min_stride (%2 s)")
@@ -133,10 +134,15 @@ ParameterSpecs GaitParametersProcessor::parameters() const {
                "threshold is 15 deg/s (0.26 rad/s), but the quietest 0.15 s of a stance reaches only "
                "0.2–1.3 rad/s in gaitmap's own walk (and more in running), so the default is 2 rad/s; it "
                "rejects a mid-stance cut off by the start or end of the data.")),
-        ParameterSpec::number(QStringLiteral("static_threshold"), 0.26, 0.0, kInf, QStringLiteral("rad/s"),
+        ParameterSpec::number(QStringLiteral("static_threshold"), d.staticThreshold, 0.0, kInf, QStringLiteral("rad/s"),
                               tr("Standing: gyroscope norm averaged over rest_window below this (gaitmap "
-                                 "NormZuptDetector: 15 deg/s); the mean rate while standing is the gyroscope "
-                                 "bias, removed before integration.")),
+                                 "NormZuptDetector: 15 deg/s); pauses end strides, and the mean rate while "
+                                 "standing is the gyroscope bias, removed before integration.")),
+        ParameterSpec::number(QStringLiteral("stand_duration"), d.standDuration, 0.0, kInf, QStringLiteral("s"),
+                              tr("A pause between two swings (below static_threshold at least this long) ends "
+                                 "the stride before where the foot comes to rest and starts the next where it "
+                                 "leaves, so that no stride contains the pause. Shorter than a stride, longer "
+                                 "than the foot-flat phase of slow walking.")),
         ParameterSpec::number(QStringLiteral("static_duration"), 1.0, 0.0, kInf, QStringLiteral("s"),
                               tr("Shortest standing phase used for the gyroscope bias; 0: no bias removal.")),
         ParameterSpec::number(QStringLiteral("stance_search"), d.stanceSearch, 0.0, kInf, QStringLiteral("s"),

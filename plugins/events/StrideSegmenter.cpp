@@ -99,9 +99,27 @@ StrideSegmentation segmentStrides(const StrideSegmentationParams& p, const doubl
     };
     for (std::size_t i = 0; i + 1 < peaks.size(); ++i) {
         const std::size_t a = peaks[i], b = peaks[i + 1];
-        if (t[b] - t[a] <= p.maxStrideTime) {
+        // The longest standing stretch between the swings (mean norm below staticThreshold).
+        std::size_t standFrom = 0, standTo = 0;
+        for (std::size_t k = a + 1; k < b;) {
+            if (rest[k] >= p.staticThreshold) {
+                ++k;
+                continue;
+            }
+            std::size_t e = k;
+            while (e + 1 < b && rest[e + 1] < p.staticThreshold) ++e;
+            if (t[e] - t[k] > t[standTo] - t[standFrom]) standFrom = k, standTo = e;
+            k = e + 1;
+        }
+        if (standTo > standFrom && t[standTo] - t[standFrom] >= p.standDuration) {
+            // A pause: the stride before ends where the foot comes to rest, the next starts where it
+            // leaves, so that neither stride time contains the pause.
+            const double edge = 0.5 * p.standDuration;
+            after[i] = accept(argMin(rest, standFrom, lastAtOrBefore(t[standFrom] + edge)));
+            before[i + 1] = accept(argMin(rest, firstAtOrAfter(t[standTo] - edge), standTo));
+        } else if (t[b] - t[a] <= p.maxStrideTime) {
             after[i] = before[i + 1] = accept(argMin(rest, a + 1, b - 1));
-        } else {  // the foot stands between the two swings
+        } else {  // long gap without a clear stand (shuffling, turning on the spot)
             after[i] = accept(argMin(rest, a + 1, std::min(lastAtOrBefore(t[a] + p.stanceSearch), b - 1)));
             before[i + 1] = accept(argMin(rest, std::max(firstAtOrAfter(t[b] - p.stanceSearch), a + 1), b - 1));
         }

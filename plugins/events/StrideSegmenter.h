@@ -7,9 +7,12 @@
 //  - mid-stance between two swings: the minimum of the gyroscope norm averaged over restWindow
 //    (the foot is flat and still, "low gyro energy", cf. the SHOE detector of Skog et al. 2010 and
 //    gaitmap's NormZuptDetector); it is accepted as a zero-velocity instant when that average is
-//    at most restThreshold. Swings more than maxStrideTime apart have the foot standing between
-//    them: the stride before ends at the quietest instant within stanceSearch after its swing,
-//    the stride after starts at the quietest instant within stanceSearch before its swing;
+//    at most restThreshold. A pause between two swings (the mean norm below staticThreshold for at
+//    least standDuration) ends the stride before at the quietest instant of the pause's first
+//    standDuration/2 and starts the next one in its last standDuration/2. Swings more than
+//    maxStrideTime apart without such a pause: the stride before ends at the quietest instant within
+//    stanceSearch after its swing, the stride after starts at the quietest instant within
+//    stanceSearch before its swing;
 //  - one stride per swing whose mid-stances on both sides are accepted; toe-off is the most
 //    negative ω_ml within tcWindow before the swing peak, initial contact the most negative
 //    within icWindow after it (the event definitions of GaitEventDetector).
@@ -26,7 +29,9 @@ struct StrideSegmentationParams {
     double maxStrideTime = 2.5;   // s: swings further apart have a standing foot between them
     double restWindow = 0.15;     // s: gaitmap NormZuptDetector window_length_s
     double restThreshold = 2.0;   // rad/s: mean gyroscope norm accepted at a mid-stance
-    double stanceSearch = 0.6;    // s: search for the mid-stance next to a standing phase
+    double stanceSearch = 0.6;    // s: search for the mid-stance next to a long gap
+    double staticThreshold = 0.26;  // rad/s: standing (gaitmap NormZuptDetector, 15 deg/s)
+    double standDuration = 0.75;    // s: shortest pause that splits the stance between two strides
     double tcWindow = 0.4;        // s, as GaitEventParams::tcWindow
     double icWindow = 0.35;       // s, as GaitEventParams::icWindow
 };

@@ -27,7 +27,7 @@ Result run(const SimConfig& config, StrideSegmentationParams params = {}) {
     const double* v = r.rec.values.data();
     const std::size_t n = r.rec.t.size();
     // As the processor does: the gyroscope bias from the standing phases removed first.
-    r.bias = estimateStaticGyroBias(r.rec.t.data(), v + 3, n, 6, 0.15, 0.26, 1.0);
+    r.bias = estimateStaticGyroBias(r.rec.t.data(), v + 3, n, 6, params.restWindow, params.staticThreshold, 1.0);
     std::vector<double> gyr(3 * n);
     for (std::size_t k = 0; k < n; ++k)
         for (std::size_t i = 0; i < 3; ++i) gyr[3 * k + i] = v[6 * k + 3 + i] - r.bias.bias[int(i)];
@@ -173,6 +173,22 @@ TEST(GaitParametersSimulation, StandingStillBetweenBoutsAddsNoStride) {
     expectMatched(r);
     EXPECT_EQ(r.segmentation.swings, c.strides.size());
     // The strides next to the stop keep their lengths: the standing time is not integrated.
+    EXPECT_LT(relativeError(r.trajectory.strides[5].length, c.strides[5].length), 0.015);
+    EXPECT_LT(relativeError(r.trajectory.strides[6].length, c.strides[6].length), 0.015);
+}
+
+TEST(GaitParametersSimulation, ShortPauseIsInNoStride) {
+    // A 1.5 s pause keeps the swings closer than max_stride (2.5 s): the strides around it must
+    // still end where the foot comes to rest and start where it leaves, not in the middle of the
+    // pause (which would move the stride midpoints out of the contact-to-contact strides).
+    SimConfig c = levelWalk();
+    c.strides[6].stance = 1.5;
+    const Result r = run(c);
+    expectMatched(r);
+    const auto& truth = r.rec.truth;
+    const double pauseFrom = truth[5].swingStart + truth[5].swing, pauseTo = truth[6].swingStart;
+    EXPECT_LT(r.trajectory.strides[5].tEnd, pauseFrom + 0.5);  // the middle is 0.75 s in
+    EXPECT_GT(r.trajectory.strides[6].tStart, pauseTo - 0.5);
     EXPECT_LT(relativeError(r.trajectory.strides[5].length, c.strides[5].length), 0.015);
     EXPECT_LT(relativeError(r.trajectory.strides[6].length, c.strides[6].length), 0.015);
 }
