@@ -2,7 +2,7 @@
 // whose stride lengths, heights, turns and swing heights are known: stride count exact, lengths
 // within 1.5 %, turns within 0.03 rad, with noise and gyroscope/accelerometer biases.
 // Figures: docs/validation/gait-parameters.md.
-#include "FootMotionSimulator.h"
+#include "plugins/events/FootMotionSimulator.h"
 #include "plugins/events/StaticGyroBias.h"
 #include "plugins/events/StrideIntegrator.h"
 
@@ -10,7 +10,6 @@
 #include <gtest/gtest.h>
 
 using namespace athlos::events;
-using namespace athlos::events::test;
 
 namespace {
 

@@ -1,11 +1,11 @@
-#include "FootMotionSimulator.h"
+#include "plugins/events/FootMotionSimulator.h"
 
 #include <Eigen/Geometry>
 #include <cmath>
 #include <numbers>
 #include <random>
 
-namespace athlos::events::test {
+namespace athlos::events {
 
 namespace {
 constexpr double kPi = std::numbers::pi;
@@ -107,4 +107,4 @@ SimRecording simulateFoot(const SimConfig& c) {
     return rec;
 }
 
-}  // namespace athlos::events::test
+}  // namespace athlos::events

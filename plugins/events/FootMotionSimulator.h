@@ -9,7 +9,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-namespace athlos::events::test {
+namespace athlos::events {
 
 struct SimStride {
     double length = 1.4;   // m, horizontal displacement
@@ -48,4 +48,4 @@ struct SimRecording {
 
 SimRecording simulateFoot(const SimConfig& config);
 
-}  // namespace athlos::events::test
+}  // namespace athlos::events
