@@ -23,12 +23,13 @@ const std::vector<double>& samples() {
     return rows;
 }
 
-void run(benchmark::State& state, OrientationAlgorithm algorithm, bool mag) {
+void run(benchmark::State& state, OrientationAlgorithm algorithm, bool mag, bool offline = false) {
     const auto& v = samples();
     const ImuBatch batch{v.data() + 3, v.data(), mag ? v.data() + 6 : nullptr, v.size() / 9, 9};
     OrientationOptions o;
     o.algorithm = algorithm;
     o.useMagnetometer = mag;
+    o.offline = offline;
     for (auto _ : state) {
         auto r = estimateOrientation(o, batch, 0.01);
         benchmark::DoNotOptimize(r.track.q.data());
@@ -55,6 +56,9 @@ void vqfUpdateOnly(benchmark::State& state) {
 
 BENCHMARK_CAPTURE(run, vqf_9d, OrientationAlgorithm::Vqf, true)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(run, vqf_6d, OrientationAlgorithm::Vqf, false)->Unit(benchmark::kMillisecond);
+// Offline mode (issue #17): four filter passes, a strapdown and a zero-phase low-pass.
+BENCHMARK_CAPTURE(run, vqf_offline_9d, OrientationAlgorithm::Vqf, true, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(run, vqf_offline_6d, OrientationAlgorithm::Vqf, false, true)->Unit(benchmark::kMillisecond);
 BENCHMARK(vqfUpdateOnly)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(run, madgwick_9d, OrientationAlgorithm::Madgwick, true)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(run, mahony_9d, OrientationAlgorithm::Mahony, true)->Unit(benchmark::kMillisecond);

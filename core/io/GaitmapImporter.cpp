@@ -39,6 +39,9 @@ bool isSampleIndex(const std::vector<double>& first) {
     return true;
 }
 
+// pandas writes the names of the column levels into the index column: "sensor" / "axis".
+bool isLevelName(const QString& cell) { return cell.compare(QLatin1String("sensor"), Qt::CaseInsensitive) == 0; }
+
 double medianInterval(const std::vector<double>& t) {
     if (t.size() < 2) return 0.0;
     std::vector<double> d(t.size() - 1);
@@ -70,6 +73,18 @@ Expected<ImportResult> GaitmapImporter::read(const QString& file, const ImportOp
     if (!reader.readHeader(axes))
         return makeError(QStringLiteral("%1: the second header row (axes) is missing").arg(file));
     const long long axisLine = reader.line();
+    // pandas writes the index name as a third header row ("sample,,,...") when the index has one.
+    {
+        CsvReader peek = reader;
+        QStringList cells;
+        bool ok = false;
+        if (peek.readHeader(cells) && !cells.isEmpty() && !cells[0].trimmed().isEmpty()) {
+            cells[0].trimmed().toDouble(&ok);
+            const bool restEmpty =
+                std::all_of(cells.begin() + 1, cells.end(), [](const QString& c) { return c.trimmed().isEmpty(); });
+            if (!ok && restEmpty) reader = peek;
+        }
+    }
     if (axes.size() != sensors.size())
         return makeError(QStringLiteral("%1:%2: the axis row has %3 fields, the sensor row %4")
                              .arg(file)
@@ -84,7 +99,8 @@ Expected<ImportResult> GaitmapImporter::read(const QString& file, const ImportOp
     std::map<QString, std::vector<SensorColumn>> bySensor;
     for (int i = 0; i < sensors.size(); ++i) {
         const QString sensor = sensors[i].trimmed();
-        if (sensor.isEmpty()) {
+        // The index column's sensor cell is empty, or the level name "sensor" when pandas wrote it.
+        if (sensor.isEmpty() || (i == 0 && isLevelName(sensor))) {
             if (timeColumn >= 0)
                 return makeError(
                     QStringLiteral("%1:1:%2: a second column without a sensor name (the first is column %3)")

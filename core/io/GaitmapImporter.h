@@ -7,7 +7,8 @@
 // sensor, frame sensor: left_sensor → left-foot, right_sensor → right-foot, any other
 // "<name>_sensor" → <name>. gyr is converted to rad/s; an axis cell may name another unit.
 //
-// The first column (empty header) is either a sample index or time in seconds, and the file does
+// The first column (empty header, or "sensor"/"axis": the level names pandas writes for a
+// MultiIndex; a third header row with only the index name is skipped) is either a sample index or time in seconds, and the file does
 // not say which: consecutive integers (step 1) are a sample index at gaitmap's 102.4 Hz, so
 // t = index / 102.4 (sample k of a companion stride file stays at t = k / 102.4); anything else is
 // time in seconds. attributes["sampling_rate"] holds 102.4 or 1 / (median interval).

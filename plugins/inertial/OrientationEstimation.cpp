@@ -41,6 +41,13 @@ OrientationRun estimateOrientation(const OrientationOptions& o, const ImuBatch& 
     bool done = false;
     switch (o.algorithm) {
         case OrientationAlgorithm::Vqf: {
+            if (o.offline) {
+                OfflineOrientation::Params p = o.offlineParams;
+                p.filter = o.filter;
+                OfflineOrientation f(ts, p);
+                done = f.updateBatch(in, run.track, keepGoing);
+                break;
+            }
             OrientationFilter f(ts, o.filter);
             done = runChunked(f, in, run.track, keepGoing);
             break;

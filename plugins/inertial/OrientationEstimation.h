@@ -3,6 +3,7 @@
 // evaluation tool, tests and benchmarks.
 #include "core/util/Expected.h"
 #include "plugins/inertial/Baselines.h"
+#include "plugins/inertial/OfflineOrientation.h"
 #include "plugins/inertial/OrientationFilter.h"
 
 #include <QStringList>
@@ -20,6 +21,10 @@ struct OrientationOptions {
     OrientationAlgorithm algorithm = OrientationAlgorithm::Vqf;
     bool useMagnetometer = true;  // 9D; false = 6D (in.mag is ignored)
     OrientationFilter::Params filter;
+    // vqf only: estimate from the whole recording (forward–backward smoothing, OfflineOrientation)
+    // instead of sample by sample.
+    bool offline = false;
+    OfflineOrientation::Params offlineParams;  // its .filter is replaced by `filter`
     Madgwick::Params madgwick;
     Mahony::Params mahony;
     QuaternionKalman::Params kalman;

@@ -52,6 +52,10 @@ Expected<Plan> makePlan(const RunContext& c) {
     o.filter.rest.thGyr = num("rest_th_gyr", o.filter.rest.thGyr);
     o.filter.rest.thAcc = num("rest_th_acc", o.filter.rest.thAcc);
     o.filter.accRange = num("acc_range", 0.0);
+    o.offline = c.has(QStringLiteral("offline")) && c.flag(QStringLiteral("offline"));
+    if (o.offline && o.algorithm != OrientationAlgorithm::Vqf)
+        return makeError(QStringLiteral("offline: only the vqf algorithm has an offline mode (algorithm is '%1')")
+                             .arg(orientationAlgorithmName(o.algorithm)));
     o.madgwick.beta = num("beta", o.madgwick.beta);
     o.mahony.kp = num("kp", o.mahony.kp);
     o.mahony.ki = num("ki", o.mahony.ki);
@@ -103,6 +107,10 @@ ParameterSpecs OrientationProcessor::parameters() const {
         ParameterSpec::number(QStringLiteral("acc_range"), 0.0, 0.0, kInf, QStringLiteral("m/s^2"),
                               tr("vqf: accelerometer measuring range; samples clipped at it do not correct the "
                                  "inclination (0 = unknown).")),
+        ParameterSpec::boolean(QStringLiteral("offline"), false,
+                               tr("vqf: estimate from the whole recording (forward-backward bias smoothing, "
+                                  "zero-phase inclination, heading of both passes; offline VQF, Laidig & Seel "
+                                  "2023) instead of sample by sample. Same outputs.")),
         ParameterSpec::number(QStringLiteral("beta"), 0.1, 0.0, kInf, QStringLiteral("rad/s"), tr("madgwick: gain.")),
         ParameterSpec::number(QStringLiteral("kp"), 0.74, 0.0, kInf, QStringLiteral("rad/s"),
                               tr("mahony: proportional gain.")),
@@ -156,6 +164,7 @@ Expected<std::vector<ProcessorOutput>> OrientationProcessor::run(const RunContex
     }
     context.report(1.0);
     QJsonObject attributes{{"algorithm", orientationAlgorithmName(plan->options.algorithm)},
+                           {"offline", plan->options.offline},
                            {"mode", plan->options.useMagnetometer ? QStringLiteral("9d") : QStringLiteral("6d")},
                            {"sampling_rate", 1.0 / plan->ts}};
     std::vector<ProcessorOutput> outputs;

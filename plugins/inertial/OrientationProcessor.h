@@ -11,7 +11,7 @@ public:
     QString id() const override { return QStringLiteral("orientation"); }
     QString name() const override;
     QString description() const override;
-    QString version() const override { return QStringLiteral("1.0"); }
+    QString version() const override { return QStringLiteral("1.1"); }
     ParameterSpecs parameters() const override;
     QList<InputSpec> inputs() const override;
     QList<OutputSpec> outputs() const override;

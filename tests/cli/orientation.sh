@@ -52,6 +52,15 @@ expect_ok "export madgwick" "$ATHLOS" export "$P" t24/madgwick --to "$WORK/madgw
 read -r totm _ _ < <(score "$WORK/madgwick.csv" "$WORK/t24-reference.csv")
 below "$tot9" "$totm" || fail "madgwick ($totm°) is not worse than vqf ($tot9°) on trial 24"
 
+# Offline mode (whole-recording smoothing): same columns, and better than online on the tapping trial
+# (1.10° against 1.61° 9D total, docs/validation/inertial.md).
+expect_ok "offline 9d" "$ATHLOS" run "$P" orientation --input t24/imu --output t24/q9off --param mode=9d --param offline=true
+expect_ok "export offline" "$ATHLOS" export "$P" t24/q9off --to "$WORK/q9off.csv"
+[ "$(head -1 "$WORK/q9off.csv")" = "$(head -1 "$WORK/t24-q9d.csv")" ] || fail "offline output columns differ from online"
+read -r toto _ _ < <(score "$WORK/q9off.csv" "$WORK/t24-reference.csv")
+echo "24_disturbed_tapping_A offline: 9D total $toto°"
+below "$toto" "$tot9" || fail "offline ($toto°) is not better than online ($tot9°) on trial 24"
+
 # Simulated football session → GNSS/IMU fusion.
 expect_ok "simulate" "$ATHLOS" run "$P" simulate-imu-gnss --output sim/imu --param duration=40
 expect_ok "gnss-imu" "$ATHLOS" run "$P" gnss-imu --input sim/imu,sim/imu-gnss --output sim/fused
@@ -63,5 +72,6 @@ grep -q "^gyr_offset," "$WORK/cal.csv" || fail "calibration table has no gyr_off
 expect_fail "six-position needs positions" "acc_calibration" "$ATHLOS" run "$P" imu-calibration --input sim/imu --output sim/c2 --param acc_calibration=on
 
 expect_fail "bad algorithm" "algorithm" "$ATHLOS" run "$P" orientation --input t02/imu --output t02/x --param algorithm=bogus
+expect_fail "offline needs vqf" "offline" "$ATHLOS" run "$P" orientation --input t02/imu --output t02/x --param offline=true --param algorithm=madgwick
 expect_fail "bad mode" "mode" "$ATHLOS" run "$P" orientation --input t02/imu --output t02/x --param mode=7d
 finish

@@ -107,6 +107,39 @@ TEST(GaitmapImport, StairFileWithTimeInSecondsAndGroupedColumns) {
     EXPECT_EQ(right.info().provenance.processorId, "import:gaitmap");
 }
 
+TEST(GaitmapImport, PandasLevelNamesInTheIndexColumn) {
+    // pandas' to_csv of a MultiIndex frame writes the level names ("sensor", "axis") into the index
+    // column, and a third row with the index name when it has one: the same streams as with empty cells.
+    const Raw raw = readRaw(kStride);
+    QFile in(kStride);
+    ASSERT_TRUE(in.open(QIODevice::ReadOnly));
+    QByteArray text = in.readAll();
+    in.close();
+    ASSERT_TRUE(text.startsWith(",left_sensor"));
+    const qsizetype secondLine = text.indexOf('\n') + 1;
+    ASSERT_EQ(text.at(secondLine), ',');
+    QTemporaryDir dir;
+    const QByteArray width = QByteArray(raw.sensors.size() - 1, ',');
+    for (const bool indexNameRow : {false, true}) {
+        QByteArray named = text;
+        named.insert(secondLine, "axis");
+        named.insert(0, "sensor");
+        if (indexNameRow) named.insert(named.indexOf('\n', secondLine + 10) + 1, "sample" + width + "\n");
+        const QString path = dir.filePath(indexNameRow ? "named_index.csv" : "named.csv");
+        QFile out(path);
+        ASSERT_TRUE(out.open(QIODevice::WriteOnly));
+        out.write(named);
+        out.close();
+        const auto r = importGaitmap(path);
+        ASSERT_TRUE(r.ok()) << r.message().toStdString();
+        expectMatchesRaw(*r, raw);
+        const StreamData& d = **std::get<Stream>(r->items[0].item).data();
+        EXPECT_DOUBLE_EQ(d.t[1], 1.0 / GaitmapImporter::kIndexRate);  // still read as a sample index
+        GaitmapImporter importer;
+        EXPECT_TRUE(importer.canRead(path, named.left(4096)));
+    }
+}
+
 TEST(GaitmapImport, DetectsOnlyGaitmapFiles) {
     GaitmapImporter importer;
     EXPECT_TRUE(importer.canRead("walk.csv", ",left_sensor,right_sensor\n,acc_x,acc_x\n0,1,2\n"));

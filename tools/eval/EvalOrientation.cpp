@@ -1,4 +1,5 @@
-// athlos-eval-orientation <broad folder> [--algorithms a,b,...]
+// athlos-eval-orientation <broad folder> [--algorithms a,b,...] [--offline]
+// --offline: vqf also runs in offline mode (whole-recording smoothing), printed as vqf-offline.
 // Runs every orientation algorithm (6D and 9D) on every BROAD trial (*.hdf5) of a folder and prints
 // the benchmark's RMS errors (deg) per trial and the mean over trials, as defined in
 // shared/data/README.md: 9D judged on total, 6D on inclination. One parameter set for all trials.
@@ -59,12 +60,15 @@ int main(int argc, char** argv) {
     QCoreApplication app(argc, argv);
     const QStringList args = app.arguments();
     if (args.size() < 2) {
-        std::fprintf(stderr, "usage: athlos-eval-orientation <broad folder> [--algorithms vqf,madgwick,...]\n");
+        std::fprintf(stderr,
+                     "usage: athlos-eval-orientation <broad folder> [--algorithms vqf,madgwick,...] [--offline]\n");
         return 2;
     }
     QStringList algorithms = orientationAlgorithmNames();
     const int ai = args.indexOf(QStringLiteral("--algorithms"));
     if (ai > 0 && ai + 1 < args.size()) algorithms = args.at(ai + 1).split(QLatin1Char(','));
+    if (args.contains(QStringLiteral("--offline")) && algorithms.contains(QStringLiteral("vqf")))
+        algorithms.insert(algorithms.indexOf(QStringLiteral("vqf")) + 1, QStringLiteral("vqf-offline"));
     QDir dir(args.at(1));
     const QStringList files =
         dir.entryList({QStringLiteral("*.hdf5"), QStringLiteral("*.h5")}, QDir::Files, QDir::Name);
@@ -83,7 +87,8 @@ int main(int argc, char** argv) {
     }
     std::printf("%-38s %-10s %8s %8s %8s | %8s\n", "trial", "algorithm", "9D tot", "9D head", "9D incl", "6D incl");
     for (const QString& name : algorithms) {
-        auto algorithm = parseOrientationAlgorithm(name);
+        const bool offline = name == QLatin1String("vqf-offline");
+        auto algorithm = parseOrientationAlgorithm(offline ? QStringLiteral("vqf") : name);
         if (!algorithm) {
             std::fprintf(stderr, "%s\n", qPrintable(algorithm.message()));
             return 2;
@@ -104,6 +109,7 @@ int main(int argc, char** argv) {
             for (std::size_t r = 0; r < ref.size(); ++r) mask[r] = maskVec[r];
             OrientationOptions options;
             options.algorithm = *algorithm;
+            options.offline = offline;
             options.useMagnetometer = true;
             const auto r9 = estimateOrientation(options, batch, trial.ts);
             options.useMagnetometer = false;

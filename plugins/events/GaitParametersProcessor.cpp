@@ -1,0 +1,273 @@
+#include "plugins/events/GaitParametersProcessor.h"
+
+#include "core/processing/OutputStreams.h"
+#include "core/processing/Translator.h"
+#include "plugins/events/GaitEventsProcessor.h"
+#include "plugins/events/StaticGyroBias.h"
+#include "plugins/events/StrideIntegrator.h"
+
+#include <QJsonArray>
+#include <cmath>
+#include <limits>
+
+namespace athlos::events {
+
+namespace {
+constexpr Translator tr{"athlos::events"};
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+struct Plan {
+    std::shared_ptr<const StreamData> data;
+    int acc = -1, gyr = -1;
+    StrideSegmentationParams segmentation;
+    StrideIntegrationParams integration;
+    double staticThreshold = 0.0, staticDuration = 0.0;
+    QString foot;
+};
+
+// Index of x of three adjacent columns <prefix>x, y, z in the expected unit, or an error.
+Expected<int> vectorColumns(const RunContext& c, const StreamInfo& info, const QString& prefix, const QString& unit) {
+    const int i = info.columnIndex(prefix + QLatin1Char('x'));
+    if (i < 0 || info.columnIndex(prefix + QLatin1Char('y')) != i + 1 ||
+        info.columnIndex(prefix + QLatin1Char('z')) != i + 2)
+        return c.inputError(0, QStringLiteral("needs adjacent columns %1x, %1y, %1z (it has: %2)")
+                                   .arg(prefix, info.columnNames().join(QStringLiteral(", "))));
+    for (int k = 0; k < 3; ++k) {
+        const auto& column = info.columns[std::size_t(i + k)];
+        if (!column.unit.isEmpty() && column.unit != unit)
+            return c.inputError(
+                0,
+                QStringLiteral("column %1 is in '%2'; gait-parameters expects %3").arg(column.name, column.unit, unit));
+    }
+    return i;
+}
+
+Expected<Plan> makePlan(const RunContext& c) {
+    Plan plan;
+    const Stream* stream = c.stream(0);
+    if (!stream) return makeError(QStringLiteral("input '%1' was not given").arg(c.inputRole(0)));
+    const StreamInfo& info = stream->info();
+    auto acc = vectorColumns(c, info, QStringLiteral("acc_"), QStringLiteral("m/s^2"));
+    if (!acc) return acc.error();
+    auto gyr = vectorColumns(c, info, QStringLiteral("gyr_"), QStringLiteral("rad/s"));
+    if (!gyr) return gyr.error();
+    plan.acc = *acc;
+    plan.gyr = *gyr;
+    auto& p = plan.segmentation;
+    const QString axis = c.text(QStringLiteral("ml_axis"));
+    p.mlAxis = axis == QLatin1String("x") ? 0 : axis == QLatin1String("z") ? 2 : 1;
+    const QString sign = c.text(QStringLiteral("swing_sign"));
+    p.swingSign = sign == QLatin1String("positive") ? 1 : sign == QLatin1String("negative") ? -1 : 0;
+    p.swingThreshold = c.number(QStringLiteral("swing_threshold"));
+    p.minStrideTime = c.number(QStringLiteral("min_stride"));
+    p.maxStrideTime = c.number(QStringLiteral("max_stride"));
+    p.restWindow = c.number(QStringLiteral("rest_window"));
+    p.restThreshold = c.number(QStringLiteral("rest_threshold"));
+    p.stanceSearch = c.number(QStringLiteral("stance_search"));
+    p.tcWindow = c.number(QStringLiteral("tc_window"));
+    p.icWindow = c.number(QStringLiteral("ic_window"));
+    plan.integration.levelWindow = c.number(QStringLiteral("level_window"));
+    plan.staticThreshold = p.staticThreshold = c.number(QStringLiteral("static_threshold"));
+    p.standDuration = c.number(QStringLiteral("stand_duration"));
+    plan.staticDuration = c.number(QStringLiteral("static_duration"));
+    if (p.maxStrideTime <= p.minStrideTime)
+        return makeError(QStringLiteral("max_stride: %1 s must be longer than min_stride (%2 s)")
+                             .arg(p.maxStrideTime)
+                             .arg(p.minStrideTime));
+    auto input = c.samples(0);
+    if (!input) return input.error();
+    plan.data = input->data;
+    auto interval = input->samplingInterval();
+    if (!interval) return interval.error();
+    if (2.0 * *interval > p.stanceSearch)
+        return makeError(QStringLiteral("stance_search: %1 s spans fewer than 2 samples of '%2' (interval %3 s)")
+                             .arg(p.stanceSearch)
+                             .arg(input->path)
+                             .arg(*interval));
+    plan.foot = GaitEventsProcessor::footOf(info);
+    return plan;
+}
+
+TableColumn numberColumn(const char* name, const char* unit) {
+    return TableColumn{QString::fromLatin1(name), QString::fromLatin1(unit), false, {}, {}};
+}
+
+}  // namespace
+
+QString GaitParametersProcessor::name() const { return tr("Gait parameters (foot IMU)"); }
+
+QString GaitParametersProcessor::description() const {
+    return tr(
+        "Strides between consecutive mid-stance (minimum-velocity) instants of a foot-mounted IMU and, per "
+        "stride, zero-velocity-aided integration (orientation levelled from gravity at each mid-stance, "
+        "inclination and velocity drift removed linearly): stride length (horizontal) and height, stride, "
+        "stance and swing time, cadence, gait speed, toe clearance and turning angle; plus the foot "
+        "trajectory.");
+}
+
+ParameterSpecs GaitParametersProcessor::parameters() const {
+    const StrideSegmentationParams d;
+    const StrideIntegrationParams di;
+    return {
+        ParameterSpec::choice(QStringLiteral("ml_axis"),
+                              {QStringLiteral("x"), QStringLiteral("y"), QStringLiteral("z")}, QStringLiteral("y"),
+                              tr("Sensor axis along the medio-lateral direction (y when x points forward and z up).")),
+        ParameterSpec::choice(QStringLiteral("swing_sign"),
+                              {QStringLiteral("auto"), QStringLiteral("positive"), QStringLiteral("negative")},
+                              QStringLiteral("auto"),
+                              tr("Sign of the medio-lateral angular velocity during swing; auto: the sign of "
+                                 "the longest sustained rotation.")),
+        ParameterSpec::number(QStringLiteral("swing_threshold"), d.swingThreshold, 0.0, kInf, QStringLiteral("rad/s"),
+                              tr("Minimum mid-swing angular velocity of a stride (gait-events' default; walking "
+                                 "peaks are 4–7 rad/s, Rampp et al. 2015).")),
+        ParameterSpec::number(QStringLiteral("min_stride"), d.minStrideTime, 0.05, kInf, QStringLiteral("s"),
+                              tr("Shortest stride; closer swing peaks count as one.")),
+        ParameterSpec::number(QStringLiteral("max_stride"), d.maxStrideTime, 0.1, kInf, QStringLiteral("s"),
+                              tr("Swings further apart have the foot standing between them: the strides end "
+                                 "and start next to the standing phase.")),
+        ParameterSpec::number(QStringLiteral("rest_window"), d.restWindow, 0.0, kInf, QStringLiteral("s"),
+                              tr("Moving average of the gyroscope norm whose minimum is the mid-stance "
+                                 "(gaitmap NormZuptDetector: 0.15 s).")),
+        ParameterSpec::number(
+            QStringLiteral("rest_threshold"), d.restThreshold, 0.0, kInf, QStringLiteral("rad/s"),
+            tr("Largest averaged gyroscope norm accepted as a zero-velocity mid-stance. gaitmap's static "
+               "threshold is 15 deg/s (0.26 rad/s), but the quietest 0.15 s of a stance reaches only "
+               "0.2–1.3 rad/s in gaitmap's own walk (and more in running), so the default is 2 rad/s; it "
+               "rejects a mid-stance cut off by the start or end of the data.")),
+        ParameterSpec::number(QStringLiteral("static_threshold"), d.staticThreshold, 0.0, kInf, QStringLiteral("rad/s"),
+                              tr("Standing: gyroscope norm averaged over rest_window below this (gaitmap "
+                                 "NormZuptDetector: 15 deg/s); pauses end strides, and the mean rate while "
+                                 "standing is the gyroscope bias, removed before integration.")),
+        ParameterSpec::number(QStringLiteral("stand_duration"), d.standDuration, 0.0, kInf, QStringLiteral("s"),
+                              tr("A pause between two swings (below static_threshold at least this long) ends "
+                                 "the stride before where the foot comes to rest and starts the next where it "
+                                 "leaves, so that no stride contains the pause. Shorter than a stride, longer "
+                                 "than the foot-flat phase of slow walking.")),
+        ParameterSpec::number(QStringLiteral("static_duration"), 1.0, 0.0, kInf, QStringLiteral("s"),
+                              tr("Shortest standing phase used for the gyroscope bias; 0: no bias removal.")),
+        ParameterSpec::number(QStringLiteral("stance_search"), d.stanceSearch, 0.0, kInf, QStringLiteral("s"),
+                              tr("Next to a standing phase, the mid-stance is searched this long after the "
+                                 "last swing and before the next one.")),
+        ParameterSpec::number(QStringLiteral("tc_window"), d.tcWindow, 0.01, kInf, QStringLiteral("s"),
+                              tr("Search window for toe-off before the swing peak (as gait-events).")),
+        ParameterSpec::number(QStringLiteral("ic_window"), d.icWindow, 0.01, kInf, QStringLiteral("s"),
+                              tr("Search window for initial contact after the swing peak (as gait-events).")),
+        ParameterSpec::number(QStringLiteral("level_window"), di.levelWindow, 0.0, kInf, QStringLiteral("s"),
+                              tr("Accelerometer average at a mid-stance that gives the up direction.")),
+    };
+}
+
+QList<InputSpec> GaitParametersProcessor::inputs() const {
+    return {InputSpec{QStringLiteral("imu"),
+                      {QStringLiteral("imu")},
+                      false,
+                      false,
+                      tr("Foot-mounted IMU: acc_x..z (m/s^2), gyr_x..z (rad/s), x forward along the foot, z up "
+                         "through the sole.")}};
+}
+
+QList<OutputSpec> GaitParametersProcessor::outputs() const {
+    return {OutputSpec{QStringLiteral("gait-parameters"), true, QString(),
+                       tr("One row per stride: start, end, stride_length, stride_height, stride_time, "
+                          "stance_time, swing_time, cadence, gait_speed, max_toe_clearance, turning_angle.")},
+            OutputSpec{QStringLiteral("trajectory"), false, QStringLiteral("trajectory"),
+                       tr("Foot (sensor) positions x, y, z (m): z up, x the heading at the first mid-stance.")}};
+}
+
+Status GaitParametersProcessor::prepare(const RunContext& context) const { return statusOf(makePlan(context)); }
+
+Expected<std::vector<ProcessorOutput>> GaitParametersProcessor::run(const RunContext& context) const {
+    auto plan = makePlan(context);
+    if (!plan) return plan.error();
+    const StreamData& d = *plan->data;
+    const auto stride = std::size_t(d.columns);
+    const double* acc = d.values.data() + plan->acc;
+    // The gyroscope without its bias (from the standing phases), three columns per sample.
+    const StaticGyroBias bias =
+        estimateStaticGyroBias(d.t.data(), d.values.data() + plan->gyr, d.rows(), stride, plan->segmentation.restWindow,
+                               plan->staticThreshold, plan->staticDuration);
+    std::vector<double> unbiased(3 * d.rows());
+    for (std::size_t k = 0; k < d.rows(); ++k)
+        for (int i = 0; i < 3; ++i)
+            unbiased[3 * k + std::size_t(i)] = d.values[k * stride + std::size_t(plan->gyr + i)] - bias.bias[i];
+    const double* gyr = unbiased.data();
+    context.report(0.1, QStringLiteral("finding strides"));
+    const StrideSegmentation segmentation = segmentStrides(plan->segmentation, d.t.data(), gyr, d.rows(), 3);
+    // Nothing found is refused with the likely causes, not stored as an empty table.
+    if (segmentation.strides.empty()) {
+        const QString why =
+            segmentation.swings == 0
+                ? QStringLiteral("no swing above swing_threshold = %1 rad/s about ml_axis = %2")
+                      .arg(plan->segmentation.swingThreshold)
+                      .arg(context.text(QStringLiteral("ml_axis")))
+                : QStringLiteral("%1 swings, none with a mid-stance below rest_threshold = %2 rad/s on both sides")
+                      .arg(segmentation.swings)
+                      .arg(plan->segmentation.restThreshold);
+        return context.inputError(0, QStringLiteral("no stride found in %1 s of data (%2): is it a foot-mounted "
+                                                    "IMU during walking or running?")
+                                         .arg(d.rows() ? d.t.back() - d.t.front() : 0.0, 0, 'g', 4)
+                                         .arg(why));
+    }
+    if (context.isCancelled()) return cancelledError();
+    context.report(0.4, QStringLiteral("integrating strides"));
+    const FootTrajectory trajectory =
+        integrateStrides(plan->integration, segmentation.strides, d.t.data(), acc, stride, gyr, 3, d.rows());
+
+    Table table;
+    table.kind = QStringLiteral("gait-parameters");
+    table.attributes =
+        QJsonObject{{QStringLiteral("foot"), plan->foot},
+                    {QStringLiteral("swing_sign"), segmentation.swingSign},
+                    {QStringLiteral("gyr_bias"), QJsonArray{bias.bias.x(), bias.bias.y(), bias.bias.z()}},
+                    {QStringLiteral("gyr_bias_static_time"), bias.staticTime},
+                    {QStringLiteral("strides"), int(trajectory.strides.size())},
+                    {QStringLiteral("stride_definition"), QStringLiteral("mid-stance to mid-stance")},
+                    {QStringLiteral("max_toe_clearance"),
+                     QStringLiteral("sensor's max height above the higher of its two mid-stance "
+                                    "heights")}};
+    std::vector<TableColumn> c{numberColumn("start", "s"),          numberColumn("end", "s"),
+                               numberColumn("stride_length", "m"),  numberColumn("stride_height", "m"),
+                               numberColumn("stride_time", "s"),    numberColumn("stance_time", "s"),
+                               numberColumn("swing_time", "s"),     numberColumn("cadence", "steps/min"),
+                               numberColumn("gait_speed", "m/s"),   numberColumn("max_toe_clearance", "m"),
+                               numberColumn("turning_angle", "rad")};
+    for (std::size_t i = 0; i < trajectory.strides.size(); ++i) {
+        const StrideEstimate& e = trajectory.strides[i];
+        const StrideSegment& s = segmentation.strides[i];
+        const double strideTime = e.tEnd - e.tStart;
+        const double swing = d.t[s.ic] - d.t[s.tc];
+        const double values[] = {e.tStart,
+                                 e.tEnd,
+                                 e.length,
+                                 e.height,
+                                 strideTime,
+                                 strideTime - swing,
+                                 swing,
+                                 120.0 / strideTime,
+                                 e.length / strideTime,
+                                 e.maxClearance,
+                                 e.turningAngle};
+        for (std::size_t k = 0; k < c.size(); ++k) c[k].numbers.push_back(values[k]);
+    }
+    table.columns = std::move(c);
+
+    StreamData positions(trajectory.position.size(), 3);
+    for (std::size_t r = 0; r < trajectory.position.size(); ++r) {
+        positions.t[r] = d.t[trajectory.first + r];
+        for (int k = 0; k < 3; ++k) positions.at(r, k) = trajectory.position[r][k];
+    }
+    const QString frame = QStringLiteral("foot-world");
+    QJsonObject attributes{
+        {QStringLiteral("frame_definition"),
+         QStringLiteral("z up, x the sensor's heading at the first mid-stance, origin at the first mid-stance")},
+        {QStringLiteral("foot"), plan->foot}};
+    context.report(1.0);
+    std::vector<ProcessorOutput> outputs;
+    outputs.push_back({QString(), std::move(table)});
+    outputs.push_back({QStringLiteral("trajectory"),
+                       outputStream(QStringLiteral("trajectory"), frame, columnsOf({"x", "y", "z"}, {"m", "m", "m"}),
+                                    std::move(positions), attributes)});
+    return outputs;
+}
+
+}  // namespace athlos::events

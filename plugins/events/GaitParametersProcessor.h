@@ -1,0 +1,23 @@
+#pragma once
+// Processor `gait-parameters`: a foot IMU stream in; one table row per stride (mid-stance to
+// mid-stance, StrideSegmenter) with the spatial parameters from zero-velocity-aided integration
+// (StrideIntegrator) and the temporal ones from the gyroscope events, plus the foot trajectory as
+// a stream (suffix "trajectory").
+#include "core/processing/Processor.h"
+
+namespace athlos::events {
+
+class GaitParametersProcessor : public Processor {
+public:
+    QString id() const override { return QStringLiteral("gait-parameters"); }
+    QString name() const override;
+    QString description() const override;
+    QString version() const override { return QStringLiteral("1"); }
+    ParameterSpecs parameters() const override;
+    QList<InputSpec> inputs() const override;
+    QList<OutputSpec> outputs() const override;
+    Status prepare(const RunContext& context) const override;
+    Expected<std::vector<ProcessorOutput>> run(const RunContext& context) const override;
+};
+
+}  // namespace athlos::events

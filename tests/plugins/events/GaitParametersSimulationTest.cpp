@@ -1,0 +1,223 @@
+// gait-parameters' algorithm (StrideSegmenter + StrideIntegrator) on the foot-motion simulator,
+// whose stride lengths, heights, turns and swing heights are known: stride count exact, lengths
+// within 1.5 %, turns within 0.03 rad, with noise and gyroscope/accelerometer biases.
+// Figures: docs/validation/gait-parameters.md.
+#include "plugins/events/FootMotionSimulator.h"
+#include "plugins/events/StaticGyroBias.h"
+#include "plugins/events/StrideIntegrator.h"
+
+#include <cmath>
+#include <gtest/gtest.h>
+
+using namespace athlos::events;
+
+namespace {
+
+struct Result {
+    SimRecording rec;
+    StrideSegmentation segmentation;
+    FootTrajectory trajectory;
+    StaticGyroBias bias;
+};
+
+Result run(const SimConfig& config, StrideSegmentationParams params = {}) {
+    Result r;
+    r.rec = simulateFoot(config);
+    const double* v = r.rec.values.data();
+    const std::size_t n = r.rec.t.size();
+    // As the processor does: the gyroscope bias from the standing phases removed first.
+    r.bias = estimateStaticGyroBias(r.rec.t.data(), v + 3, n, 6, params.restWindow, params.staticThreshold, 1.0);
+    std::vector<double> gyr(3 * n);
+    for (std::size_t k = 0; k < n; ++k)
+        for (std::size_t i = 0; i < 3; ++i) gyr[3 * k + i] = v[6 * k + 3 + i] - r.bias.bias[int(i)];
+    r.segmentation = segmentStrides(params, r.rec.t.data(), gyr.data(), n, 3);
+    r.trajectory = integrateStrides({}, r.segmentation.strides, r.rec.t.data(), v, 6, gyr.data(), 3, n);
+    return r;
+}
+
+// Every simulated stride found once: its estimate starts in the stance before its swing and ends
+// in the stance after it.
+void expectMatched(const Result& r) {
+    const auto& truth = r.rec.truth;
+    ASSERT_EQ(r.trajectory.strides.size(), truth.size());
+    for (std::size_t i = 0; i < truth.size(); ++i) {
+        const StrideEstimate& e = r.trajectory.strides[i];
+        const double previousSwingEnd = i ? truth[i - 1].swingStart + truth[i - 1].swing : 0.0;
+        EXPECT_GE(e.tStart, previousSwingEnd) << "stride " << i;
+        EXPECT_LE(e.tStart, truth[i].swingStart) << "stride " << i;
+        EXPECT_GE(e.tEnd, truth[i].swingStart + truth[i].swing) << "stride " << i;
+        if (i + 1 < truth.size()) {
+            EXPECT_LE(e.tEnd, truth[i + 1].swingStart) << "stride " << i;
+        }
+    }
+}
+
+double relativeError(double estimate, double truth) { return std::abs(estimate - truth) / truth; }
+
+SimConfig levelWalk() {
+    SimConfig c;
+    for (int i = 0; i < 12; ++i) {
+        SimStride s;
+        s.length = 1.2 + 0.04 * i;  // 1.20 … 1.64 m
+        s.stance = 0.6 + 0.01 * (i % 3);
+        c.strides.push_back(s);
+    }
+    return c;
+}
+
+}  // namespace
+
+TEST(GaitParametersSimulation, LevelWalkLengthsWithinOnePointFivePercent) {
+    const Result r = run(levelWalk());
+    expectMatched(r);
+    // The bias from the 2 s of standing at each end (noise 0.01 rad/s over ~400 samples).
+    EXPECT_GT(r.bias.staticTime, 3.0);
+    EXPECT_LT((r.bias.bias - SimConfig{}.gyrBias).norm(), 0.002) << r.bias.bias.transpose();
+    double worst = 0.0;
+    for (std::size_t i = 0; i < r.rec.truth.size(); ++i) {
+        const auto& truth = r.rec.truth[i];
+        const auto& e = r.trajectory.strides[i];
+        worst = std::max(worst, relativeError(e.length, truth.length));
+        EXPECT_LT(relativeError(e.length, truth.length), 0.015) << "stride " << i << ": " << e.length;
+        EXPECT_NEAR(e.height, 0.0, 0.03) << "stride " << i;
+        EXPECT_NEAR(e.maxClearance, truth.lift, 0.015) << "stride " << i;
+        EXPECT_NEAR(e.turningAngle, 0.0, 0.02) << "stride " << i;
+    }
+    std::printf("[ figures  ] level walk, 102.4 Hz: %zu strides, worst stride-length error %.2f %%\n",
+                r.trajectory.strides.size(), 100.0 * worst);
+}
+
+TEST(GaitParametersSimulation, TurnsGiveTheirHeadingChange) {
+    SimConfig c;
+    const double turns[] = {0.0, 0.0, 0.5, 0.5, 0.5, -0.3, 0.0, 1.0, -0.8, 0.0};
+    for (double turn : turns) {
+        SimStride s;
+        s.turn = turn;
+        s.length = std::abs(turn) > 0.7 ? 0.8 : 1.3;  // tight turns take short strides
+        c.strides.push_back(s);
+    }
+    const Result r = run(c);
+    expectMatched(r);
+    double worstTurn = 0.0, worstLength = 0.0;
+    for (std::size_t i = 0; i < r.rec.truth.size(); ++i) {
+        const auto& truth = r.rec.truth[i];
+        const auto& e = r.trajectory.strides[i];
+        EXPECT_NEAR(e.turningAngle, truth.turn, 0.03) << "stride " << i;
+        EXPECT_LT(relativeError(e.length, truth.length), 0.02) << "stride " << i << ": " << e.length;
+        worstTurn = std::max(worstTurn, std::abs(e.turningAngle - truth.turn));
+        worstLength = std::max(worstLength, relativeError(e.length, truth.length));
+    }
+    // The trajectory's end point is the sum of the strides: the path closes where the truth does.
+    std::printf("[ figures  ] turns: worst turning-angle error %.4f rad, worst length error %.2f %%\n", worstTurn,
+                100.0 * worstLength);
+}
+
+TEST(GaitParametersSimulation, StairsGiveHorizontalLengthAndStepPairHeight) {
+    for (double rise : {0.34, -0.34}) {  // two 17 cm steps per stride, up and down
+        SimConfig c;
+        c.rate = 204.8;
+        for (int i = 0; i < 8; ++i) {
+            SimStride s;
+            s.length = 0.58;
+            s.rise = rise;
+            s.lift = 0.08;
+            s.pitch = 0.4;
+            s.swing = 0.55;
+            c.strides.push_back(s);
+        }
+        const Result r = run(c);
+        expectMatched(r);
+        double worstHeight = 0.0, worstLength = 0.0;
+        for (std::size_t i = 0; i < r.rec.truth.size(); ++i) {
+            const auto& e = r.trajectory.strides[i];
+            EXPECT_NEAR(e.height, rise, 0.01) << "stride " << i;
+            EXPECT_LT(relativeError(e.length, 0.58), 0.02) << "stride " << i << ": " << e.length;
+            worstHeight = std::max(worstHeight, std::abs(e.height - rise));
+            worstLength = std::max(worstLength, relativeError(e.length, 0.58));
+        }
+        std::printf("[ figures  ] stairs %+.2f m per stride, 204.8 Hz: worst height error %.1f mm, worst length "
+                    "error %.2f %%\n",
+                    rise, 1000.0 * worstHeight, 100.0 * worstLength);
+    }
+}
+
+TEST(GaitParametersSimulation, RunningWithShortStance) {
+    SimConfig c;
+    c.rate = 204.8;
+    for (int i = 0; i < 14; ++i) {
+        SimStride s;
+        s.length = 2.4 + 0.05 * (i % 4);
+        s.stance = 0.18;
+        s.swing = 0.52;
+        s.lift = 0.25;
+        s.pitch = 1.0;
+        c.strides.push_back(s);
+    }
+    const Result r = run(c);
+    expectMatched(r);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < r.rec.truth.size(); ++i) {
+        const double error = relativeError(r.trajectory.strides[i].length, r.rec.truth[i].length);
+        EXPECT_LT(error, 0.015) << "stride " << i;
+        worst = std::max(worst, error);
+    }
+    std::printf("[ figures  ] running (stance 0.18 s), 204.8 Hz: %zu strides, worst length error %.2f %%\n",
+                r.trajectory.strides.size(), 100.0 * worst);
+}
+
+TEST(GaitParametersSimulation, StandingStillBetweenBoutsAddsNoStride) {
+    SimConfig c = levelWalk();
+    c.strides[6].stance = 4.0;  // the walker stops for 4 s, then walks on
+    const Result r = run(c);
+    expectMatched(r);
+    EXPECT_EQ(r.segmentation.swings, c.strides.size());
+    // The strides next to the stop keep their lengths: the standing time is not integrated.
+    EXPECT_LT(relativeError(r.trajectory.strides[5].length, c.strides[5].length), 0.015);
+    EXPECT_LT(relativeError(r.trajectory.strides[6].length, c.strides[6].length), 0.015);
+}
+
+TEST(GaitParametersSimulation, ShortPauseIsInNoStride) {
+    // A 1.5 s pause keeps the swings closer than max_stride (2.5 s): the strides around it must
+    // still end where the foot comes to rest and start where it leaves, not in the middle of the
+    // pause (which would move the stride midpoints out of the contact-to-contact strides).
+    SimConfig c = levelWalk();
+    c.strides[6].stance = 1.5;
+    const Result r = run(c);
+    expectMatched(r);
+    const auto& truth = r.rec.truth;
+    const double pauseFrom = truth[5].swingStart + truth[5].swing, pauseTo = truth[6].swingStart;
+    EXPECT_LT(r.trajectory.strides[5].tEnd, pauseFrom + 0.5);  // the middle is 0.75 s in
+    EXPECT_GT(r.trajectory.strides[6].tStart, pauseTo - 0.5);
+    EXPECT_LT(relativeError(r.trajectory.strides[5].length, c.strides[5].length), 0.015);
+    EXPECT_LT(relativeError(r.trajectory.strides[6].length, c.strides[6].length), 0.015);
+}
+
+TEST(GaitParametersSimulation, DataStartingMidSwingDropsThatStride) {
+    SimConfig c = levelWalk();
+    c.standStart = 0.0;
+    c.strides[0].stance = 0.0;  // the recording starts with the first swing
+    const Result r = run(c);
+    ASSERT_EQ(r.trajectory.strides.size(), c.strides.size() - 1);
+    EXPECT_GE(r.trajectory.strides.front().tStart, c.strides[0].swing);
+}
+
+TEST(GaitParametersSimulation, TrajectoryIsContinuousAndEndsAtTheSumOfStrides) {
+    SimConfig c = levelWalk();
+    for (auto& s : c.strides) s.turn = 0.15;
+    const Result r = run(c);
+    expectMatched(r);
+    // Truth: footholds along a polygon with headings 0, 0.15, 0.30, ... (each stride's mean).
+    Eigen::Vector2d end = Eigen::Vector2d::Zero();
+    double heading = 0.0;
+    for (const auto& s : c.strides) {
+        end += s.length * Eigen::Vector2d(std::cos(heading + 0.5 * s.turn), std::sin(heading + 0.5 * s.turn));
+        heading += s.turn;
+    }
+    const auto& pos = r.trajectory.position;
+    ASSERT_FALSE(pos.empty());
+    const Eigen::Vector2d estimate = pos.back().head<2>();
+    double path = 0.0;
+    for (const auto& s : c.strides) path += s.length;
+    EXPECT_LT((estimate - end).norm(), 0.02 * path) << estimate.transpose() << " vs " << end.transpose();
+    for (std::size_t k = 1; k < pos.size(); ++k) ASSERT_LT((pos[k] - pos[k - 1]).norm(), 0.1) << k;
+}

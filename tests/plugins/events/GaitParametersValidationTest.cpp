@@ -1,0 +1,164 @@
+// gait-parameters through the real runner on gaitmap's walk (left and right foot, 102.4 Hz) against
+// the strides segmented from motion capture: every reference stride (IC to IC) contains the
+// midpoint of exactly one estimated stride (the judged rule of issue #17). The shared data has no
+// stride-length reference, so lengths are checked for plausibility only (healthy walking
+// 1.0–1.8 m, small spread). Stairs: stride height ≈ a step pair. Figures:
+// docs/validation/gait-parameters.md.
+#include "plugins/events/GaitParametersProcessor.h"
+
+#include "core/io/Importer.h"
+#include "core/processing/ProcessorRunner.h"
+#include "tools/eval/GaitEvaluation.h"
+
+#include <QDir>
+#include <QTemporaryDir>
+#include <algorithm>
+#include <cmath>
+#include <gtest/gtest.h>
+
+using namespace athlos;
+using namespace athlos::events;
+
+namespace {
+
+const QDir kDir(QStringLiteral(ATHLOS_SHARED_DATA_DIR "/gaitmap"));
+
+class GaitParametersValidation : public ::testing::Test {
+protected:
+    void SetUp() override {
+        if (!QFileInfo::exists(kDir.filePath(QStringLiteral("imu_sample_ic_stride.csv"))))
+            GTEST_SKIP() << "no gaitmap data";
+        ASSERT_TRUE(dir_.isValid());
+        project_ = Project::create(dir_.filePath(QStringLiteral("p.athlos")));
+    }
+    void import(const QString& file, const QString& as) {
+        ImportOptions options;
+        options.format = QStringLiteral("gaitmap");
+        options.target = as;
+        auto imported = importFile(kDir.filePath(file), options);
+        ASSERT_TRUE(imported.ok()) << qPrintable(imported.message());
+        ASSERT_TRUE(applyImport(*project_, std::move(imported).value(), false).ok());
+    }
+    const Table* run(const QString& input, const QString& output) {
+        auto r = runProcessor(*project_, processor_, RunRequest{processor_.id(), {input}, output, {}});
+        EXPECT_TRUE(r.ok()) << qPrintable(r.message());
+        return r.ok() ? project_->table(output) : nullptr;
+    }
+    QTemporaryDir dir_;
+    std::unique_ptr<Project> project_;
+    GaitParametersProcessor processor_;
+};
+
+std::vector<double> column(const Table& t, const char* name) {
+    const TableColumn* c = t.column(QString::fromLatin1(name));
+    EXPECT_NE(c, nullptr) << name;
+    return c ? c->numbers : std::vector<double>{};
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+}  // namespace
+
+TEST_F(GaitParametersValidation, EveryMotionCaptureStrideMatchedOnce) {
+    import(QStringLiteral("imu_sample_ic_stride.csv"), QStringLiteral("walk"));
+    auto reference = readStrideBorders(kDir.filePath(QStringLiteral("stride_borders_sample_ic_stride.csv")), 102.4);
+    ASSERT_TRUE(reference.ok()) << qPrintable(reference.message());
+    ASSERT_EQ(reference->size(), 14u);
+    int matched = 0;
+    std::vector<double> lengths;
+    for (const QString& foot : {QStringLiteral("left"), QStringLiteral("right")}) {
+        const Table* table = run(QStringLiteral("walk/%1-foot").arg(foot), QStringLiteral("walk/%1-strides").arg(foot));
+        ASSERT_NE(table, nullptr);
+        EXPECT_EQ(table->column(QStringLiteral("cadence"))->unit, QStringLiteral("steps/min"));
+        const auto start = column(*table, "start"), end = column(*table, "end"),
+                   length = column(*table, "stride_length");
+        for (const ReferenceStride& ref : *reference) {
+            if (ref.foot != foot) continue;
+            int hits = 0;
+            std::size_t hit = 0;
+            for (std::size_t i = 0; i < start.size(); ++i) {
+                const double mid = 0.5 * (start[i] + end[i]);
+                if (mid >= ref.tStart && mid <= ref.tEnd) {
+                    ++hits;
+                    hit = i;
+                }
+            }
+            EXPECT_EQ(hits, 1) << qPrintable(foot) << " stride " << ref.tStart << "–" << ref.tEnd << " s";
+            if (hits != 1) continue;
+            ++matched;
+            lengths.push_back(length[hit]);
+            EXPECT_GT(length[hit], 1.0) << ref.tStart;
+            EXPECT_LT(length[hit], 1.8) << ref.tStart;
+        }
+        const Stream* trajectory = project_->stream(QStringLiteral("walk/%1-strides-trajectory").arg(foot));
+        ASSERT_NE(trajectory, nullptr);
+        EXPECT_EQ(trajectory->info().columnNames(), (QStringList{"x", "y", "z"}));
+    }
+    EXPECT_EQ(matched, 14);
+    // Straight walking at a steady pace: the matched strides agree with each other.
+    const double m = median(lengths);
+    double spread = 0.0;
+    for (double l : lengths) spread = std::max(spread, std::abs(l / m - 1.0));
+    EXPECT_LT(spread, 0.10) << "median " << m;
+    std::printf(
+        "[ figures  ] gaitmap walk: %d/14 reference strides matched once; matched lengths median %.3f m, "
+        "largest deviation %.1f %%\n",
+        matched, m, 100.0 * spread);
+}
+
+TEST_F(GaitParametersValidation, StairsClimbAStepPairPerStride) {
+    for (const auto& [file, sign] :
+         {std::pair{"imu_sample_healthy_stair_up.csv", 1.0}, std::pair{"imu_sample_healthy_stair_down.csv", -1.0}}) {
+        const QString name = sign > 0 ? QStringLiteral("up") : QStringLiteral("down");
+        import(QString::fromLatin1(file), name);
+        for (const QString& foot : {QStringLiteral("left"), QStringLiteral("right")}) {
+            const Table* table =
+                run(QStringLiteral("%1/%2-foot").arg(name, foot), QStringLiteral("%1/%2-strides").arg(name, foot));
+            ASSERT_NE(table, nullptr);
+            const auto height = column(*table, "stride_height"), length = column(*table, "stride_length");
+            // Stair strides: a vertical change of two steps, a short horizontal one (two treads). The
+            // riser height is not in the data: the bounds are those of stairs (risers 10–21 cm).
+            std::vector<double> climbing, treads;
+            for (std::size_t i = 0; i < height.size(); ++i)
+                if (sign * height[i] > 0.15) {
+                    climbing.push_back(sign * height[i]);
+                    treads.push_back(length[i]);
+                }
+            ASSERT_GE(climbing.size(), 6u) << file << " " << qPrintable(foot);
+            const double h = median(climbing), l = median(treads);
+            EXPECT_GT(h, 0.20) << file;
+            EXPECT_LT(h, 0.42) << file;
+            EXPECT_GT(l, 0.4) << file;
+            EXPECT_LT(l, 0.8) << file;
+            std::printf(
+                "[ figures  ] stairs %s, %s foot: %zu strides, %zu on the stairs, median height %.3f m, "
+                "median length %.3f m\n",
+                qPrintable(name), qPrintable(foot), height.size(), climbing.size(), h, l);
+        }
+    }
+}
+
+TEST_F(GaitParametersValidation, RefusesARecordingWithoutStrides) {
+    import(QStringLiteral("imu_sample_ic_stride.csv"), QStringLiteral("walk"));
+    // No swing reaches 100 rad/s: nothing to integrate, refused with the reason, nothing stored.
+    auto r = runProcessor(*project_, processor_,
+                          RunRequest{processor_.id(),
+                                     {QStringLiteral("walk/left-foot")},
+                                     QStringLiteral("walk/x"),
+                                     {{QStringLiteral("swing_threshold"), 100.0}}});
+    ASSERT_FALSE(r.ok());
+    EXPECT_TRUE(r.message().contains(QStringLiteral("no stride found"))) << qPrintable(r.message());
+    EXPECT_TRUE(r.message().contains(QStringLiteral("no swing above swing_threshold = 100"))) << qPrintable(r.message());
+    EXPECT_EQ(project_->table(QStringLiteral("walk/x")), nullptr);
+    // Swings, but no mid-stance accepted as zero velocity.
+    r = runProcessor(*project_, processor_,
+                     RunRequest{processor_.id(), {QStringLiteral("walk/left-foot")}, QStringLiteral("walk/x"),
+                                {{QStringLiteral("rest_threshold"), 0.0}}});
+    ASSERT_FALSE(r.ok());
+    EXPECT_TRUE(r.message().contains(QStringLiteral("none with a mid-stance below rest_threshold = 0")))
+        << qPrintable(r.message());
+    EXPECT_EQ(project_->table(QStringLiteral("walk/x")), nullptr);
+}
