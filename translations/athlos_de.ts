@@ -51,6 +51,45 @@
         <source>Video…</source>
         <translation>Video…</translation>
     </message>
+    <message>
+        <source>Export report…</source>
+        <translation>Bericht exportieren…</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui</name>
+    <message>
+        <source>Export report</source>
+        <translation>Bericht exportieren</translation>
+    </message>
+    <message>
+        <source>Open a project first.</source>
+        <translation>Öffnen Sie zuerst ein Projekt.</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Computing session metrics…</source>
+        <translation>Einheitskennzahlen werden berechnet…</translation>
+    </message>
+    <message>
+        <source>Writing the report…</source>
+        <translation>Bericht wird geschrieben…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>time (min)</source>
+        <translation>Zeit (min)</translation>
+    </message>
+    <message>
+        <source>speed (km/h)</source>
+        <translation>Geschwindigkeit (km/h)</translation>
+    </message>
 </context>
 <context>
     <name>athlos::ui::ActionTimeline</name>
@@ -1744,6 +1783,85 @@
     <message>
         <source>%1 items</source>
         <translation>%1 Einträge</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::SessionReport</name>
+    <message>
+        <source>Athlos session report</source>
+        <translation>Athlos-Einheitsbericht</translation>
+    </message>
+    <message>
+        <source>Session report: %1</source>
+        <translation>Einheitsbericht: %1</translation>
+    </message>
+    <message>
+        <source>%1 · %2 athletes · generated %3 by Athlos</source>
+        <translation>%1 · %2 Athleten · erstellt %3 von Athlos</translation>
+    </message>
+    <message>
+        <source>Athlete</source>
+        <translation>Athlet</translation>
+    </message>
+    <message>
+        <source>Distance m</source>
+        <translation>Distanz m</translation>
+    </message>
+    <message>
+        <source>Max km/h</source>
+        <translation>Max. km/h</translation>
+    </message>
+    <message>
+        <source>HSR m</source>
+        <translation>HSR m</translation>
+    </message>
+    <message>
+        <source>Sprints</source>
+        <translation>Sprints</translation>
+    </message>
+    <message>
+        <source>Acc</source>
+        <translation>Beschl.</translation>
+    </message>
+    <message>
+        <source>Dec</source>
+        <translation>Verz.</translation>
+    </message>
+    <message>
+        <source>Peak 1 min m</source>
+        <translation>Spitze 1 min m</translation>
+    </message>
+    <message>
+        <source>Met. W/kg</source>
+        <translation>Met. W/kg</translation>
+    </message>
+    <message>
+        <source>distance (m)</source>
+        <translation>Distanz (m)</translation>
+    </message>
+    <message>
+        <source>%1 · distance %2 m in %3 min · max speed %4 km/h · HSR %5 m · sprints %6 · accelerations %7 · decelerations %8 · metabolic power %9 W/kg</source>
+        <translation>%1 · Distanz %2 m in %3 min · Höchstgeschwindigkeit %4 km/h · HSR %5 m · Sprints %6 · Beschleunigungen %7 · Verzögerungen %8 · metabolische Leistung %9 W/kg</translation>
+    </message>
+    <message>
+        <source>speed zone (km/h)</source>
+        <translation>Geschwindigkeitszone (km/h)</translation>
+    </message>
+    <message>
+        <source>Period</source>
+        <translation>Abschnitt</translation>
+    </message>
+    <message>
+        <source>Start min</source>
+        <translation>Beginn min</translation>
+    </message>
+    <message>
+        <source>Min</source>
+        <translation>Min</translation>
+    </message>
+    <message>
+        <source>Actions: %1</source>
+        <translation>Aktionen: %1</translation>
     </message>
 </context>
 <context>
