@@ -22,18 +22,18 @@
 namespace athlos::events {
 
 struct StrideSegmentationParams {
-    int mlAxis = 1;               // sensor axis along the medio-lateral direction
-    int swingSign = 0;            // +1 / −1, 0: GaitEventDetector::swingSign
-    double swingThreshold = 1.5;  // rad/s, as GaitEventParams::swingThreshold
-    double minStrideTime = 0.5;   // s
-    double maxStrideTime = 2.5;   // s: swings further apart have a standing foot between them
-    double restWindow = 0.15;     // s: gaitmap NormZuptDetector window_length_s
-    double restThreshold = 2.0;   // rad/s: mean gyroscope norm accepted at a mid-stance
-    double stanceSearch = 0.6;    // s: search for the mid-stance next to a long gap
+    int mlAxis = 1;                 // sensor axis along the medio-lateral direction
+    int swingSign = 0;              // +1 / −1, 0: GaitEventDetector::swingSign
+    double swingThreshold = 1.5;    // rad/s, as GaitEventParams::swingThreshold
+    double minStrideTime = 0.5;     // s
+    double maxStrideTime = 2.5;     // s: swings further apart have a standing foot between them
+    double restWindow = 0.15;       // s: gaitmap NormZuptDetector window_length_s
+    double restThreshold = 2.0;     // rad/s: mean gyroscope norm accepted at a mid-stance
+    double stanceSearch = 0.6;      // s: search for the mid-stance next to a long gap
     double staticThreshold = 0.26;  // rad/s: standing (gaitmap NormZuptDetector, 15 deg/s)
     double standDuration = 0.75;    // s: shortest pause that splits the stance between two strides
-    double tcWindow = 0.4;        // s, as GaitEventParams::tcWindow
-    double icWindow = 0.35;       // s, as GaitEventParams::icWindow
+    double tcWindow = 0.4;          // s, as GaitEventParams::tcWindow
+    double icWindow = 0.35;         // s, as GaitEventParams::icWindow
 };
 
 struct StrideSegment {

@@ -28,10 +28,10 @@ public:
     struct Plan {
         MetricsParams metrics;
         MotionParams motion;
-        QString filterMode;     // "auto" or "none"
-        double window = 300.0;  // s, 0 = no windows
-        QString periods;        // "auto" or a list of labels
-        QString periodPattern;  // regular expression of period labels (periods=auto)
+        QString filterMode;                  // "auto" or "none"
+        double window = 300.0;               // s, 0 = no windows
+        QString periods;                     // "auto" or a list of labels
+        QString periodPattern;               // regular expression of period labels (periods=auto)
         std::optional<TrackGeometry> track;  // lap and split rows when given
         TrackSplits::Params splits;
     };

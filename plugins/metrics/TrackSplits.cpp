@@ -44,8 +44,9 @@ std::vector<TrackInterval> TrackSplits::compute(const MotionSeries& s, const Tra
             const double v = progressed[k];
             while (v >= step * double(times.size() + 1)) {
                 const double level = step * double(times.size() + 1);
-                times.push_back(std::isfinite(tPrev) && v > vPrev ? tPrev + (s.t[k] - tPrev) * (level - vPrev) / (v - vPrev)
-                                                                   : s.t[k]);
+                times.push_back(std::isfinite(tPrev) && v > vPrev
+                                    ? tPrev + (s.t[k] - tPrev) * (level - vPrev) / (v - vPrev)
+                                    : s.t[k]);
             }
             tPrev = s.t[k];
             vPrev = v;

@@ -23,7 +23,8 @@ public:
         double splitDistance = 100.0;  // m of lane-1 running line
     };
     // Laps first, then splits.
-    static std::vector<TrackInterval> compute(const MotionSeries& series, const TrackGeometry& track, const Params& params);
+    static std::vector<TrackInterval> compute(const MotionSeries& series, const TrackGeometry& track,
+                                              const Params& params);
     // Progress (m of lane-1 running line) at every sample from the first valid one; NaN where invalid.
     static std::vector<double> progress(const MotionSeries& series, const TrackGeometry& track);
 };

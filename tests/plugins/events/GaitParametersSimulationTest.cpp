@@ -135,9 +135,10 @@ TEST(GaitParametersSimulation, StairsGiveHorizontalLengthAndStepPairHeight) {
             worstHeight = std::max(worstHeight, std::abs(e.height - rise));
             worstLength = std::max(worstLength, relativeError(e.length, 0.58));
         }
-        std::printf("[ figures  ] stairs %+.2f m per stride, 204.8 Hz: worst height error %.1f mm, worst length "
-                    "error %.2f %%\n",
-                    rise, 1000.0 * worstHeight, 100.0 * worstLength);
+        std::printf(
+            "[ figures  ] stairs %+.2f m per stride, 204.8 Hz: worst height error %.1f mm, worst length "
+            "error %.2f %%\n",
+            rise, 1000.0 * worstHeight, 100.0 * worstLength);
     }
 }
 

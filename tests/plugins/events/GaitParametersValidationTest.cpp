@@ -151,11 +151,14 @@ TEST_F(GaitParametersValidation, RefusesARecordingWithoutStrides) {
                                      {{QStringLiteral("swing_threshold"), 100.0}}});
     ASSERT_FALSE(r.ok());
     EXPECT_TRUE(r.message().contains(QStringLiteral("no stride found"))) << qPrintable(r.message());
-    EXPECT_TRUE(r.message().contains(QStringLiteral("no swing above swing_threshold = 100"))) << qPrintable(r.message());
+    EXPECT_TRUE(r.message().contains(QStringLiteral("no swing above swing_threshold = 100")))
+        << qPrintable(r.message());
     EXPECT_EQ(project_->table(QStringLiteral("walk/x")), nullptr);
     // Swings, but no mid-stance accepted as zero velocity.
     r = runProcessor(*project_, processor_,
-                     RunRequest{processor_.id(), {QStringLiteral("walk/left-foot")}, QStringLiteral("walk/x"),
+                     RunRequest{processor_.id(),
+                                {QStringLiteral("walk/left-foot")},
+                                QStringLiteral("walk/x"),
                                 {{QStringLiteral("rest_threshold"), 0.0}}});
     ASSERT_FALSE(r.ok());
     EXPECT_TRUE(r.message().contains(QStringLiteral("none with a mid-stance below rest_threshold = 0")))
