@@ -40,14 +40,15 @@ void exportReport(Workspace& workspace) {
     const QString path = QFileDialog::getSaveFileName(parent, tr("Export report"), suggested, tr("PDF (*.pdf)"));
     if (path.isEmpty()) return;
 
-    // 1. Missing metrics on a worker; stored only when all succeeded.
-    int computed = 0;
-    Project* target = project;
+    // 1. Missing metrics computed on a worker (it only reads the project); stored here, on the GUI
+    // thread, and only when all succeeded.
+    std::vector<ComputedRun> runs;
+    const Project* source = project;
     const QList<ReportAthlete> list = *athletes;
     const auto outcome = BackgroundTask::run(parent, tr("Computing session metrics…"), [&](const Progress& progress) {
-        auto n = SessionReport::computeMissing(*target, list, {}, progress);
-        if (!n) return Status(n.error());
-        computed = *n;
+        auto computed = SessionReport::computeMissingRuns(*source, list, {}, progress);
+        if (!computed) return Status(computed.error());
+        runs = std::move(*computed);
         return Status();
     });
     if (outcome.cancelled) return;
@@ -55,7 +56,8 @@ void exportReport(Workspace& workspace) {
         QMessageBox::warning(parent, tr("Export report"), outcome.status.message());
         return;
     }
-    if (computed > 0) workspace.projectModified();
+    for (auto& run : runs) storeRun(*project, std::move(run));
+    if (!runs.empty()) workspace.projectModified();
 
     // 2. The PDF on the GUI thread, a page at a time.
     QProgressDialog dialog(tr("Writing the report…"), tr("Cancel"), 0, 1000, parent);

@@ -246,14 +246,16 @@ bool SessionReport::isUpToDate(const Project& project, const ReportAthlete& athl
            project.stream(athlete.metricsPath + QStringLiteral("-motion"));
 }
 
-Expected<int> SessionReport::computeMissing(Project& project, const QList<ReportAthlete>& athletes,
-                                            const QVariantMap& parameters, const Progress& progress) {
+Expected<std::vector<ComputedRun>> SessionReport::computeMissingRuns(const Project& project,
+                                                                     const QList<ReportAthlete>& athletes,
+                                                                     const QVariantMap& parameters,
+                                                                     const Progress& progress) {
     auto processor = ProcessorRegistry::instance().find(QStringLiteral("session-metrics"));
     if (!processor) return makeError(QStringLiteral("the session-metrics processor is not available (metrics plugin)"));
     QList<ReportAthlete> missing;
     for (const auto& a : athletes)
         if (!isUpToDate(project, a)) missing << a;
-    if (missing.isEmpty()) return 0;
+    if (missing.isEmpty()) return std::vector<ComputedRun>{};
     // Compute on the pool (both cores) against the unchanged project; store afterwards, in order.
     std::atomic<int> done{0};
     const Progress quiet(Progress::Callback{}, progress.token());
@@ -279,8 +281,15 @@ Expected<int> SessionReport::computeMissing(Project& project, const QList<Report
         if (!result) return makeError(QStringLiteral("%1: %2").arg(missing[i].path, result.message()));
         runs.push_back(std::move(*result));
     }
-    for (auto& run : runs) storeRun(project, std::move(run));
-    return static_cast<int>(runs.size());
+    return runs;
+}
+
+Expected<int> SessionReport::computeMissing(Project& project, const QList<ReportAthlete>& athletes,
+                                            const QVariantMap& parameters, const Progress& progress) {
+    auto runs = computeMissingRuns(project, athletes, parameters, progress);
+    if (!runs) return runs.error();
+    for (auto& run : *runs) storeRun(project, std::move(run));
+    return static_cast<int>(runs->size());
 }
 
 Expected<Table> SessionReport::teamTable(const Project& project, const QList<ReportAthlete>& athletes) {

@@ -6,12 +6,14 @@
 // `athlos report` and File ▸ Export report… run the same three steps.
 #include "core/model/Project.h"
 #include "core/model/Table.h"
+#include "core/processing/ProcessorRunner.h"
 #include "core/util/Expected.h"
 #include "core/util/Progress.h"
 
 #include <QList>
 #include <QString>
 #include <QVariantMap>
+#include <vector>
 
 namespace athlos::ui {
 
@@ -36,6 +38,12 @@ public:
     // order when all succeeded; on an error or cancellation nothing is stored. Returns how many ran.
     static Expected<int> computeMissing(Project& project, const QList<ReportAthlete>& athletes,
                                         const QVariantMap& parameters, const Progress& progress = {});
+    // The computing half of computeMissing(): only reads the project, so it may run on a worker while
+    // the GUI thread keeps reading the project; store the runs on the owning thread (storeRun()).
+    static Expected<std::vector<ComputedRun>> computeMissingRuns(const Project& project,
+                                                                 const QList<ReportAthlete>& athletes,
+                                                                 const QVariantMap& parameters,
+                                                                 const Progress& progress = {});
 
     // The team table: one row per athlete with the `whole` row of its metrics (athlete, team and the
     // numeric columns every athlete has).
