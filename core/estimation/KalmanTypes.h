@@ -47,18 +47,28 @@ struct ModelDefaults {
 //   residual(y, yHat)                            y − ŷ (wraps angles)
 //   difference(a, b)                             a − b of two states (wraps angles)
 //   normalize(x)                                 puts x back in its domain, e.g. wraps the heading
+// The motion half alone (what the RTS smoother needs): prediction, process noise and state algebra.
+// Filters that bring their own measurement model (per-measurement beacons, see
+// plugins/positioning/RangeFilter.h) only need this.
 template <class Model>
-concept KalmanModel = requires(const Model& model, Vector<Model::kStateDim>& x, const Vector<Model::kMeasurementDim>& y,
+concept MotionModel = requires(const Model& model, Vector<Model::kStateDim>& x,
                                Matrix<Model::kStateDim, Model::kStateDim>* jacobian, double T, double t) {
     requires Model::kStateDim >
-    0 && Model::kMeasurementDim > 0;
+    0;
     { model.predict(x, T, t, jacobian) } -> std::convertible_to<Vector<Model::kStateDim>>;
     { model.processNoise(T, t) } -> std::convertible_to<Matrix<Model::kStateDim, Model::kStateDim>>;
+    { model.difference(x, x) } -> std::convertible_to<Vector<Model::kStateDim>>;
+    model.normalize(x);
+};
+
+template <class Model>
+concept KalmanModel = MotionModel<Model> &&
+    requires(const Model& model, const Vector<Model::kStateDim>& x, const Vector<Model::kMeasurementDim>& y, double t) {
+    requires Model::kMeasurementDim >
+    0;
     { model.measure(x, t) } -> std::convertible_to<Vector<Model::kMeasurementDim>>;
     { model.measurementNoise(t) } -> std::convertible_to<Matrix<Model::kMeasurementDim, Model::kMeasurementDim>>;
     { model.residual(y, y) } -> std::convertible_to<Vector<Model::kMeasurementDim>>;
-    { model.difference(x, x) } -> std::convertible_to<Vector<Model::kStateDim>>;
-    model.normalize(x);
 };
 
 // The EKF's requirement: a KalmanModel with the measurement Jacobian C = ∂h/∂x (M × N).

@@ -26,7 +26,7 @@ struct SmootherNode {
     Matrix<N, N> C;   // cov(x_{k−1}, x_k | y_{1:k−1}) from the prediction into this node
 };
 
-template <KalmanModel Model>
+template <MotionModel Model>
 class RtsSmoother {
 public:
     static constexpr int N = Model::kStateDim;

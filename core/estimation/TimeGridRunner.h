@@ -23,6 +23,18 @@ namespace athlos::estimation {
 
 enum class Smoothing { None, Rts, FixedLag };
 
+// What the runner hands to Filter::update(): the measurement vector, or the filter's own Observation
+// type when it has one (e.g. a range with the index of its beacon).
+template <class Filter>
+struct ObservationOf {
+    using type = Vector<Filter::M>;
+};
+template <class Filter>
+requires requires { typename Filter::Observation; }
+struct ObservationOf<Filter> {
+    using type = typename Filter::Observation;
+};
+
 template <class Filter>
 class TimeGridRunner {
 public:
@@ -32,6 +44,7 @@ public:
     using StateVector = Vector<N>;
     using StateMatrix = Matrix<N, N>;
     using Measurement = Vector<M>;
+    using Observation = typename ObservationOf<Filter>::type;
 
     struct Params {
         double gate = kNoGate;  // α on d²
@@ -63,7 +76,7 @@ public:
     explicit TimeGridRunner(Params params) : params_(params) {}
 
     // The filter must be reset() to its state at time t0 (≤ tIn[0]). tOut empty = output at tIn.
-    Result run(Filter& filter, double t0, const std::vector<double>& tIn, const std::vector<Measurement>& y,
+    Result run(Filter& filter, double t0, const std::vector<double>& tIn, const std::vector<Observation>& y,
                const std::vector<double>& tOut, const ProgressFn& progress = {}) const {
         const std::vector<double>& grid = tOut.empty() ? tIn : tOut;
         const bool store = params_.smoothing != Smoothing::None;
