@@ -28,7 +28,7 @@ std::optional<long long> trailingNumber(const QString& id) {
 
 }  // namespace
 
-Expected<BeaconLayout> layoutFromTable(const Table& table, const QString& path) {
+Expected<BeaconLayout> layoutFromTable(const Table& table, const QString& path, int minimum, const QString& use) {
     const TableColumn* id = table.column(QStringLiteral("id"));
     const TableColumn* x = table.column(QStringLiteral("x"));
     const TableColumn* y = table.column(QStringLiteral("y"));
@@ -67,10 +67,12 @@ Expected<BeaconLayout> layoutFromTable(const Table& table, const QString& path) 
         const QJsonArray ref = table.attributes.value(QStringLiteral("reference_node")).toArray();
         if (ref.size() == 3) layout.reference = Vector3(ref[0].toDouble(), ref[1].toDouble(), ref[2].toDouble());
     }
-    if (layout.size() < 4)
-        return makeError(QStringLiteral("beacon table '%1' has %2 beacon(s); TDoA positioning needs at least 4")
+    if (layout.size() < minimum)
+        return makeError(QStringLiteral("beacon table '%1' has %2 beacon(s); %3 needs at least %4")
                              .arg(path)
-                             .arg(layout.size()));
+                             .arg(layout.size())
+                             .arg(use)
+                             .arg(minimum));
     return layout;
 }
 

@@ -16,7 +16,9 @@
 namespace athlos::lps {
 
 // The beacons of a table; errors name the table path and the offending row or column.
-Expected<BeaconLayout> layoutFromTable(const Table& table, const QString& path);
+// `minimum` beacons are required for `use` (TDoA fixes need 4; ranges 3).
+Expected<BeaconLayout> layoutFromTable(const Table& table, const QString& path, int minimum = 4,
+                                       const QString& use = QStringLiteral("TDoA positioning"));
 
 // A "beacons" table (id, x, y, z in m). Writes a "ref" row when the reference node is not the origin.
 Table tableFromLayout(const BeaconLayout& layout, const QString& name = QStringLiteral("beacons"));

@@ -7,6 +7,9 @@
 //                      at the input times without output_rate: the sample's own flag);
 //   <output>-outliers  per input sample: outlier (0/1), mahalanobis (d², dimensionless).
 // noise=auto estimates Q, R and α from the input itself (eq. 4.13) and records them as attributes.
+// With raw two-way ranges (kind lps-range) and a beacon table as second input the filter is tightly
+// coupled (RangeFilter.h): one update per range, per-measurement gating; the trajectory then also
+// has sd_x, sd_y (m) and the outliers stream one row per range.
 #include "core/processing/Processor.h"
 #include "plugins/positioning/PositionFilter.h"
 
@@ -17,7 +20,7 @@ public:
     QString id() const override { return QStringLiteral("position-filter"); }
     QString name() const override;
     QString description() const override;
-    QString version() const override { return QStringLiteral("1.1"); }
+    QString version() const override { return QStringLiteral("1.2"); }
     ParameterSpecs parameters() const override;
     QList<InputSpec> inputs() const override;
     QList<OutputSpec> outputs() const override;
