@@ -1,7 +1,10 @@
 #include "plugins/lps/LpsPositioningProcessor.h"
 
 #include "core/processing/Translator.h"
+#include "plugins/lps/BeaconTable.h"
 #include "plugins/lps/LpsInputs.h"
+#include "plugins/lps/RangeSolver.h"
+#include "plugins/lps/RangeStream.h"
 
 #include <QJsonArray>
 #include <algorithm>
@@ -45,18 +48,21 @@ struct LpsPositioningProcessor::Plan {
     TdoaPositioning::Params params;
     BeaconLayout layout;
     TrackGeometry track;
-    EpochSet epochs;
+    EpochSet epochs;  // TDoA instants, or merged range epochs (dt = range in m) when `ranges`
+    bool ranges = false;
+    RangeSolver::Params rangeSolver;
     std::shared_ptr<const StreamData> orientation;
     int orientationColumns[4] = {-1, -1, -1, -1};
 };
 
-QString LpsPositioningProcessor::name() const { return tr("LPS positioning (TDoA)"); }
+QString LpsPositioningProcessor::name() const { return tr("LPS positioning (TDoA, ranges)"); }
 
 QString LpsPositioningProcessor::description() const {
     return tr(
         "Tag positions and clock offsets from TDoA readings and a beacon table, one fix per instant "
         "(2D at tag_height or 3D), with beacon selection against NLOS: all, IRLS (bisquare, 2.5·MAD), "
-        "largest-residual rejection or the field of view of the body-worn tag.");
+        "largest-residual rejection or the field of view of the body-worn tag. Two-way ranges (lps-range): ToA fixes "
+        "on epochs merged from the anchors' own report times, with all beacons or IRLS.");
 }
 
 ParameterSpecs LpsPositioningProcessor::parameters() const {
@@ -78,7 +84,12 @@ ParameterSpecs LpsPositioningProcessor::parameters() const {
             QStringLiteral("none"), tr("Robust loss of the fix (solved with a ceres::Problem; slower).")),
         ParameterSpec::number(QStringLiteral("loss_scale"), 0.5, 1e-3, 100, QStringLiteral("m"),
                               tr("Residual at which the robust loss leaves its quadratic part.")),
-        ParameterSpec::integer(QStringLiteral("min_beacons"), 4, 4, 64, tr("Fewest beacons per fix (thesis: 4).")),
+        ParameterSpec::integer(QStringLiteral("min_beacons"), 4, 3, 64,
+                               tr("Fewest beacons per fix (thesis: 4; TDoA needs at least 4, 2D ranges 3).")),
+        ParameterSpec::number(QStringLiteral("epoch"), 0.1, 1e-3, 60.0, QStringLiteral("s"),
+                              tr("Ranges: one fix every this many seconds from each anchor's newest range.")),
+        ParameterSpec::number(QStringLiteral("max_age"), 0.15, 0.0, 60.0, QStringLiteral("s"),
+                              tr("Ranges: a range older than this at the epoch is left out (never extrapolated).")),
         ParameterSpec::number(QStringLiteral("irls_k"), 2.5, 0.5, 10, QString(),
                               tr("IRLS: bisquare cut-off in units of 1.4826·MAD of the residuals.")),
         ParameterSpec::number(QStringLiteral("rejection_threshold"), 0.25, 0.0, 100, QStringLiteral("m"),
@@ -110,10 +121,11 @@ ParameterSpecs LpsPositioningProcessor::parameters() const {
 
 QList<InputSpec> LpsPositioningProcessor::inputs() const {
     return {InputSpec{QStringLiteral("tdoa"),
-                      {QStringLiteral("lps-tdoa")},
+                      {QStringLiteral("lps-tdoa"), QStringLiteral("lps-range")},
                       false,
                       false,
-                      tr("TDoA readings t, beacon, dt (s), several rows per instant.")},
+                      tr("TDoA readings t, beacon, dt (s), several rows per instant; or two-way ranges t, beacon, "
+                         "range (m).")},
             InputSpec{QStringLiteral("beacons"),
                       {QStringLiteral("beacons")},
                       true,
@@ -143,6 +155,8 @@ bool LpsPositioningProcessor::geometryAllows3d(const BeaconLayout& layout) {
 
 Expected<LpsPositioningProcessor::Plan> LpsPositioningProcessor::makePlan(const RunContext& context) const {
     Plan plan;
+    plan.ranges = context.stream(0) && context.stream(0)->info().kind == QLatin1String("lps-range");
+    if (plan.ranges) return makeRangePlan(context);
     auto layout = loadBeacons(context, 1);
     if (!layout) return layout.error();
     plan.layout = std::move(*layout);
@@ -213,6 +227,65 @@ Expected<LpsPositioningProcessor::Plan> LpsPositioningProcessor::makePlan(const 
     return plan;
 }
 
+Expected<LpsPositioningProcessor::Plan> LpsPositioningProcessor::makeRangePlan(const RunContext& context) const {
+    Plan plan;
+    plan.ranges = true;
+    auto table = context.requireTable(1);
+    if (!table) return table.error();
+    auto layout = layoutFromTable(**table, context.inputPath(1), 3, QStringLiteral("ranging"));
+    if (!layout) return layout.error();
+    plan.layout = std::move(*layout);
+    RangeSolver::Params& solver = plan.rangeSolver;
+    const QString dimension = context.text(QStringLiteral("dimension"));
+    const bool spatial =
+        dimension == QLatin1String("3d") || (dimension == QLatin1String("auto") && geometryAllows3d(plan.layout));
+    solver.geometry = spatial ? RangeSolver::Geometry::Spatial : RangeSolver::Geometry::Planar;
+    solver.tagHeight = context.number(QStringLiteral("tag_height"));
+    const QString method = context.text(QStringLiteral("selection"));
+    if (method != QLatin1String("all") && method != QLatin1String("irls"))
+        return makeError(QStringLiteral("selection=%1 applies to TDoA; ranges use all or irls").arg(method));
+    solver.selection = method == QLatin1String("all") ? RangeSolver::Selection::All : RangeSolver::Selection::Irls;
+    solver.irlsK = context.number(QStringLiteral("irls_k"));
+    if (context.text(QStringLiteral("loss")) != QLatin1String("none"))
+        return makeError(QStringLiteral("loss applies to TDoA fixes; ranges use selection=irls"));
+    plan.params.selection.minBeacons = std::max(context.integer(QStringLiteral("min_beacons")), spatial ? 4 : 3);
+    if (plan.layout.size() < plan.params.selection.minBeacons)
+        return makeError(QStringLiteral("min_beacons = %1 but the beacon table '%2' has only %3 beacons")
+                             .arg(plan.params.selection.minBeacons)
+                             .arg(context.inputPath(1))
+                             .arg(plan.layout.size()));
+    auto input = context.samples(0);
+    if (!input) return input.error();
+    auto set = rangesFromStream(*input->stream, *input->data, plan.layout, input->path);
+    if (!set) return set.error();
+    plan.epochs.readingsSkipped = set->readingsSkipped;
+    plan.epochs.epochs = mergeRangeEpochs(set->readings, plan.layout.size(), context.number(QStringLiteral("epoch")),
+                                          context.number(QStringLiteral("max_age")), plan.params.selection.minBeacons);
+    if (plan.epochs.epochs.empty())
+        return input->error(QStringLiteral("no epoch has %1 anchors with a range younger than max_age = %2 s")
+                                .arg(plan.params.selection.minBeacons)
+                                .arg(context.number(QStringLiteral("max_age"))));
+    return plan;
+}
+
+std::optional<std::vector<TagFix>> LpsPositioningProcessor::solveRanges(const Plan& plan, const RunContext& context) {
+    RangeSolver solver(plan.rangeSolver);
+    std::vector<TagFix> fixes;
+    fixes.reserve(plan.epochs.epochs.size());
+    const TagFix* previous = nullptr;
+    RangeFixInput input;
+    for (std::size_t k = 0; k < plan.epochs.epochs.size(); ++k) {
+        if ((k & 255) == 0) {
+            if (context.isCancelled()) return std::nullopt;
+            context.report(double(k) / double(plan.epochs.epochs.size()), QStringLiteral("ToA fixes"));
+        }
+        input.assign(plan.epochs.epochs[k], plan.layout);
+        fixes.push_back(solver.solve(input, previous));
+        previous = fixes.back().valid ? &fixes.back() : nullptr;
+    }
+    return fixes;
+}
+
 Status LpsPositioningProcessor::prepare(const RunContext& context) const { return statusOf(makePlan(context)); }
 
 Expected<std::vector<ProcessorOutput>> LpsPositioningProcessor::run(const RunContext& context) const {
@@ -232,8 +305,13 @@ Expected<std::vector<ProcessorOutput>> LpsPositioningProcessor::run(const RunCon
             return std::atan2(2.0 * (x * y + w * z), 1.0 - 2.0 * (y * y + z * z));
         };
     }
-    TdoaPositioning positioning(plan->params, plan->layout, plan->track, orientationHeading);
-    auto fixes = positioning.run(plan->epochs.epochs, context.progress());
+    std::optional<std::vector<TagFix>> fixes;
+    if (plan->ranges) {
+        fixes = solveRanges(*plan, context);
+    } else {
+        TdoaPositioning positioning(plan->params, plan->layout, plan->track, orientationHeading);
+        fixes = positioning.run(plan->epochs.epochs, context.progress());
+    }
     if (!fixes) return cancelledError();
 
     StreamInfo info;
@@ -248,6 +326,11 @@ Expected<std::vector<ProcessorOutput>> LpsPositioningProcessor::run(const RunCon
                     {QStringLiteral("n_beacons"), QStringLiteral("1")}};
     std::size_t valid = 0;
     for (const auto& f : *fixes) valid += f.valid;
+    if (valid == 0 && plan->ranges)
+        return makeError(QStringLiteral("no fix: none of %1 epochs of range stream '%2' gave a converged solution with "
+                                        "an RMS residual below 2 m (check the beacon table '%3' and tag_height)")
+                             .arg(plan->epochs.epochs.size())
+                             .arg(context.inputPath(0), context.inputPath(1)));
     if (valid == 0)
         return noFixError(context, plan->epochs.epochs, plan->params.selection.minBeacons,
                           plan->params.solver.geometry == TdoaSolver::Geometry::Spatial);
@@ -267,9 +350,11 @@ Expected<std::vector<ProcessorOutput>> LpsPositioningProcessor::run(const RunCon
     info.attributes.insert(QStringLiteral("fixes_total"), qint64(fixes->size()));
     info.attributes.insert(QStringLiteral("fixes_dropped"), qint64(fixes->size() - valid));
     info.attributes.insert(QStringLiteral("readings_skipped"), qint64(plan->epochs.readingsSkipped));
-    info.attributes.insert(QStringLiteral("solver"), plan->params.solver.geometry == TdoaSolver::Geometry::Planar
-                                                         ? QStringLiteral("2d")
-                                                         : QStringLiteral("3d"));
+    const bool planar = plan->ranges ? plan->rangeSolver.geometry == RangeSolver::Geometry::Planar
+                                     : plan->params.solver.geometry == TdoaSolver::Geometry::Planar;
+    info.attributes.insert(QStringLiteral("solver"), planar ? QStringLiteral("2d") : QStringLiteral("3d"));
+    info.attributes.insert(QStringLiteral("measurements"),
+                           plan->ranges ? QStringLiteral("ranges") : QStringLiteral("tdoa"));
     std::vector<ProcessorOutput> outputs;
     outputs.push_back({QString(), Stream(std::move(info), std::move(data))});
     return outputs;

@@ -3,6 +3,8 @@
 // Inputs: a TDoA stream (long form, see TdoaStream.h), a beacon table from any recording, and
 // optionally an orientation stream (heading for the field-of-view rule).
 // Output (kind lps-position): t, x, y, z (m), offset (s, t_off), rms_residual (m), n_beacons.
+// Two-way ranges (lps-range) instead of TDoA: ToA fixes (RangeSolver.h) every `epoch` seconds from each
+// anchor's newest range (mergeRangeEpochs), with selection all or irls; offset is then 0.
 // Instants with fewer than min_beacons readings or without a plausible solution are left out
 // (counted in the stream attributes fixes_total / fixes_dropped).
 #include "core/processing/Processor.h"
@@ -15,7 +17,7 @@ public:
     QString id() const override { return QStringLiteral("lps-positioning"); }
     QString name() const override;
     QString description() const override;
-    QString version() const override { return QStringLiteral("1.0"); }
+    QString version() const override { return QStringLiteral("1.1"); }
     ParameterSpecs parameters() const override;
     QList<InputSpec> inputs() const override;
     QList<OutputSpec> outputs() const override;
@@ -28,6 +30,8 @@ public:
 private:
     struct Plan;
     Expected<Plan> makePlan(const RunContext& context) const;
+    Expected<Plan> makeRangePlan(const RunContext& context) const;
+    static std::optional<std::vector<TagFix>> solveRanges(const Plan& plan, const RunContext& context);
 };
 
 }  // namespace athlos::lps

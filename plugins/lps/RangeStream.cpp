@@ -4,6 +4,7 @@
 #include "plugins/lps/BeaconTable.h"
 
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace athlos::lps {
@@ -39,6 +40,34 @@ Expected<RangeSet> rangesFromStream(const Stream& stream, const StreamData& data
         set.readings.push_back({t, indexOf.at(id), range});
     });
     return set;
+}
+
+}  // namespace athlos::lps
+
+namespace athlos::lps {
+
+std::vector<TdoaEpoch> mergeRangeEpochs(const std::vector<RangeReading>& readings, int beacons, double step,
+                                        double maxAge, int minBeacons) {
+    std::vector<TdoaEpoch> epochs;
+    if (readings.empty() || !(step > 0)) return epochs;
+    std::vector<double> lastT(std::size_t(beacons), -std::numeric_limits<double>::infinity());
+    std::vector<double> lastRange(std::size_t(beacons), 0.0);
+    const double t0 = std::ceil(readings.front().t / step) * step;
+    std::size_t k = 0;
+    for (long long n = 0;; ++n) {
+        const double t = t0 + double(n) * step;
+        if (t > readings.back().t + step) break;
+        while (k < readings.size() && readings[k].t <= t) {
+            lastT[std::size_t(readings[k].beacon)] = readings[k].t;
+            lastRange[std::size_t(readings[k].beacon)] = readings[k].range;
+            ++k;
+        }
+        TdoaEpoch epoch{t, {}};
+        for (int b = 0; b < beacons; ++b)
+            if (t - lastT[std::size_t(b)] <= maxAge) epoch.readings.push_back({b, lastRange[std::size_t(b)]});
+        if (int(epoch.readings.size()) >= minBeacons) epochs.push_back(std::move(epoch));
+    }
+    return epochs;
 }
 
 }  // namespace athlos::lps

@@ -26,3 +26,14 @@ Expected<RangeSet> rangesFromStream(const Stream& stream, const StreamData& data
                                     const QString& path);
 
 }  // namespace athlos::lps
+
+namespace athlos::lps {
+
+// Per-instant solving needs every anchor's range at one instant, but anchors report at their own
+// times: an epoch every `step` seconds holds each beacon's newest range not older than `maxAge`
+// (readings are never extrapolated; a beacon without a fresh range is left out of the epoch).
+// Epochs with fewer than `minBeacons` ranges are dropped. TdoaEpoch::readings[].dt holds the range (m).
+std::vector<TdoaEpoch> mergeRangeEpochs(const std::vector<RangeReading>& readings, int beacons, double step,
+                                        double maxAge, int minBeacons);
+
+}  // namespace athlos::lps

@@ -3,7 +3,7 @@
 # case converted to `t,beacon,range` and `id,x,y,z`, imported, `position-filter` with noise=auto at
 # 10 Hz and tag_height 1.0, exported, and scored like the dataset authors score their tracks
 # (athlos-eval-uwb: 2D RMSE over one lap). Each case must beat the authors' ESKF by 25 %, the mean
-# must be ≤ 0.6 × the ESKF mean. Then the refusals: ranges without beacons, unknown beacon ids,
+# must be ≤ 0.6 × the ESKF mean; per-instant ToA fixes from lps-positioning must beat the authors' LS. Then the refusals: ranges without beacons, unknown beacon ids,
 # model=pseudo, filter=ukf — each naming the cause and leaving the project unchanged.
 source "$(dirname "$0")/lib/common.bash" "$@"
 EVAL="$(dirname "$ATHLOS")/athlos-eval-uwb"
@@ -35,6 +35,16 @@ for spec in LOS_Trajectory_A_Case_1:A NLOS_Trajectory_B_Case_3:B; do
   cat "$WORK/score"
   ours=$(awk 'NR == 1 { print $5 }' "$WORK/score"); eskf=$(awk 'NR == 2 { print $5 }' "$WORK/score")
   awk -v a="$ours" -v b="$eskf" 'BEGIN { exit !(a <= 0.75 * b) }' || fail "$name: RMSE $ours m is not 25 % below the ESKF's $eskf m"
+  # Per-instant ToA fixes (lps-positioning on ranges) beat the authors' per-epoch least squares.
+  expect_ok "toa fixes" "$ATHLOS" run "$P" lps-positioning --input case/ranges,case/beacons --output case/toa \
+    --param tag_height=1.0
+  expect_ok "export fixes" "$ATHLOS" export "$P" case/toa --to "$WORK/toa.csv"
+  "$EVAL" --reference "$CASE/trajectory.csv" --lap "$lap" "$WORK/toa.csv" "$CASE/LS.csv" > "$WORK/score" ||
+    fail "$name: scoring the fixes failed"
+  cat "$WORK/score"
+  awk 'NR == 1 { a = $5 } NR == 2 { b = $5 } END { exit !(a < b) }' "$WORK/score" || fail "$name: ToA fixes not better than LS"
+  expect_fail "toa selection" "applies to TDoA" "$ATHLOS" run "$P" lps-positioning --input case/ranges,case/beacons \
+    --output case/toa2 --param selection=field-of-view
   sum_ours=$(awk -v s="$sum_ours" -v a="$ours" 'BEGIN { print s + a }')
   sum_eskf=$(awk -v s="$sum_eskf" -v a="$eskf" 'BEGIN { print s + a }')
 done
