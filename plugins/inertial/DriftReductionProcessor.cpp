@@ -29,11 +29,14 @@ ParameterSpec optionalNumber(const char* name, double min, double max, const cha
 
 Expected<Plan> makePlan(const RunContext& c) {
     Plan plan;
-    const int pairs = c.inputCount() / 2;
-    if (c.inputCount() % 2 != 0)
+    // Inputs given (the optional ones at the end are absent).
+    int given = 0;
+    while (given < c.inputCount() && !c.inputPath(given).isEmpty()) ++given;
+    const int pairs = given / 2;
+    if (given % 2 != 0)
         return makeError(QStringLiteral("drift-reduction takes pairs of inputs (orientation, imu) per segment; got %1 "
                                         "input(s)")
-                             .arg(c.inputCount()));
+                             .arg(given));
     const QString list = c.has(QStringLiteral("segments")) ? c.text(QStringLiteral("segments"))
                                                            : driftReductionSegments().join(QLatin1Char(','));
     QStringList names;
