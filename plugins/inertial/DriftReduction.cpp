@@ -64,6 +64,13 @@ Vec4 dominantEigenvector(const Mat4& m, const Vec4* guess) {
     return es.eigenvectors().col(3);
 }
 
+// Normalised linear interpolation: SLERP to within 1e-6 rad for the small steps between window
+// estimates (≤ a few degrees), at a fraction of its cost.
+Quat nlerp(const Quat& a, const Quat& b, double t) {
+    const double sign = a.dot(b) < 0.0 ? -1.0 : 1.0;
+    return Quat((1.0 - t) * a.coeffs() + sign * t * b.coeffs()).normalized();
+}
+
 // Heading (rotation about earth z) that best turns the horizontal parts of u onto those of v.
 double bestHeading(const std::vector<Vec3>& u, const std::vector<Vec3>& v) {
     double s = 0.0, c = 0.0;
@@ -154,22 +161,27 @@ bool DriftReduction::windowedWahba(const std::vector<Vec3>& from, const std::vec
     out.assign(n, Quat::Identity());
     if (n == 0) return false;
     step = std::max<std::size_t>(1, step);
-    // Prefix sums of B = Σ to·fromᵀ and of the valid count, so any window's B is a difference.
-    std::vector<Mat3> prefix(n + 1, Mat3::Zero());
-    std::vector<long> count(n + 1, 0);
-    for (std::size_t k = 0; k < n; ++k) {
-        prefix[k + 1] = prefix[k];
-        count[k + 1] = count[k];
-        if (!valid[k]) continue;
-        prefix[k + 1].noalias() += to[k] * from[k].transpose();
-        ++count[k + 1];
-    }
+    // B = Σ to·fromᵀ over the window, kept as a running sum: the window only moves forward, so every
+    // sample enters and leaves once.
+    Mat3 window = Mat3::Zero();
+    long count = 0;
+    std::size_t lo = 0, hi = 0;  // window [lo, hi)
     std::vector<std::size_t> at;
     std::vector<Quat> rotation;
     for (std::size_t k = 0; k < n; k += step) {
         const std::size_t a = k > halfWidth ? k - halfWidth : 0, b = std::min(n, k + halfWidth + 1);
-        if (count[b] - count[a] < minCount) continue;
-        const Mat3 bm = prefix[b] - prefix[a];
+        for (; hi < b; ++hi)
+            if (valid[hi]) {
+                window.noalias() += to[hi] * from[hi].transpose();
+                ++count;
+            }
+        for (; lo < a; ++lo)
+            if (valid[lo]) {
+                window.noalias() -= to[lo] * from[lo].transpose();
+                --count;
+            }
+        if (count < minCount) continue;
+        const Mat3& bm = window;
         if (aboutVertical) {
             // Rotation about z only: ψ = atan2(Σ (from × to)_z, Σ from·to) of the horizontal parts.
             at.push_back(k);
@@ -195,7 +207,7 @@ bool DriftReduction::windowedWahba(const std::vector<Vec3>& from, const std::vec
         else if (j + 1 >= at.size())
             out[k] = rotation.back();
         else
-            out[k] = math::slerp(rotation[j], rotation[j + 1], double(k - at[j]) / double(at[j + 1] - at[j]));
+            out[k] = nlerp(rotation[j], rotation[j + 1], double(k - at[j]) / double(at[j + 1] - at[j]));
     }
     return true;
 }
@@ -314,10 +326,12 @@ DriftReduction::Result DriftReduction::run(const std::vector<Segment>& segments,
         LinkResult& lr = result.links[l];
         lr.optimisationSamples = static_cast<int>(c.size());
         if (c.size() < 10) return;
-        // Blocks: consecutive samples within fitBlock seconds, at least 10 samples each.
+        // Blocks: consecutive samples within fitBlock seconds (longer for long recordings, so that there
+        // are at most maxFitBlocks), at least 10 samples each.
+        const double block = std::max(p.fitBlock, double(c.back() - c.front()) * ts / std::max(1, p.maxFitBlocks));
         std::vector<std::size_t> blockStart{0};
         for (std::size_t i = 1; i < c.size(); ++i)
-            if (double(c[i] - c[blockStart.back()]) * ts > p.fitBlock && i - blockStart.back() >= 10)
+            if (double(c[i] - c[blockStart.back()]) * ts > block && i - blockStart.back() >= 10)
                 blockStart.push_back(i);
         if (blockStart.size() > 1 && c.size() - blockStart.back() < 10) blockStart.pop_back();
         blockStart.push_back(c.size());

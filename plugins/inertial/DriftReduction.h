@@ -10,21 +10,26 @@
 //     ã = a + ω̇ × r + ω × (ω × r) (Eqs. 5.3–5.4; ω zero-phase low-passed at 6 Hz, 2nd-order
 //     Butterworth), rotated to the earth frame with the drifting orientation (Eqs. 5.1–5.2). The
 //     sensor-to-joint vectors r_p, r_d minimise Σ|ã_d^G − ã_p^G| (Eq. 5.5) over samples with
-//     |ω_proximal| > 40°/s by Nelder–Mead. The drift δ(t) is the rotation taking ã_d^G onto ã_p^G
-//     (Eqs. 5.9–5.11) on samples with ||ã_d| − |ã_p|| < 2.5 m/s² and |ã_d|, |ã_p| > 8 m/s² (Eqs.
-//     5.6–5.8; indoor preset: > 6 m/s² and relative difference < 0.2, Eqs. 6.9–6.11), averaged per
-//     sample with the Markley quaternion mean over [t − 1.25 s, t + 1.25 s]. Order (Eqs. 5.12–5.14):
-//     the root (sacrum) is turned by the mean of its drifts against all its neighbours, then every
-//     distal segment is corrected against its already corrected proximal one (sacrum → thighs →
-//     shanks → feet, sacrum → sternum). A second pass repeats this with the vertical components set
-//     to zero and a norm threshold of 0.6 m/s² (Eqs. 6.12–6.13) to reduce the azimuth drift the first
-//     pass misses because gravity dominates ã.
+//     |ω_proximal| > 40°/s by Nelder–Mead. Valid drift samples: ||ã_d| − |ã_p|| < 2.5 m/s² and
+//     |ã_d|, |ã_p| > 8 m/s² (Eqs. 5.6–5.8; indoor preset: > 6 m/s² and relative difference < 0.2,
+//     Eqs. 6.9–6.11); the drift of each sample is averaged over [t − 1.25 s, t + 1.25 s]. Order
+//     (Eqs. 5.12–5.14): the root (sacrum) is turned by the mean of its drifts against all its
+//     neighbours, then every distal segment is corrected against its already corrected proximal one
+//     (sacrum → thighs → shanks → feet, sacrum → sternum). A second pass repeats this on horizontal
+//     components with a norm threshold of 0.6 m/s² (Eqs. 6.12–6.13) for the azimuth drift.
 //
-// Before these passes (an addition for inputs with independent 6D headings, as `orientation` gives):
-// a constant heading offset per joint is removed, in chain order, as the least-squares rotation about
-// the vertical between the horizontal components of ã_d^G and ã_p^G over the whole recording (the
-// principle of Fasel 2017 ch. 7 for the arms' initial azimuths). The Nelder–Mead cost is evaluated
-// with the best such heading for the trial r, so r can be found before the headings agree.
+// Where this departs from the thesis, and why (each measured on BodySimulator, see
+// docs/validation/drift-reduction.md):
+// - r is fitted with one free rotation per block of 2.5 s in Eq. 5.5 (Kabsch), because the drift in
+//   the orientations biased r by several centimetres otherwise.
+// - The window's drift is by default the rotation that best maps all valid ã_d^G onto ã_p^G of the
+//   window (Wahba's problem, Estimator::Wahba). The thesis's estimator — per-sample smallest rotation
+//   (Eqs. 5.9–5.11) averaged with the Markley quaternion mean (Estimator::Markley) — is kept; it is
+//   blind to the part of the drift about each vector, and here its correction stalled at 2–4°.
+// - Before the passes, a constant heading offset per joint is removed in chain order (least-squares
+//   rotation about the vertical between the horizontal parts of ã_d^G and ã_p^G over the recording,
+//   the principle of Fasel 2017 ch. 7 for the arms' azimuths): 6D orientations from `orientation`
+//   have independent headings.
 #include "core/math/Angles.h"
 #include "core/math/QuaternionOps.h"
 #include "plugins/inertial/RestDetector.h"
@@ -63,6 +68,7 @@ public:
         double minWindowShare = 0.1;        // … and this share of the window's samples
         int maxOptimisationSamples = 3000;  // evenly thinned set for the Nelder–Mead cost
         double fitBlock = 2.5;              // s, blocks with their own rotation in the r fit (see .cpp)
+        int maxFitBlocks = 60;              // at most this many blocks (the cost of the fit grows with them)
         bool jointCorrection = true;
         // Static correction (Fasel 2017 ch. 2; rest detection as in VQF).
         bool staticCorrection = true;

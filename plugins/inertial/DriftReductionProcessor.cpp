@@ -82,6 +82,10 @@ Expected<Plan> makePlan(const RunContext& c) {
         const QString n = QLatin1String(name);
         if (c.has(n)) value = c.flag(n);
     };
+    if (c.has(QStringLiteral("estimator")))
+        p.estimator = c.text(QStringLiteral("estimator")) == QLatin1String("markley")
+                          ? DriftReduction::Params::Estimator::Markley
+                          : DriftReduction::Params::Estimator::Wahba;
     flag("static_correction", p.staticCorrection);
     flag("joint_correction", p.jointCorrection);
     flag("azimuth_pass", p.azimuthPass);
@@ -132,7 +136,7 @@ QString DriftReductionProcessor::description() const {
         "Reduces the orientation drift of body-worn sensors after the recording (Fasel 2017 ch. 2, 5, 6): inclination "
         "at rest instants spread by SLERP between them, then joint drift reduction — two segments linked by a joint "
         "must see the same joint-centre acceleration; sensor-to-joint vectors by Nelder–Mead, the drift between the "
-        "two virtual accelerations averaged (Markley mean) over ±1.25 s, corrected from the sacrum to the thighs, "
+        "two virtual accelerations estimated over ±1.25 s windows, corrected from the sacrum to the thighs, "
         "shanks and feet and to the sternum, then a second pass on horizontal components for the azimuth. Inputs: "
         "(orientation, imu) per segment in the order of `segments`. Velocity resets for foot/ski sensors are not "
         "done.");
@@ -160,6 +164,11 @@ ParameterSpecs DriftReductionProcessor::parameters() const {
                                  "40°/s).")),
         ParameterSpec::number(QStringLiteral("window"), d.window, 0.01, kInf, QStringLiteral("s"),
                               tr("Half width of the Markley mean of the drift (1.25 s, Fasel 2017 ch. 5).")),
+        ParameterSpec::choice(
+            QStringLiteral("estimator"), {QStringLiteral("wahba"), QStringLiteral("markley")}, QStringLiteral("wahba"),
+            tr("Drift of a window: wahba — the rotation that best maps all its valid ã_d onto ã_p (least squares); "
+               "markley — per-sample smallest rotation (Fasel 2017 Eqs. 5.9–5.11) averaged with the Markley "
+               "quaternion mean, as in the thesis (biased here: docs/validation/drift-reduction.md).")),
         ParameterSpec::boolean(QStringLiteral("azimuth_pass"), d.azimuthPass,
                                tr("Second pass on horizontal components (Eqs. 6.12–6.13).")),
         ParameterSpec::number(QStringLiteral("azimuth_min_norm"), d.azimuthMinNorm, 0.0, kInf, QStringLiteral("m/s^2"),

@@ -1,5 +1,5 @@
 // athlos-eval-drift-reduction [seeds=3] [algorithm=vqf|strapdown|offline] [scenario=skiing|walking]
-//                             [mounts=calibrated|true] [gyr_drift °/s = 0.15]
+//                             [mounts=calibrated|true] [gyr_drift °/s = 0.15] [estimator=wahba|markley]
 // Joint-angle RMSE on the body simulator (BodySimulator: 8 IMUs, 2-minute skiing run, turns 27 m apart
 // at 20 m/s, gyroscope drift 0.15°/s, vibration, impacts) after 6D orientation, functional calibration
 // (upright + squats) and joint angles, WITHOUT and WITH drift reduction (DriftReduction, Fasel 2017
@@ -39,6 +39,8 @@ int main(int argc, char** argv) {
     options.trueMounts = argc > 4 && !std::strcmp(argv[4], "true");
     if (argc > 5) options.simulation.gyrDrift = std::atof(argv[5]) * math::kDeg;
     if (options.simulation.scenario == BodyScenario::Walking) options.reduction = DriftReduction::indoor();
+    if (argc > 6 && !std::strcmp(argv[6], "markley"))
+        options.reduction.estimator = DriftReduction::Params::Estimator::Markley;
 
     std::array<std::array<std::array<double, 3>, kBodyJoints>, 2> sum{};
     std::array<double, kBodySegments> calibration{}, inclination0{}, inclination1{};
