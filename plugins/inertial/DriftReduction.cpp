@@ -315,15 +315,23 @@ DriftReduction::Result DriftReduction::run(const std::vector<Segment>& segments,
     // affect — the cost is Σ|R_block ã_d^G − ã_p^G| instead of Σ|ã_d^G − ã_p^G|.
     const auto fitVectors = [&](std::size_t l) {
         const auto ip = static_cast<std::size_t>(links[l].proximal), id = static_cast<std::size_t>(links[l].distal);
+        LinkResult& lr = result.links[l];
         std::vector<std::size_t> c;
         for (std::size_t k = 0; k < n; ++k)
             if (kin[ip].omega[k].norm() > p.omegaThreshold) c.push_back(k);
+        // A proximal segment that hardly turns (the pelvis in walking) leaves too few samples; then the
+        // distal segment's rotation has to provide the excitation.
+        if (c.size() < static_cast<std::size_t>(p.minFitSamples)) {
+            c.clear();
+            for (std::size_t k = 0; k < n; ++k)
+                if (std::max(kin[ip].omega[k].norm(), kin[id].omega[k].norm()) > p.omegaThreshold) c.push_back(k);
+            lr.distalExcitation = true;
+        }
         if (c.size() > static_cast<std::size_t>(p.maxOptimisationSamples)) {
             std::vector<std::size_t> thinned(static_cast<std::size_t>(p.maxOptimisationSamples));
             for (std::size_t i = 0; i < thinned.size(); ++i) thinned[i] = c[i * c.size() / thinned.size()];
             c = std::move(thinned);
         }
-        LinkResult& lr = result.links[l];
         lr.optimisationSamples = static_cast<int>(c.size());
         if (c.size() < 10) return;
         // Blocks: consecutive samples within fitBlock seconds (longer for long recordings, so that there

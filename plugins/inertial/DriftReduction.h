@@ -66,6 +66,7 @@ public:
         bool alignHeading = true;           // remove a constant heading offset per joint first
         int minWindowSamples = 5;           // valid drift samples a window needs for an estimate …
         double minWindowShare = 0.1;        // … and this share of the window's samples
+        int minFitSamples = 200;            // fewer samples above omegaThreshold: also use |ω_distal| (see .cpp)
         int maxOptimisationSamples = 3000;  // evenly thinned set for the Nelder–Mead cost
         double fitBlock = 2.5;              // s, blocks with their own rotation in the r fit (see .cpp)
         int maxFitBlocks = 60;              // at most this many blocks (the cost of the fit grows with them)
@@ -97,6 +98,7 @@ public:
         double azimuthValidShare = 0.0;  // … in the azimuth pass
         double meanCorrection = 0.0;     // rad, mean angle of the applied smoothed drift (both passes)
         int optimisationSamples = 0;
+        bool distalExcitation = false;  // the fit also used samples where only the distal segment turned
         double optimisationCost = 0.0;  // m/s², mean |ã_d^G − ã_p^G| at the optimum
     };
     struct Result {
