@@ -35,17 +35,6 @@ double bump(double p, double c, double s) {
 
 Quat axisRotation(int axis, double angle) { return math::quatFromAxisAngle(Vec3::Unit(axis), angle); }
 
-// Segment → sensor mount from the sensor's x and z axes written in segment coordinates, then turned
-// by a small misalignment (rotation vector in the sensor frame), as a real strap never sits square.
-Quat mountFromAxes(const Vec3& x, const Vec3& z, const Vec3& misalignment) {
-    Eigen::Matrix3d sensorToSegment;
-    sensorToSegment.col(0) = x.normalized();
-    sensorToSegment.col(2) = z.normalized();
-    sensorToSegment.col(1) = sensorToSegment.col(2).cross(sensorToSegment.col(0));
-    const Quat q = Quat(sensorToSegment) * math::quatFromRotationVector(misalignment);
-    return q.conjugate().normalized();
-}
-
 struct Pose {
     Quat pelvis, thigh, shank;
     Vec3 pelvisOrigin;  // without the walking translation (handled analytically)
@@ -146,6 +135,15 @@ private:
 };
 
 }  // namespace
+
+Quat mountFromAxes(const Vec3& x, const Vec3& z, const Vec3& misalignment) {
+    Eigen::Matrix3d sensorToSegment;
+    sensorToSegment.col(0) = x.normalized();
+    sensorToSegment.col(2) = z.normalized();
+    sensorToSegment.col(1) = sensorToSegment.col(2).cross(sensorToSegment.col(0));
+    const Quat q = Quat(sensorToSegment) * math::quatFromRotationVector(misalignment);
+    return q.conjugate().normalized();
+}
 
 Quat simulatedMount(LimbSegment segment, Side side) {
     const double lat = side == Side::Right ? 1.0 : -1.0;

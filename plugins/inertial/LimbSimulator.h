@@ -67,6 +67,11 @@ struct LimbSimulation {
 
 LimbSimulation simulateLimb(const LimbSimulatorParams& params);
 
+// Segment → sensor mount from the sensor's x and z axes written in segment coordinates, then turned
+// by a small misalignment (rotation vector in the sensor frame), as a real strap never sits square.
+// (Also used by BodySimulator.)
+math::Quat mountFromAxes(const math::Vec3& x, const math::Vec3& z, const math::Vec3& misalignment);
+
 // The mounts the simulator uses for a side (also in LimbSimulation::segments[i].mount).
 math::Quat simulatedMount(LimbSegment segment, Side side);
 

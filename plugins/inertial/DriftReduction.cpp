@@ -1,0 +1,497 @@
+#include "plugins/inertial/DriftReduction.h"
+
+#include "plugins/inertial/LowPass2.h"
+#include "plugins/inertial/NelderMead.h"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/SVD>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+namespace athlos::inertial {
+
+using math::Quat;
+using math::Vec3;
+using Mat3 = Eigen::Matrix3d;
+using Mat4 = Eigen::Matrix4d;
+using Vec4 = Eigen::Vector4d;
+using Estimator = DriftReduction::Params::Estimator;
+
+namespace {
+
+Mat3 skew(const Vec3& v) {
+    Mat3 m;
+    m << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
+    return m;
+}
+
+// ω (low-passed) and ω̇ of one sensor; ã = a + K r with K = [ω̇]× + [ω]×² (Eqs. 5.3–5.4).
+struct Kinematics {
+    std::vector<Vec3> omega, omegaDot;
+    Mat3 k(std::size_t i) const {
+        const Mat3 w = skew(omega[i]);
+        return skew(omegaDot[i]) + w * w;
+    }
+    Vec3 virtualAcc(const Vec3& a, std::size_t i, const Vec3& r) const {
+        return a + omegaDot[i].cross(r) + omega[i].cross(omega[i].cross(r));
+    }
+};
+
+Vec4 toVec(const Quat& q) { return {q.w(), q.x(), q.y(), q.z()}; }
+Quat toQuat(const Vec4& v) { return Quat(v[0], v[1], v[2], v[3]).normalized(); }
+
+// Largest eigenvector of a symmetric positive semi-definite 4×4 matrix by power iteration from a
+// guess (the previous sample's mean changes little, so a few steps suffice); a full eigen solve when
+// the guess is missing or does not converge.
+Vec4 dominantEigenvector(const Mat4& m, const Vec4* guess) {
+    if (guess) {
+        Vec4 v = *guess;
+        for (int i = 0; i < 6; ++i) {
+            const Vec4 next = m * v;
+            const double norm = next.norm();
+            if (!(norm > 0.0)) break;
+            const Vec4 u = next / norm;
+            if ((u - v).squaredNorm() < 1e-18) return u;
+            v = u;
+        }
+        // Converged well enough when the Rayleigh quotient is close to the largest eigenvalue bound.
+        const Vec4 mv = m * v;
+        if ((mv - v.dot(mv) * v).norm() <= 1e-9 * mv.norm()) return v;
+    }
+    Eigen::SelfAdjointEigenSolver<Mat4> es(m);
+    return es.eigenvectors().col(3);
+}
+
+// Normalised linear interpolation: SLERP to within 1e-6 rad for the small steps between window
+// estimates (≤ a few degrees), at a fraction of its cost.
+Quat nlerp(const Quat& a, const Quat& b, double t) {
+    const double sign = a.dot(b) < 0.0 ? -1.0 : 1.0;
+    return Quat((1.0 - t) * a.coeffs() + sign * t * b.coeffs()).normalized();
+}
+
+// Heading (rotation about earth z) that best turns the horizontal parts of u onto those of v.
+double bestHeading(const std::vector<Vec3>& u, const std::vector<Vec3>& v) {
+    double s = 0.0, c = 0.0;
+    for (std::size_t i = 0; i < u.size(); ++i) {
+        s += u[i].x() * v[i].y() - u[i].y() * v[i].x();
+        c += u[i].x() * v[i].x() + u[i].y() * v[i].y();
+    }
+    return (s == 0.0 && c == 0.0) ? 0.0 : std::atan2(s, c);
+}
+
+}  // namespace
+
+std::vector<Vec3> DriftReduction::zeroPhaseLowPass(const std::vector<Vec3>& x, double cutoff, double ts) {
+    std::vector<Vec3> y(x.size());
+    if (x.empty()) return y;
+    // LowPass2 is parametrised by τ with f_c = √2 / (2π τ).
+    const double tau = std::numbers::sqrt2 / (2.0 * std::numbers::pi * cutoff);
+    LowPass2<3> forward(tau, ts), backward(tau, ts);
+    for (std::size_t i = 0; i < x.size(); ++i) y[i] = forward.step(x[i]);
+    for (std::size_t i = x.size(); i-- > 0;) y[i] = backward.step(y[i]);
+    return y;
+}
+
+Quat DriftReduction::markleyMean(const std::vector<Quat>& q) {
+    Mat4 m = Mat4::Zero();
+    for (const Quat& x : q) {
+        const Vec4 v = toVec(x);
+        m += v * v.transpose();
+    }
+    if (q.empty()) return Quat::Identity();
+    return toQuat(dominantEigenvector(m, nullptr));
+}
+
+bool DriftReduction::windowedMean(const std::vector<Quat>& q, const std::vector<unsigned char>& valid,
+                                  std::size_t halfWidth, int minCount, std::vector<Quat>& out) {
+    const std::size_t n = q.size();
+    out.assign(n, Quat::Identity());
+    std::vector<unsigned char> estimated(n, 0);
+    Mat4 m = Mat4::Zero();
+    long count = 0;
+    const auto add = [&](std::size_t i, double sign) {
+        if (!valid[i]) return;
+        const Vec4 v = toVec(q[i]);
+        m.noalias() += sign * (v * v.transpose());
+        count += sign > 0 ? 1 : -1;
+    };
+    // Window [k − w, k + w]: start with [0, w − 1], then enter k + w and leave k − w − 1 each step.
+    for (std::size_t i = 0; i < std::min(halfWidth, n); ++i) add(i, 1.0);
+    Vec4 previous;
+    bool havePrevious = false;
+    for (std::size_t k = 0; k < n; ++k) {
+        if (k + halfWidth < n) add(k + halfWidth, 1.0);
+        if (k > halfWidth) add(k - halfWidth - 1, -1.0);
+        if (count < minCount) {
+            havePrevious = false;
+            continue;
+        }
+        Vec4 v = dominantEigenvector(m, havePrevious ? &previous : nullptr);
+        if (havePrevious && v.dot(previous) < 0.0) v = -v;
+        previous = v;
+        havePrevious = true;
+        out[k] = toQuat(v);
+        estimated[k] = 1;
+    }
+    // Fill the gaps by SLERP between the neighbouring estimates; hold at both ends.
+    std::size_t last = n;  // last estimated index
+    bool any = false;
+    for (std::size_t k = 0; k < n; ++k) {
+        if (!estimated[k]) continue;
+        any = true;
+        if (last == n) {
+            for (std::size_t i = 0; i < k; ++i) out[i] = out[k];
+        } else if (k > last + 1) {
+            for (std::size_t i = last + 1; i < k; ++i)
+                out[i] = math::slerp(out[last], out[k], double(i - last) / double(k - last));
+        }
+        last = k;
+    }
+    if (!any) return false;
+    for (std::size_t i = last + 1; i < n; ++i) out[i] = out[last];
+    return true;
+}
+
+bool DriftReduction::windowedWahba(const std::vector<Vec3>& from, const std::vector<Vec3>& to,
+                                   const std::vector<unsigned char>& valid, std::size_t halfWidth, std::size_t step,
+                                   int minCount, bool aboutVertical, std::vector<Quat>& out, double prior) {
+    const std::size_t n = from.size();
+    out.assign(n, Quat::Identity());
+    if (n == 0) return false;
+    step = std::max<std::size_t>(1, step);
+    // B = Σ to·fromᵀ over the window, kept as a running sum: the window only moves forward, so every
+    // sample enters and leaves once.
+    Mat3 window = Mat3::Zero();
+    long count = 0;
+    std::size_t lo = 0, hi = 0;  // window [lo, hi)
+    std::vector<std::size_t> at;
+    std::vector<Quat> rotation;
+    for (std::size_t k = 0; k < n; k += step) {
+        const std::size_t a = k > halfWidth ? k - halfWidth : 0, b = std::min(n, k + halfWidth + 1);
+        for (; hi < b; ++hi)
+            if (valid[hi]) {
+                window.noalias() += to[hi] * from[hi].transpose();
+                ++count;
+            }
+        for (; lo < a; ++lo)
+            if (valid[lo]) {
+                window.noalias() -= to[lo] * from[lo].transpose();
+                --count;
+            }
+        if (count < minCount) continue;
+        const Mat3& bm = window;
+        if (aboutVertical) {
+            // Rotation about z only: ψ = atan2(Σ (from × to)_z, Σ from·to) of the horizontal parts.
+            at.push_back(k);
+            rotation.push_back(math::headingRotation(std::atan2(bm(1, 0) - bm(0, 1), bm(0, 0) + bm(1, 1))));
+            continue;
+        }
+        // Wahba's problem: R maximising tr(Rᵀ B) (Markley 1988: SVD solution). A weak pull towards the
+        // identity (+λI) keeps R defined when all vectors of the window are parallel (at rest they are
+        // all gravity, and the rotation about them is unobservable): then R is the smallest rotation.
+        const Eigen::JacobiSVD<Mat3> svd(bm + prior * bm.norm() * Mat3::Identity(),
+                                         Eigen::ComputeFullU | Eigen::ComputeFullV);
+        Mat3 fix = Mat3::Identity();
+        fix(2, 2) = svd.matrixU().determinant() * svd.matrixV().determinant() < 0.0 ? -1.0 : 1.0;
+        at.push_back(k);
+        rotation.push_back(Quat(Mat3(svd.matrixU() * fix * svd.matrixV().transpose())).normalized());
+    }
+    if (at.empty()) return false;
+    std::size_t j = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+        while (j + 1 < at.size() && at[j + 1] <= k) ++j;
+        if (k <= at.front())
+            out[k] = rotation.front();
+        else if (j + 1 >= at.size())
+            out[k] = rotation.back();
+        else
+            out[k] = nlerp(rotation[j], rotation[j + 1], double(k - at[j]) / double(at[j + 1] - at[j]));
+    }
+    return true;
+}
+
+DriftReduction::Result DriftReduction::run(const std::vector<Segment>& segments, const std::vector<Link>& links,
+                                           double ts, const Progress& progress) const {
+    const Params& p = params_;
+    Result result;
+    result.q.reserve(segments.size());
+    for (const Segment& s : segments) result.q.push_back(s.q);
+    result.links.resize(links.size());
+    result.restIntervals.assign(segments.size(), 0);
+    const std::size_t n = segments.empty() ? 0 : segments.front().q.size();
+    const auto report = [&](double f) { return !progress || progress(f); };
+    const auto cancelled = [&]() {
+        result.q.clear();
+        return result;
+    };
+
+    // (a) Static correction (Fasel 2017 Eq. 2.7, spread by SLERP between rest instants).
+    if (p.staticCorrection) {
+        for (std::size_t s = 0; s < segments.size(); ++s) {
+            RestDetector rest(p.rest, ts);
+            std::vector<std::size_t> anchor;
+            std::vector<Quat> anchorDelta;
+            std::size_t begin = n;
+            Vec3 sum = Vec3::Zero();
+            for (std::size_t k = 0; k <= n; ++k) {
+                bool isRest = false;
+                if (k < n) {
+                    rest.updateGyr(segments[s].gyr[k]);
+                    rest.updateAcc(segments[s].acc[k]);
+                    isRest = rest.isRest();
+                }
+                if (isRest) {
+                    if (begin == n) {
+                        begin = k;
+                        sum.setZero();
+                    }
+                    sum += result.q[s][k] * segments[s].acc[k];
+                } else if (begin != n) {
+                    // The measured specific force at rest points up: δ takes it onto e_z.
+                    if (sum.norm() > 0.0) {
+                        anchor.push_back((begin + k - 1) / 2);
+                        anchorDelta.push_back(Quat::FromTwoVectors(sum, Vec3::UnitZ()));
+                    }
+                    begin = n;
+                }
+            }
+            result.restIntervals[s] = static_cast<int>(anchor.size());
+            if (anchor.empty()) continue;
+            std::size_t j = 0;
+            for (std::size_t k = 0; k < n; ++k) {
+                while (j + 1 < anchor.size() && anchor[j + 1] <= k) ++j;
+                Quat d;
+                if (k <= anchor.front())
+                    d = anchorDelta.front();
+                else if (j + 1 >= anchor.size())
+                    d = anchorDelta.back();
+                else
+                    d = math::slerp(anchorDelta[j], anchorDelta[j + 1],
+                                    double(k - anchor[j]) / double(anchor[j + 1] - anchor[j]));
+                result.q[s][k] = (d * result.q[s][k]).normalized();
+            }
+        }
+    }
+    if (!report(0.1)) return cancelled();
+    if (!p.jointCorrection || links.empty() || n < 3) return result;
+
+    // Chain order: the root (never distal) first, then breadth first (Eqs. 5.12–5.14).
+    std::vector<int> isDistal(segments.size(), 0);
+    for (const Link& l : links) isDistal[static_cast<std::size_t>(l.distal)] = 1;
+    int root = 0;
+    while (root < static_cast<int>(segments.size()) && isDistal[static_cast<std::size_t>(root)]) ++root;
+    std::vector<std::size_t> order;
+    {
+        std::vector<int> frontier{root};
+        while (!frontier.empty()) {
+            std::vector<int> next;
+            for (int s : frontier)
+                for (std::size_t l = 0; l < links.size(); ++l)
+                    if (links[l].proximal == s) {
+                        order.push_back(l);
+                        next.push_back(links[l].distal);
+                    }
+            frontier = std::move(next);
+        }
+    }
+
+    // Low-passed ω and its derivative per sensor.
+    std::vector<Kinematics> kin(segments.size());
+    for (std::size_t s = 0; s < segments.size(); ++s) {
+        kin[s].omega = zeroPhaseLowPass(segments[s].gyr, p.gyrCutoff, ts);
+        kin[s].omegaDot.resize(n);
+        for (std::size_t k = 0; k < n; ++k) {
+            const std::size_t a = k == 0 ? 0 : k - 1, b = std::min(n - 1, k + 1);
+            kin[s].omegaDot[k] = (kin[s].omega[b] - kin[s].omega[a]) / (double(b - a) * ts);
+        }
+    }
+    if (!report(0.2)) return cancelled();
+
+    // Sensor-to-joint vectors by Nelder–Mead on Eq. 5.5. The cost compares the virtual accelerations
+    // in the earth frame, so the very drift to be removed would bias r; each block of `fitBlock`
+    // seconds therefore gets its own best rotation (Kabsch), which a slowly growing drift cannot
+    // affect — the cost is Σ|R_block ã_d^G − ã_p^G| instead of Σ|ã_d^G − ã_p^G|.
+    const auto fitVectors = [&](std::size_t l) {
+        const auto ip = static_cast<std::size_t>(links[l].proximal), id = static_cast<std::size_t>(links[l].distal);
+        LinkResult& lr = result.links[l];
+        std::vector<std::size_t> c;
+        for (std::size_t k = 0; k < n; ++k)
+            if (kin[ip].omega[k].norm() > p.omegaThreshold) c.push_back(k);
+        // A proximal segment that hardly turns (the pelvis in walking) leaves too few samples; then the
+        // distal segment's rotation has to provide the excitation.
+        if (c.size() < static_cast<std::size_t>(p.minFitSamples)) {
+            c.clear();
+            for (std::size_t k = 0; k < n; ++k)
+                if (std::max(kin[ip].omega[k].norm(), kin[id].omega[k].norm()) > p.omegaThreshold) c.push_back(k);
+            lr.distalExcitation = true;
+        }
+        if (c.size() > static_cast<std::size_t>(p.maxOptimisationSamples)) {
+            std::vector<std::size_t> thinned(static_cast<std::size_t>(p.maxOptimisationSamples));
+            for (std::size_t i = 0; i < thinned.size(); ++i) thinned[i] = c[i * c.size() / thinned.size()];
+            c = std::move(thinned);
+        }
+        lr.optimisationSamples = static_cast<int>(c.size());
+        if (c.size() < 10) return;
+        // Blocks: consecutive samples within fitBlock seconds (longer for long recordings, so that there
+        // are at most maxFitBlocks), at least 10 samples each.
+        const double block = std::max(p.fitBlock, double(c.back() - c.front()) * ts / std::max(1, p.maxFitBlocks));
+        std::vector<std::size_t> blockStart{0};
+        for (std::size_t i = 1; i < c.size(); ++i)
+            if (double(c[i] - c[blockStart.back()]) * ts > block && i - blockStart.back() >= 10)
+                blockStart.push_back(i);
+        if (blockStart.size() > 1 && c.size() - blockStart.back() < 10) blockStart.pop_back();
+        blockStart.push_back(c.size());
+        std::vector<Vec3> ap(c.size()), ad(c.size());
+        std::vector<Mat3> bp(c.size()), bd(c.size());
+        for (std::size_t i = 0; i < c.size(); ++i) {
+            const std::size_t k = c[i];
+            const Mat3 rp = result.q[ip][k].toRotationMatrix(), rd = result.q[id][k].toRotationMatrix();
+            ap[i] = rp * segments[ip].acc[k];
+            ad[i] = rd * segments[id].acc[k];
+            bp[i] = rp * kin[ip].k(k);
+            bd[i] = rd * kin[id].k(k);
+        }
+        std::vector<Vec3> up(c.size()), ud(c.size());
+        const auto cost = [&](const Eigen::VectorXd& x) {
+            const Vec3 rP = x.head<3>(), rD = x.tail<3>();
+            double e = 0.0;
+            for (std::size_t b = 0; b + 1 < blockStart.size(); ++b) {
+                Mat3 h = Mat3::Zero();
+                for (std::size_t i = blockStart[b]; i < blockStart[b + 1]; ++i) {
+                    up[i] = ap[i] + bp[i] * rP;
+                    ud[i] = ad[i] + bd[i] * rD;
+                    h.noalias() += ud[i] * up[i].transpose();
+                }
+                const Eigen::JacobiSVD<Mat3> svd(h, Eigen::ComputeFullU | Eigen::ComputeFullV);
+                Mat3 fix = Mat3::Identity();
+                fix(2, 2) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0.0 ? -1.0 : 1.0;
+                const Mat3 turn = svd.matrixV() * fix * svd.matrixU().transpose();  // ud → up (Kabsch)
+                for (std::size_t i = blockStart[b]; i < blockStart[b + 1]; ++i) e += (turn * ud[i] - up[i]).norm();
+            }
+            return e / double(c.size());
+        };
+        NelderMead::Params nm;
+        nm.initialStep = 0.1;
+        nm.xTolerance = 1e-4;
+        nm.fTolerance = 1e-7;
+        const NelderMead::Result best = NelderMead::minimize(cost, Eigen::VectorXd::Zero(6), nm);
+        lr.proximalToJoint = best.x.head<3>();
+        lr.distalToJoint = best.x.tail<3>();
+        lr.optimisationCost = best.value;
+    };
+
+    // Virtual joint accelerations of both ends of a link with the orientations q.
+    std::vector<Vec3> gp(n), gd(n);
+    const auto virtualAccelerations = [&](const std::vector<std::vector<Quat>>& q, const Link& link,
+                                          const LinkResult& lr) {
+        const auto ip = static_cast<std::size_t>(link.proximal), id = static_cast<std::size_t>(link.distal);
+        for (std::size_t k = 0; k < n; ++k) {
+            gp[k] = q[ip][k] * kin[ip].virtualAcc(segments[ip].acc[k], k, lr.proximalToJoint);
+            gd[k] = q[id][k] * kin[id].virtualAcc(segments[id].acc[k], k, lr.distalToJoint);
+        }
+    };
+
+    const auto halfWidth = static_cast<std::size_t>(std::lround(p.window / ts));
+    std::vector<Quat> delta(n), smoothed(n);
+    std::vector<unsigned char> valid(n);
+    std::vector<Vec3> fromBuf(p.estimator == Estimator::Wahba ? n : 0), toBuf(fromBuf.size());
+    const int minCount =
+        std::max(p.minWindowSamples, static_cast<int>(std::lround(p.minWindowShare * double(2 * halfWidth + 1))));
+    const auto wahbaStep = static_cast<std::size_t>(std::max(1L, std::lround(p.wahbaStep / ts)));
+    // Smoothed drift taking `from` onto `to` (Eqs. 5.6–5.11 + Markley mean); returns the share of valid samples.
+    const auto smoothedDrift = [&](const std::vector<Vec3>& from, const std::vector<Vec3>& to, bool horizontal,
+                                   std::vector<Quat>& out) {
+        const double minNorm = horizontal ? p.azimuthMinNorm : p.minNorm;
+        std::size_t used = 0;
+        for (std::size_t k = 0; k < n; ++k) {
+            Vec3 u = from[k], v = to[k];
+            if (horizontal) u.z() = v.z() = 0.0;
+            const double nu = u.norm(), nv = v.norm();
+            bool ok = nu > minNorm && nv > minNorm && std::abs(nu - nv) < p.maxNormDifference;
+            if (ok && p.maxRelativeDifference > 0.0)
+                ok = std::abs(nu - nv) / (0.5 * (nu + nv)) < p.maxRelativeDifference;
+            // Opposite vectors leave the axis undefined; they are not drift.
+            if (ok && u.dot(v) < -0.5 * nu * nv) ok = false;
+            valid[k] = ok;
+            if (p.estimator == Estimator::Markley) {
+                delta[k] = ok ? Quat::FromTwoVectors(u, v) : Quat::Identity();
+            } else {
+                fromBuf[k] = u;
+                toBuf[k] = v;
+            }
+            used += ok;
+        }
+        const bool any = p.estimator == Estimator::Markley
+                             ? windowedMean(delta, valid, halfWidth, minCount, out)
+                             : windowedWahba(fromBuf, toBuf, valid, halfWidth, wahbaStep, minCount, horizontal, out);
+        if (!any) out.assign(n, Quat::Identity());
+        return double(used) / double(n);
+    };
+
+    // The correction itself (heading alignment, then the passes of Eqs. 5.12–5.14 / 6.12–6.13) of q.
+    const auto correct = [&](std::vector<std::vector<Quat>>& q) {
+        for (LinkResult& lr : result.links) lr.meanCorrection = 0.0;
+        if (p.alignHeading) {
+            for (std::size_t l : order) {
+                virtualAccelerations(q, links[l], result.links[l]);
+                const double psi = bestHeading(gd, gp);
+                const Quat turn = math::headingRotation(psi);
+                for (Quat& x : q[static_cast<std::size_t>(links[l].distal)]) x = (turn * x).normalized();
+                result.links[l].headingOffset = psi;
+            }
+        }
+        const std::size_t passes = (p.azimuthPass ? 2 : 1) * static_cast<std::size_t>(std::max(1, p.iterations));
+        for (std::size_t pass = 0; pass < passes; ++pass) {
+            const bool horizontal = p.azimuthPass && pass % 2 == 1;
+            // Root: the mean of its drifts against every neighbour (Eqs. 5.12–5.13).
+            std::vector<std::vector<Quat>> rootDrifts;
+            for (std::size_t l = 0; l < links.size(); ++l) {
+                if (links[l].proximal != root) continue;
+                virtualAccelerations(q, links[l], result.links[l]);
+                rootDrifts.emplace_back();
+                smoothedDrift(gp, gd, horizontal, rootDrifts.back());
+            }
+            if (!rootDrifts.empty()) {
+                std::vector<Quat>& r = q[static_cast<std::size_t>(root)];
+                Vec4 previous;
+                for (std::size_t k = 0; k < n; ++k) {
+                    Mat4 m = Mat4::Zero();
+                    for (const auto& d : rootDrifts) {
+                        const Vec4 v = toVec(d[k]);
+                        m += v * v.transpose();
+                    }
+                    Vec4 v = dominantEigenvector(m, k > 0 ? &previous : nullptr);
+                    if (k > 0 && v.dot(previous) < 0.0) v = -v;
+                    previous = v;
+                    r[k] = (toQuat(v) * r[k]).normalized();
+                }
+            }
+            // Then proximal to distal (Eq. 5.14).
+            for (std::size_t l : order) {
+                virtualAccelerations(q, links[l], result.links[l]);
+                const double share = smoothedDrift(gd, gp, horizontal, smoothed);
+                LinkResult& lr = result.links[l];
+                (horizontal ? lr.azimuthValidShare : lr.validShare) = share;
+                std::vector<Quat>& d = q[static_cast<std::size_t>(links[l].distal)];
+                double angle = 0.0;
+                for (std::size_t k = 0; k < n; ++k) {
+                    d[k] = (smoothed[k] * d[k]).normalized();
+                    angle += 2.0 * std::acos(std::clamp(std::abs(smoothed[k].w()), 0.0, 1.0));
+                }
+                lr.meanCorrection += angle / double(n);
+            }
+        }
+    };
+
+    for (std::size_t l = 0; l < links.size(); ++l) {
+        fitVectors(l);
+        if (!report(0.2 + 0.4 * double(l + 1) / double(links.size()))) return cancelled();
+    }
+    correct(result.q);
+    if (!report(1.0)) return cancelled();
+    return result;
+}
+
+}  // namespace athlos::inertial
