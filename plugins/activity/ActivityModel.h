@@ -8,7 +8,9 @@
 #include "core/model/TrainedModel.h"
 #include "core/util/Expected.h"
 #include "core/util/Progress.h"
+#include "plugins/activity/Windows.h"
 #include "plugins/activity/Classifier.h"
+#include "plugins/activity/CnnClassifier.h"
 
 #include <QJsonObject>
 #include <QStringList>
@@ -29,6 +31,8 @@ struct RobustScaling {
 class ActivityModel {
 public:
     static constexpr const char* kFormat = "opencv-yaml";
+    // The CNN: the ONNX bytes as base64 text (a project keeps definitions as text), parsed by cv::dnn only.
+    static constexpr const char* kOnnxFormat = "onnx-base64";
 
     QStringList classes;
     QStringList sensors;              // acc, gyr, mag
@@ -36,8 +40,9 @@ public:
     QStringList inputColumns;         // stream columns read
     double window = 3.0, step = 1.5;  // s
     RobustScaling scaling;
-    std::optional<Classifier> classifier;
-    QJsonObject provenance;  // training recordings, cross-validation, parameters (stored as is)
+    std::optional<Classifier> classifier;  // features → OpenCV ml
+    std::optional<CnnClassifier> cnn;      // or: raw windows of inputColumns → ONNX network (no features)
+    QJsonObject provenance;                // training recordings, cross-validation, parameters (stored as is)
 
     // Parses a stored model (its JSON description and the OpenCV YAML text); the error says what is wrong.
     static Expected<ActivityModel> fromStored(const TrainedModel& stored);
@@ -45,6 +50,9 @@ public:
 
     // Class probabilities of each window (rows) of `samples` (raw features, scaled here).
     void probabilities(cv::Mat samples, cv::Mat& out) const;
+    // Class probabilities of `windows` of a stream: features and the classifier, or raw windows and the CNN.
+    Status windowProbabilities(const StreamInfo& info, const StreamData& data, const std::vector<Window>& windows,
+                               cv::Mat& out, const Progress& progress = {}) const;
 
     // Refuses a stream whose columns or sensors do not match what the model was trained on.
     Status checkStream(const StreamInfo& info) const;

@@ -42,21 +42,34 @@ Expected<std::vector<TrainingSource>> trainingSources(const Project& project, co
     return sources;
 }
 
+QStringList trainingClasses(const std::vector<TrainingSource>& sources, const TrainingOptions& options) {
+    // As given, else every ground-truth label (sorted, so the order does not depend on the data).
+    if (!options.classes.isEmpty()) return options.classes;
+    std::set<QString> labels;
+    for (const auto& s : sources)
+        for (const auto& a : s.annotations) labels.insert(a.label);
+    QStringList classes;
+    for (const auto& l : labels) classes << l;
+    return classes;
+}
+
+std::vector<LabelledWindow> labelledWindows(const TrainingSource& source, const TrainingOptions& options,
+                                            const QStringList& classes) {
+    std::vector<LabelledWindow> out;
+    for (const Window& w : slidingWindows(*source.data, options.window, options.step)) {
+        const QString label = windowLabel(w, source.annotations, classes, options.minLabelFraction);
+        if (!label.isEmpty()) out.push_back({w, int(classes.indexOf(label))});
+    }
+    return out;
+}
+
 Expected<Dataset> buildDataset(const std::vector<TrainingSource>& sources, const TrainingOptions& options,
                                const Progress& progress) {
     Dataset d;
     d.sensors = options.sensors;
     if (!(options.window > 0) || !(options.step > 0))
         return makeError(QStringLiteral("--window and --step must be positive (s)"));
-    // Classes: as given, else every ground-truth label (sorted, so the order does not depend on the data).
-    if (!options.classes.isEmpty()) {
-        d.classes = options.classes;
-    } else {
-        std::set<QString> labels;
-        for (const auto& s : sources)
-            for (const auto& a : s.annotations) labels.insert(a.label);
-        for (const auto& l : labels) d.classes << l;
-    }
+    d.classes = trainingClasses(sources, options);
     std::vector<float> rows;
     for (std::size_t si = 0; si < sources.size(); ++si) {
         const TrainingSource& s = sources[si];
@@ -76,14 +89,11 @@ Expected<Dataset> buildDataset(const std::vector<TrainingSource>& sources, const
                                          .arg(s.recording, s.info.name, c, unit, d.units.value(c).toString()));
             }
         }
-        const auto windows = slidingWindows(*s.data, options.window, options.step);
         std::vector<float> features(std::size_t(extractor->size()));
-        for (const Window& w : windows) {
-            const QString label = windowLabel(w, s.annotations, d.classes, options.minLabelFraction);
-            if (label.isEmpty()) continue;
-            extractor->compute(*s.data, w.begin, w.end, features.data());
+        for (const LabelledWindow& lw : labelledWindows(s, options, d.classes)) {
+            extractor->compute(*s.data, lw.window.begin, lw.window.end, features.data());
             rows.insert(rows.end(), features.begin(), features.end());
-            d.labels.push_back(int(d.classes.indexOf(label)));
+            d.labels.push_back(lw.label);
             d.source.push_back(int(si));
         }
         if (progress.isCancelled()) return makeError(QStringLiteral("cancelled"));

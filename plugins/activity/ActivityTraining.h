@@ -7,6 +7,7 @@
 #include "core/util/Progress.h"
 #include "plugins/activity/ActivityModel.h"
 #include "plugins/activity/Classifier.h"
+#include "plugins/activity/Windows.h"
 
 #include <QJsonObject>
 #include <QStringList>
@@ -34,7 +35,20 @@ struct TrainingOptions {
     QString validation = QStringLiteral("leave-one-athlete-out");  // or leave-one-recording-out, k-fold, none
     int folds = 5;
     int maxGroups = 10;  // leave-one-*-out with more subjects: subjects dealt into this many folds
+    int rawLength = 0;   // raw windows (CNN): samples per window; 0: the window at the first recording's rate
 };
+
+// A window of a source with its label (index into the classes).
+struct LabelledWindow {
+    Window window;
+    int label = -1;
+};
+
+// The windows of `source` that carry one of `classes` (sliding windows labelled by annotation overlap).
+std::vector<LabelledWindow> labelledWindows(const TrainingSource& source, const TrainingOptions& options,
+                                            const QStringList& classes);
+// The classes: options.classes, else every ground-truth label of the sources (sorted).
+QStringList trainingClasses(const std::vector<TrainingSource>& sources, const TrainingOptions& options);
 
 struct Dataset {
     cv::Mat samples;          // windows × features, CV_32F (unscaled)
