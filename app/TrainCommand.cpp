@@ -73,6 +73,7 @@ int importCnnModel(Project& project, const QCommandLineParser& cl, const QString
     options.window = model->window;
     options.step = model->step;
     options.sensors = model->sensors;
+    options.segmentation = model->segmentation;
     auto raw = buildRawDataset(sources, options, model->classes, model->cnn->length(), progress.sub(0.0, 0.5));
     if (!raw) return fail(raw.message(), raw.message() == u"cancelled" ? Cancelled : Failed);
     cv::Mat p;
@@ -172,6 +173,19 @@ int cmdTrain(const QStringList& args) {
     p.addOption({QStringLiteral("min-label-fraction"),
                  QStringLiteral("Share of a window its label must cover to be trained on (default 0.5)."),
                  QStringLiteral("F"), QStringLiteral("0.5")});
+    p.addOption({QStringLiteral("segmentation"),
+                 QStringLiteral("sliding (default: windows every --step s), events:impact (beach-volleyball impact "
+                                "detector, a --window s window centred on each impact) or events:tackle (rugby tackle "
+                                "candidates, threshold fitted on the annotations to reach --tackle-recall). Events "
+                                "outside every annotation are trained as class 'null'."),
+                 QStringLiteral("KIND"), QStringLiteral("sliding")});
+    p.addOption({QStringLiteral("impact-threshold"),
+                 QStringLiteral("events:impact: ε_impact in m/s² (default 5.1, seed 000 §5.2)."), QStringLiteral("A"),
+                 QStringLiteral("5.1")});
+    p.addOption({QStringLiteral("tackle-recall"),
+                 QStringLiteral("events:tackle: share of the annotated events the fitted threshold detects "
+                                "(default 1: all, seed 000 §5.1)."),
+                 QStringLiteral("R"), QStringLiteral("1")});
     p.addOption({QStringLiteral("export-windows"),
                  QStringLiteral("Write the labelled raw windows (windows.npy N×C×L float32, labels.npy, groups.npy, "
                                 "meta.json) into DIR for scripts/train_cnn.py, and stop (nothing is trained or "
@@ -224,6 +238,15 @@ int cmdTrain(const QStringList& args) {
                     Usage);
     if (cl.isSet(QStringLiteral("onnx")) && !cnn)
         return fail(QStringLiteral("--onnx goes with --classifier cnn"), Usage);
+    auto segmentation = Segmentation::parse(cl.value(QStringLiteral("segmentation")));
+    if (!segmentation) return fail(segmentation.message(), Usage);
+    options.segmentation = *segmentation;
+    options.segmentation.impact.threshold = cl.value(QStringLiteral("impact-threshold")).toDouble(&ok);
+    if (!ok || !(options.segmentation.impact.threshold > 0))
+        return fail(QStringLiteral("--impact-threshold: a positive acceleration in m/s²"), Usage);
+    options.segmentation.tackle.targetRecall = cl.value(QStringLiteral("tackle-recall")).toDouble(&ok);
+    if (!ok || !(options.segmentation.tackle.targetRecall > 0) || options.segmentation.tackle.targetRecall > 1)
+        return fail(QStringLiteral("--tackle-recall: a share above 0, at most 1"), Usage);
     options.rawLength = cl.value(QStringLiteral("window-samples")).toInt(&ok);
     if (!ok || options.rawLength < 0 || options.rawLength > 100000)
         return fail(QStringLiteral("--window-samples: an integer from 0 to 100000"), Usage);
@@ -273,6 +296,11 @@ int cmdTrain(const QStringList& args) {
     std::printf("%lld windows of %g s (step %g s) from %lld recordings, %lld features, classes: %s\n",
                 qlonglong(dataset->labels.size()), options.window, options.step, qlonglong(sources->size()),
                 qlonglong(dataset->features.size()), qUtf8Printable(dataset->classes.join(QStringLiteral(", "))));
+    if (dataset->segmentation.events())
+        std::printf("segmentation %s: windows of %g s centred on detected events (threshold %.3g m/s²)\n",
+                    qUtf8Printable(dataset->segmentation.kind), options.window,
+                    dataset->segmentation.kind == u"events:tackle" ? dataset->segmentation.tackle.threshold
+                                                                   : dataset->segmentation.impact.threshold);
 
     QJsonObject validation{{QStringLiteral("scheme"), options.validation}};
     if (validate) {

@@ -87,6 +87,9 @@ Expected<ActivityModel> ActivityModel::fromStored(const TrainedModel& stored) {
     m.provenance = d;
     if (m.classes.size() < 2) return refuse(QStringLiteral("it lists fewer than two classes"));
     if (!(m.window > 0) || !(m.step > 0)) return refuse(QStringLiteral("its window or step is not positive"));
+    auto segmentation = Segmentation::fromJson(d.value(QStringLiteral("segmentation")));
+    if (!segmentation) return refuse(segmentation.message());
+    m.segmentation = *segmentation;
     if (isCnn) {
         if (m.inputColumns.isEmpty()) return refuse(QStringLiteral("it lists no input columns"));
         const auto bytes = QByteArray::fromBase64Encoding(stored.definition, QByteArray::AbortOnBase64DecodingErrors);
@@ -128,6 +131,7 @@ Expected<TrainedModel> ActivityModel::toStored(const QString& name) const {
         d[QStringLiteral("window")] = window;
         d[QStringLiteral("step")] = step;
         d[QStringLiteral("cnn")] = cnn->toJson();
+        d[QStringLiteral("segmentation")] = segmentation.toJson();
         d[QStringLiteral("classifier")] = QStringLiteral("cnn");
         t.description = d;
         return t;
@@ -161,6 +165,7 @@ Expected<TrainedModel> ActivityModel::toStored(const QString& name) const {
     d[QStringLiteral("window")] = window;
     d[QStringLiteral("step")] = step;
     d[QStringLiteral("scaling")] = scaling.toJson();
+    d[QStringLiteral("segmentation")] = segmentation.toJson();
     d[QStringLiteral("classifier")] = classifier->kind();
     t.description = d;
     return t;
@@ -264,6 +269,27 @@ Annotations intervalsFromWindows(const std::vector<double>& centres, const cv::M
 Expected<Annotations> ActivityModel::classify(const StreamInfo& info, const StreamData& data, int smoothing,
                                               const Progress& progress) const {
     if (Status s = checkStream(info); !s) return s.error();
+    if (segmentation.events()) {
+        auto windows = segmentation.windows(info, data, window, step);
+        if (!windows) return windows.error();
+        Annotations out;
+        if (windows->empty()) return out;
+        cv::Mat p;
+        if (Status s = windowProbabilities(info, data, *windows, p, progress); !s) return s.error();
+        for (int i = 0; i < p.rows; ++i) {
+            const float* row = p.ptr<float>(i);
+            const auto best = int(std::max_element(row, row + p.cols) - row);
+            if (classes.value(best) == segmentation.nullLabel) continue;
+            Annotation a;
+            a.label = classes.value(best);
+            const double t = (*windows)[std::size_t(i)].centre();
+            a.tStart = t - 0.5 * kEventSpan;
+            a.tEnd = t + 0.5 * kEventSpan;
+            a.confidence = std::clamp(double(row[best]), 0.0, 1.0);
+            out.push_back(std::move(a));
+        }
+        return out;
+    }
     const std::vector<Window> windows = slidingWindows(data, window, step);
     if (windows.empty()) return makeError(QStringLiteral("the stream has fewer than 2 samples to classify"));
     std::vector<double> centres;

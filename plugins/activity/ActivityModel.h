@@ -11,6 +11,7 @@
 #include "plugins/activity/Windows.h"
 #include "plugins/activity/Classifier.h"
 #include "plugins/activity/CnnClassifier.h"
+#include "plugins/activity/Segmentation.h"
 
 #include <QJsonObject>
 #include <QStringList>
@@ -33,12 +34,14 @@ public:
     static constexpr const char* kFormat = "opencv-yaml";
     // The CNN: the ONNX bytes as base64 text (a project keeps definitions as text), parsed by cv::dnn only.
     static constexpr const char* kOnnxFormat = "onnx-base64";
+    static constexpr double kEventSpan = 1.0;  // s, the interval written for a classified event
 
     QStringList classes;
     QStringList sensors;              // acc, gyr, mag
     QStringList features;             // names, in the order of FeatureExtractor
     QStringList inputColumns;         // stream columns read
     double window = 3.0, step = 1.5;  // s
+    Segmentation segmentation;        // sliding windows, or `window` s around each detected event
     RobustScaling scaling;
     std::optional<Classifier> classifier;  // features → OpenCV ml
     std::optional<CnnClassifier> cnn;      // or: raw windows of inputColumns → ONNX network (no features)
@@ -57,9 +60,11 @@ public:
     // Refuses a stream whose columns or sensors do not match what the model was trained on.
     Status checkStream(const StreamInfo& info) const;
 
-    // Predicted annotations for a stream: windows classified, probabilities averaged over `smoothing`
-    // windows on each side, consecutive windows of one class merged; each window owns the time up to
-    // half-way to its neighbours' centres, the first and last extend to the ends of the stream.
+    // Predicted annotations for a stream. Sliding windows: windows classified, probabilities averaged
+    // over `smoothing` windows on each side, consecutive windows of one class merged; each window owns
+    // the time up to half-way to its neighbours' centres, the first and last extend to the ends of the
+    // stream. Events: one annotation of kEventSpan s centred on each detected event whose class is
+    // not the null label.
     Expected<Annotations> classify(const StreamInfo& info, const StreamData& data, int smoothing,
                                    const Progress& progress = {}) const;
 };

@@ -48,17 +48,57 @@ QStringList trainingClasses(const std::vector<TrainingSource>& sources, const Tr
     std::set<QString> labels;
     for (const auto& s : sources)
         for (const auto& a : s.annotations) labels.insert(a.label);
+    if (options.segmentation.events()) labels.insert(options.segmentation.nullLabel);
     QStringList classes;
     for (const auto& l : labels) classes << l;
     return classes;
 }
 
-std::vector<LabelledWindow> labelledWindows(const TrainingSource& source, const TrainingOptions& options,
-                                            const QStringList& classes) {
+Expected<Segmentation> fitSegmentation(const std::vector<TrainingSource>& sources, const TrainingOptions& options,
+                                       const QStringList& classes) {
+    Segmentation s = options.segmentation;
+    if (s.kind != QLatin1String("events:tackle") || s.tackle.threshold > 0) return s;
+    std::vector<double> peaks;
+    for (const TrainingSource& source : sources) {
+        auto signal = TackleDetector::signal(source.info, *source.data, s.tackle);
+        if (!signal)
+            return makeError(QStringLiteral("%1/%2: %3").arg(source.recording, source.info.name, signal.message()));
+        Annotations events;
+        for (const Annotation& a : source.annotations)
+            if (a.label != s.nullLabel && (classes.isEmpty() || classes.contains(a.label))) events.push_back(a);
+        const auto p = TackleDetector::annotationPeaks(*source.data, *signal, events);
+        peaks.insert(peaks.end(), p.begin(), p.end());
+    }
+    auto threshold = TackleDetector::fitThreshold(std::move(peaks), s.tackle);
+    if (!threshold) return threshold.error();
+    s.tackle.threshold = *threshold;
+    return s;
+}
+
+Expected<std::vector<LabelledWindow>> labelledWindows(const TrainingSource& source, const TrainingOptions& options,
+                                                      const Segmentation& segmentation, const QStringList& classes) {
     std::vector<LabelledWindow> out;
-    for (const Window& w : slidingWindows(*source.data, options.window, options.step)) {
-        const QString label = windowLabel(w, source.annotations, classes, options.minLabelFraction);
-        if (!label.isEmpty()) out.push_back({w, int(classes.indexOf(label))});
+    if (!segmentation.events()) {
+        for (const Window& w : slidingWindows(*source.data, options.window, options.step)) {
+            const QString label = windowLabel(w, source.annotations, classes, options.minLabelFraction);
+            if (!label.isEmpty()) out.push_back({w, int(classes.indexOf(label))});
+        }
+        return out;
+    }
+    auto windows = segmentation.windows(source.info, *source.data, options.window, options.step);
+    if (!windows)
+        return makeError(QStringLiteral("%1/%2: %3").arg(source.recording, source.info.name, windows.message()));
+    for (const Window& w : *windows) {
+        const double t = w.centre();
+        QString label = segmentation.nullLabel;
+        for (const Annotation& a : source.annotations)
+            if (a.tStart <= t && t <= a.tEnd && a.label != segmentation.nullLabel &&
+                (classes.isEmpty() || classes.contains(a.label))) {
+                label = a.label;
+                break;
+            }
+        const int index = int(classes.indexOf(label));
+        if (index >= 0) out.push_back({w, index});
     }
     return out;
 }
@@ -70,6 +110,9 @@ Expected<Dataset> buildDataset(const std::vector<TrainingSource>& sources, const
     if (!(options.window > 0) || !(options.step > 0))
         return makeError(QStringLiteral("--window and --step must be positive (s)"));
     d.classes = trainingClasses(sources, options);
+    auto segmentation = fitSegmentation(sources, options, d.classes);
+    if (!segmentation) return segmentation.error();
+    d.segmentation = *segmentation;
     std::vector<float> rows;
     for (std::size_t si = 0; si < sources.size(); ++si) {
         const TrainingSource& s = sources[si];
@@ -90,7 +133,9 @@ Expected<Dataset> buildDataset(const std::vector<TrainingSource>& sources, const
             }
         }
         std::vector<float> features(std::size_t(extractor->size()));
-        for (const LabelledWindow& lw : labelledWindows(s, options, d.classes)) {
+        auto windows = labelledWindows(s, options, d.segmentation, d.classes);
+        if (!windows) return windows.error();
+        for (const LabelledWindow& lw : *windows) {
             extractor->compute(*s.data, lw.window.begin, lw.window.end, features.data());
             rows.insert(rows.end(), features.begin(), features.end());
             d.labels.push_back(lw.label);
@@ -273,6 +318,7 @@ Expected<ActivityModel> trainModel(const Dataset& dataset, const TrainingOptions
     auto classifier = Classifier::train(samples, dataset.labels, int(dataset.classes.size()), options.classifier);
     if (!classifier) return classifier.error();
     m.classifier = std::move(*classifier);
+    m.segmentation = dataset.segmentation;
     m.provenance[QStringLiteral("units")] = dataset.units;
     return m;
 }

@@ -26,6 +26,9 @@ Expected<RawDataset> buildRawDataset(const std::vector<TrainingSource>& sources,
     d.sensors = options.sensors;
     d.classes = classes.isEmpty() ? trainingClasses(sources, options) : classes;
     if (sources.empty()) return makeError(QStringLiteral("no recording to take windows from"));
+    auto segmentation = fitSegmentation(sources, options, d.classes);
+    if (!segmentation) return segmentation.error();
+    d.segmentation = *segmentation;
     d.length = length > 0 ? length : options.rawLength;
     if (d.length <= 0) {
         const double interval = sources.front().data->medianInterval();
@@ -60,7 +63,9 @@ Expected<RawDataset> buildRawDataset(const std::vector<TrainingSource>& sources,
         if (!d.subjects.contains(s.athlete)) d.subjects << s.athlete;
         const int group = int(d.subjects.indexOf(s.athlete));
         const std::size_t width = columns.size() * std::size_t(d.length);
-        for (const LabelledWindow& lw : labelledWindows(s, options, d.classes)) {
+        auto windows = labelledWindows(s, options, d.segmentation, d.classes);
+        if (!windows) return windows.error();
+        for (const LabelledWindow& lw : *windows) {
             rows.resize(rows.size() + width);
             rawWindow(*s.data, columns, lw.window.tStart, lw.window.tEnd, d.length, rows.data() + rows.size() - width);
             d.labels.push_back(lw.label);
@@ -114,7 +119,7 @@ Status exportWindows(const RawDataset& d, const std::vector<TrainingSource>& sou
                            {QStringLiteral("step"), options.step},
                            {QStringLiteral("length"), d.length},
                            {QStringLiteral("windows"), double(n)},
-                           {QStringLiteral("segmentation"), QStringLiteral("sliding")}};
+                           {QStringLiteral("segmentation"), d.segmentation.toJson()}};
     QFile f(dir.filePath(QStringLiteral("meta.json")));
     if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate) || f.write(QJsonDocument(meta).toJson()) < 0)
         return makeError(QStringLiteral("%1: cannot write").arg(f.fileName()));
@@ -139,6 +144,9 @@ Expected<ActivityModel> importCnn(const QByteArray& onnx, const QJsonObject& d, 
                                        int(m.classes.size()));
     if (!cnn) return refuse(cnn.message());
     m.cnn = std::move(*cnn);
+    auto segmentation = Segmentation::fromJson(d.value(QStringLiteral("segmentation")));
+    if (!segmentation) return refuse(segmentation.message());
+    m.segmentation = *segmentation;
     m.provenance[QStringLiteral("units")] = d.value(QStringLiteral("units")).toObject();
     if (d.contains(QStringLiteral("training")))
         m.provenance[QStringLiteral("cnn_training")] = d.value(QStringLiteral("training")).toObject();

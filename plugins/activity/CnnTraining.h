@@ -24,6 +24,7 @@ struct RawDataset {
     QStringList classes, inputColumns, sensors, subjects;
     QJsonObject units;
     int length = 0;  // samples per channel
+    Segmentation segmentation;
 };
 
 // Labelled raw windows. `classes` empty: options' classes or every label, unseen ones dropped;
