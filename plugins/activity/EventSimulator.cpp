@@ -26,15 +26,15 @@ struct VolleyballAction {
 // The nine actions (seed 000 §5.2), parameters chosen so that their swings and contacts differ the
 // way the thesis describes (spikes and jump serves strongest, sets soft, block without a swing).
 constexpr VolleyballAction kActions[] = {
-    {"underhand_serve", 0.50, 14.0, 45.0, -1.1, 0.9, 0.0},
-    {"overhead_serve", 0.45, 22.0, 60.0, 1.2, 0.2, 0.0},
+    {"underhand_serve", 0.50, 14.0, 70.0, -1.1, 0.9, 0.0},
+    {"overhead_serve", 0.45, 22.0, 75.0, 1.2, 0.2, 0.0},
     {"jump_serve", 0.40, 34.0, 85.0, 1.3, -0.2, 14.0},
-    {"underarm_set", 0.30, 8.0, 55.0, -0.3, 1.2, 0.0},
-    {"overhead_set", 0.30, 9.0, 50.0, 1.4, 1.4, 0.0},
-    {"shot_attack", 0.35, 18.0, 45.0, 1.3, 0.3, 12.0},
+    {"underarm_set", 0.30, 8.0, 65.0, -0.3, 1.2, 0.0},
+    {"overhead_set", 0.30, 9.0, 65.0, 1.4, 1.4, 0.0},
+    {"shot_attack", 0.35, 18.0, 70.0, 1.3, 0.3, 12.0},
     {"spike", 0.35, 40.0, 95.0, 1.3, -0.5, 16.0},
-    {"block", 0.15, 6.0, 50.0, 1.5, -1.2, 12.0},
-    {"dig", 0.25, 10.0, 60.0, -0.6, 1.0, 0.0},
+    {"block", 0.15, 6.0, 70.0, 1.5, -1.2, 12.0},
+    {"dig", 0.25, 10.0, 65.0, -0.6, 1.0, 0.0},
 };
 
 double halfSine(double t, double start, double duration) {
@@ -75,7 +75,14 @@ SimulatedEvents EventSimulator::volleyball(unsigned player, int actions, unsigne
         double t;
         int action;  // -1 arm swing, -2 clap, -3 landing (Null)
         double heading, scale;
+        double elevation = 0.0, posture = 0.0, timing = 1.0;  // this execution's deviations (rad, rad, ×)
     };
+    // How this player executes each action: offsets of the hit direction and arm posture.
+    std::vector<double> styleElevation(9), stylePosture(9);
+    for (int i = 0; i < 9; ++i) {
+        styleElevation[std::size_t(i)] = (pu(prng) - 0.5) * 0.6;
+        stylePosture[std::size_t(i)] = (pu(prng) - 0.5) * 0.6;
+    }
     std::vector<Planned> plan;
     double t = 3.0;
     for (int k = 0; k < actions; ++k) {
@@ -84,7 +91,10 @@ SimulatedEvents EventSimulator::volleyball(unsigned player, int actions, unsigne
             plan.push_back({t + 1.0 + 1.5 * j + u(rng), -1 - int(u(rng) * 3.0), 2 * kPi * u(rng), 0.6 + 0.8 * u(rng)});
         }
         t += 1.5 * nulls + 2.5 + 3.0 * u(rng);
-        plan.push_back({t, int(u(rng) * 9.0) % 9, 2 * kPi * u(rng), strength * (0.85 + 0.3 * u(rng))});
+        const int action = int(u(rng) * 9.0) % 9;
+        plan.push_back({t, action, 2 * kPi * u(rng), strength * (0.85 + 0.3 * u(rng)),
+                        styleElevation[std::size_t(action)] + 0.5 * (u(rng) - 0.5),
+                        stylePosture[std::size_t(action)] + 0.5 * (u(rng) - 0.5), tempo * (0.8 + 0.4 * u(rng))});
         t += 2.5 + 2.0 * u(rng);
     }
     const double end = t + 3.0;
@@ -104,14 +114,14 @@ SimulatedEvents EventSimulator::volleyball(unsigned player, int actions, unsigne
             if (now < p.t - 1.5 || now > p.t + 0.8) continue;
             if (p.action >= 0) {
                 const VolleyballAction& va = kActions[p.action];
-                const double swingStart = p.t - va.swingDuration * tempo;
+                const double swingStart = p.t - va.swingDuration * p.timing;
                 // The arm rises to its contact posture during the second before the contact.
                 const double w =
                     std::clamp((now - (p.t - 1.0)) / 0.6, 0.0, 1.0) * std::clamp((p.t + 0.6 - now) / 0.3, 0.0, 1.0);
-                pitch = (1.0 - w) * pitch + w * va.armPitch;
+                pitch = (1.0 - w) * pitch + w * (va.armPitch + p.posture);
                 heading = p.heading;
-                const Eigen::Vector3d hitDir = direction(p.heading, va.hitElevation);
-                a += p.scale * va.swing * halfSine(now, swingStart, va.swingDuration * tempo) * hitDir;
+                const Eigen::Vector3d hitDir = direction(p.heading, va.hitElevation + p.elevation);
+                a += p.scale * va.swing * halfSine(now, swingStart, va.swingDuration * p.timing) * hitDir;
                 a -= p.scale * va.hit * ringDown(now, p.t, 0.05, 12.0) * hitDir;
                 if (va.jump > 0) a.z() += va.jump * halfSine(now, p.t - 0.75, 0.3);
             } else if (p.action == -1) {  // an arm swing without a hit
