@@ -8,8 +8,13 @@
 #include "core/processing/ParameterSpec.h"
 #include "core/util/Version.h"
 #include "plugins/activity/ActivityTraining.h"
+#include "plugins/activity/CnnTraining.h"
 
 #include <QDateTime>
+#include <QFile>
+#include <QDir>
+#include <QFileInfo>
+#include <QJsonDocument>
 #include <QJsonArray>
 #include <cstdio>
 #include <set>
@@ -25,13 +30,108 @@ Expected<double> positiveSeconds(const QCommandLineParser& parser, const QString
                              .arg(option, parser.value(option)));
     return v;
 }
+
+Expected<QByteArray> readSmallFile(const QString& path, qint64 limit, const QString& option) {
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return makeError(QStringLiteral("--%1 %2: cannot read (%3)").arg(option, path, f.errorString()));
+    if (f.size() > limit)
+        return makeError(QStringLiteral("--%1 %2: %3 MB, above the limit of %4 MB")
+                             .arg(option, path)
+                             .arg(double(f.size()) / 1e6, 0, 'f', 1)
+                             .arg(double(limit) / 1e6, 0, 'f', 0));
+    return f.readAll();
+}
+
+// --classifier cnn --onnx FILE: the network trained by scripts/train_cnn.py, checked and evaluated on the
+// project's annotated windows, stored like the other models.
+int importCnnModel(Project& project, const QCommandLineParser& cl, const QString& modelName, const QString& stream,
+                   const std::vector<activity::TrainingSource>& sources, activity::TrainingOptions options,
+                   const Progress& progress, TerminalProgress& bar) {
+    using namespace activity;
+    const QString onnxPath = cl.value(QStringLiteral("onnx"));
+    QString descriptionPath = cl.value(QStringLiteral("onnx-description"));
+    if (descriptionPath.isEmpty()) {
+        const QFileInfo fi(onnxPath);
+        descriptionPath = fi.dir().filePath(fi.completeBaseName() + QStringLiteral(".json"));
+    }
+    auto onnx = readSmallFile(onnxPath, CnnClassifier::kMaxOnnxBytes, QStringLiteral("onnx"));
+    if (!onnx) return fail(onnx.message());
+    auto descriptionBytes = readSmallFile(descriptionPath, 16LL * 1024 * 1024, QStringLiteral("onnx-description"));
+    if (!descriptionBytes) return fail(descriptionBytes.message());
+    QJsonParseError error{};
+    const QJsonDocument doc = QJsonDocument::fromJson(*descriptionBytes, &error);
+    if (!doc.isObject())
+        return fail(
+            QStringLiteral("--onnx-description %1: not a JSON object (%2)").arg(descriptionPath, error.errorString()));
+    auto model = importCnn(*onnx, doc.object(), onnxPath);
+    if (!model) return fail(model.message());
+    for (const TrainingSource& s : sources)
+        if (Status st = model->checkStream(s.info); !st)
+            return fail(QStringLiteral("%1: does not fit %2/%3: %4").arg(onnxPath, s.recording, stream, st.message()));
+    // The network's own window, classes and columns; evaluated on every annotated window of the project.
+    options.window = model->window;
+    options.step = model->step;
+    options.sensors = model->sensors;
+    options.segmentation = model->segmentation;
+    auto raw = buildRawDataset(sources, options, model->classes, model->cnn->length(), progress.sub(0.0, 0.5));
+    if (!raw) return fail(raw.message(), raw.message() == u"cancelled" ? Cancelled : Failed);
+    cv::Mat p;
+    if (Status st = model->cnn->probabilities(raw->windows, p); !st)
+        return fail(onnxPath + QStringLiteral(": ") + st.message());
+    std::vector<int> predicted(raw->labels.size());
+    for (int i = 0; i < p.rows; ++i) {
+        const float* row = p.ptr<float>(i);
+        predicted[std::size_t(i)] = int(std::max_element(row, row + p.cols) - row);
+    }
+    const Evaluation evaluation = evaluate(raw->labels, predicted, model->classes);
+    bar.finish();
+    std::printf("%lld windows of %g s (%d samples × %lld channels) from %lld recordings, classes: %s\n",
+                qlonglong(raw->labels.size()), options.window, raw->length, qlonglong(raw->inputColumns.size()),
+                qlonglong(sources.size()), qUtf8Printable(model->classes.join(QStringLiteral(", "))));
+    std::printf(
+        "on the project's annotated windows (not a cross-validation: the network was trained outside "
+        "Athlos, on these windows if they were exported):\n%s",
+        qUtf8Printable(evaluation.toText()));
+    const QJsonObject training = doc.object().value(QStringLiteral("training")).toObject();
+    const QJsonObject scriptCv = training.value(QStringLiteral("cross_validation")).toObject();
+    if (scriptCv.contains(QStringLiteral("balanced_accuracy")))
+        std::printf("cross-validation by train_cnn.py (%s): balanced accuracy %.3f\n",
+                    qUtf8Printable(scriptCv.value(QStringLiteral("scheme")).toString()),
+                    scriptCv.value(QStringLiteral("balanced_accuracy")).toDouble());
+    QJsonArray recordings;
+    for (const TrainingSource& s : sources)
+        recordings.append(QJsonObject{{QStringLiteral("recording"), s.recording},
+                                      {QStringLiteral("stream"), stream},
+                                      {QStringLiteral("athlete"), s.athlete},
+                                      {QStringLiteral("content_hash"), QString::fromLatin1(s.data->contentHash())}});
+    model->provenance[QStringLiteral("input")] = stream;
+    model->provenance[QStringLiteral("onnx_file")] = QFileInfo(onnxPath).fileName();
+    model->provenance[QStringLiteral("evaluated_on")] = recordings;
+    model->provenance[QStringLiteral("project_windows")] = evaluation.toJson();
+    model->provenance[QStringLiteral("cross_validation")] =
+        scriptCv.isEmpty() ? QJsonObject{{QStringLiteral("scheme"), QStringLiteral("none")}} : scriptCv;
+    model->provenance[QStringLiteral("app_version")] = appVersion();
+    model->provenance[QStringLiteral("created")] = QDateTime::currentDateTimeUtc().toString(Qt::ISODate);
+    auto stored = model->toStored(modelName);
+    if (!stored) return fail(stored.message());
+    const bool replaced = project.models().count(modelName) > 0;
+    project.models()[modelName] = std::move(*stored);
+    project.setModified();
+    if (Status st = project.save(progress.sub(0.95, 1.0)); !st)
+        return fail(st.message(), st.message() == u"cancelled" ? Cancelled : Failed);
+    std::printf("%s model '%s' (cnn, %lld classes, %.1f kB ONNX)\n", replaced ? "replaced" : "stored",
+                qUtf8Printable(modelName), qlonglong(model->classes.size()), double(onnx->size()) / 1e3);
+    return Ok;
+}
 }  // namespace
 
 int cmdTrain(const QStringList& args) {
     using namespace activity;
     CommandParser p(
         QStringLiteral("train <project> --model NAME --input STREAM [--recordings R1,R2…] [--classes C1,C2…] "
-                       "[--window S] [--step S] [--classifier C] [--cv SCHEME] [--folds K]"),
+                       "[--window S] [--step S] [--classifier C] [--cv SCHEME] [--folds K] [--export-windows DIR] "
+                       "[--classifier cnn --onnx FILE]"),
         QStringLiteral("Train an activity classifier on sliding windows of STREAM in every recording that has it and "
                        "annotations (manual or imported), print its cross-validated balanced accuracy, per-class "
                        "recall and precision and the confusion matrix, then train on all windows and store the model "
@@ -73,6 +173,34 @@ int cmdTrain(const QStringList& args) {
     p.addOption({QStringLiteral("min-label-fraction"),
                  QStringLiteral("Share of a window its label must cover to be trained on (default 0.5)."),
                  QStringLiteral("F"), QStringLiteral("0.5")});
+    p.addOption({QStringLiteral("segmentation"),
+                 QStringLiteral("sliding (default: windows every --step s), events:impact (beach-volleyball impact "
+                                "detector, a --window s window centred on each impact) or events:tackle (rugby tackle "
+                                "candidates, threshold fitted on the annotations to reach --tackle-recall). Events "
+                                "outside every annotation are trained as class 'null'."),
+                 QStringLiteral("KIND"), QStringLiteral("sliding")});
+    p.addOption({QStringLiteral("impact-threshold"),
+                 QStringLiteral("events:impact: ε_impact in m/s² (default 5.1, seed 000 §5.2)."), QStringLiteral("A"),
+                 QStringLiteral("5.1")});
+    p.addOption({QStringLiteral("tackle-recall"),
+                 QStringLiteral("events:tackle: share of the annotated events the fitted threshold detects "
+                                "(default 1: all, seed 000 §5.1)."),
+                 QStringLiteral("R"), QStringLiteral("1")});
+    p.addOption({QStringLiteral("export-windows"),
+                 QStringLiteral("Write the labelled raw windows (windows.npy N×C×L float32, labels.npy, groups.npy, "
+                                "meta.json) into DIR for scripts/train_cnn.py, and stop (nothing is trained or "
+                                "stored)."),
+                 QStringLiteral("DIR")});
+    p.addOption({QStringLiteral("window-samples"),
+                 QStringLiteral("--export-windows: samples per raw window (default: the window at the first "
+                                "recording's rate)."),
+                 QStringLiteral("N"), QStringLiteral("0")});
+    p.addOption({QStringLiteral("onnx"),
+                 QStringLiteral("--classifier cnn: the network written by scripts/train_cnn.py (at most 32 MB)."),
+                 QStringLiteral("FILE")});
+    p.addOption({QStringLiteral("onnx-description"),
+                 QStringLiteral("--classifier cnn: its JSON description (default: FILE with .json)."),
+                 QStringLiteral("FILE")});
     if (auto code = p.parse(args, 1, 1)) return *code;
     const QCommandLineParser& cl = p.parser();
 
@@ -97,10 +225,31 @@ int cmdTrain(const QStringList& args) {
     options.folds = cl.value(QStringLiteral("folds")).toInt(&ok);
     if (!ok || options.folds < 2) return fail(QStringLiteral("--folds: an integer of at least 2"), Usage);
     options.classifier.kind = cl.value(QStringLiteral("classifier"));
-    if (!Classifier::kinds().contains(options.classifier.kind))
-        return fail(QStringLiteral("--classifier '%1': use one of %2")
+    const bool cnn = options.classifier.kind == u"cnn";
+    if (!Classifier::kinds().contains(options.classifier.kind) && !cnn)
+        return fail(QStringLiteral("--classifier '%1': use one of %2, cnn")
                         .arg(options.classifier.kind, Classifier::kinds().join(QStringLiteral(", "))),
                     Usage);
+    const QString exportDir = cl.value(QStringLiteral("export-windows"));
+    if (cnn && exportDir.isEmpty() && !cl.isSet(QStringLiteral("onnx")))
+        return fail(QStringLiteral("--classifier cnn: the network is trained outside Athlos. Export the windows with "
+                                   "--export-windows DIR, train with 'python3 scripts/train_cnn.py DIR --out m.onnx', "
+                                   "then import it with --classifier cnn --onnx m.onnx"),
+                    Usage);
+    if (cl.isSet(QStringLiteral("onnx")) && !cnn)
+        return fail(QStringLiteral("--onnx goes with --classifier cnn"), Usage);
+    auto segmentation = Segmentation::parse(cl.value(QStringLiteral("segmentation")));
+    if (!segmentation) return fail(segmentation.message(), Usage);
+    options.segmentation = *segmentation;
+    options.segmentation.impact.threshold = cl.value(QStringLiteral("impact-threshold")).toDouble(&ok);
+    if (!ok || !(options.segmentation.impact.threshold > 0))
+        return fail(QStringLiteral("--impact-threshold: a positive acceleration in m/s²"), Usage);
+    options.segmentation.tackle.targetRecall = cl.value(QStringLiteral("tackle-recall")).toDouble(&ok);
+    if (!ok || !(options.segmentation.tackle.targetRecall > 0) || options.segmentation.tackle.targetRecall > 1)
+        return fail(QStringLiteral("--tackle-recall: a share above 0, at most 1"), Usage);
+    options.rawLength = cl.value(QStringLiteral("window-samples")).toInt(&ok);
+    if (!ok || options.rawLength < 0 || options.rawLength > 100000)
+        return fail(QStringLiteral("--window-samples: an integer from 0 to 100000"), Usage);
     options.classifier.trees = cl.value(QStringLiteral("trees")).toInt(&ok);
     if (!ok || options.classifier.trees < 1 || options.classifier.trees > 2000)
         return fail(QStringLiteral("--trees: an integer from 1 to 2000"), Usage);
@@ -128,11 +277,30 @@ int cmdTrain(const QStringList& args) {
 
     TerminalProgress bar(QStringLiteral("train"));
     const Progress progress = bar.progress();
+    if (!exportDir.isEmpty()) {
+        auto raw = buildRawDataset(*sources, options, {}, 0, progress);
+        if (!raw) return fail(raw.message(), raw.message() == u"cancelled" ? Cancelled : Failed);
+        if (Status s = exportWindows(*raw, *sources, options, exportDir); !s) return fail(s.message());
+        bar.finish();
+        std::printf(
+            "exported %lld windows (%lld channels × %d samples, %g s, step %g s) of %lld subjects to %s, "
+            "classes: %s\n",
+            qlonglong(raw->labels.size()), qlonglong(raw->inputColumns.size()), raw->length, options.window,
+            options.step, qlonglong(raw->subjects.size()), qUtf8Printable(exportDir),
+            qUtf8Printable(raw->classes.join(QStringLiteral(", "))));
+        return Ok;
+    }
+    if (cnn) return importCnnModel(**project, cl, modelName, stream, *sources, options, progress, bar);
     auto dataset = buildDataset(*sources, options, progress.sub(0.0, 0.2));
     if (!dataset) return fail(dataset.message(), dataset.message() == u"cancelled" ? Cancelled : Failed);
     std::printf("%lld windows of %g s (step %g s) from %lld recordings, %lld features, classes: %s\n",
                 qlonglong(dataset->labels.size()), options.window, options.step, qlonglong(sources->size()),
                 qlonglong(dataset->features.size()), qUtf8Printable(dataset->classes.join(QStringLiteral(", "))));
+    if (dataset->segmentation.events())
+        std::printf("segmentation %s: windows of %g s centred on detected events (threshold %.3g m/s²)\n",
+                    qUtf8Printable(dataset->segmentation.kind), options.window,
+                    dataset->segmentation.kind == u"events:tackle" ? dataset->segmentation.tackle.threshold
+                                                                   : dataset->segmentation.impact.threshold);
 
     QJsonObject validation{{QStringLiteral("scheme"), options.validation}};
     if (validate) {

@@ -1,6 +1,7 @@
 #include "plugins/activity/ActivityModel.h"
 
 #include "plugins/activity/FeatureExtractor.h"
+#include "plugins/activity/RawWindows.h"
 #include "plugins/activity/Windows.h"
 
 #include <QJsonArray>
@@ -71,8 +72,10 @@ Expected<ActivityModel> ActivityModel::fromStored(const TrainedModel& stored) {
     const auto refuse = [&](const QString& why) {
         return makeError(QStringLiteral("model '%1': %2").arg(stored.name, why));
     };
-    if (stored.format != QLatin1String(kFormat))
-        return refuse(QStringLiteral("format '%1' is not an activity classifier (%2)").arg(stored.format, kFormat));
+    const bool isCnn = stored.format == QLatin1String(kOnnxFormat);
+    if (stored.format != QLatin1String(kFormat) && !isCnn)
+        return refuse(QStringLiteral("format '%1' is not an activity classifier (%2 or %3)")
+                          .arg(stored.format, kFormat, kOnnxFormat));
     const QJsonObject& d = stored.description;
     ActivityModel m;
     m.classes = strings(d.value(QStringLiteral("classes")));
@@ -83,6 +86,20 @@ Expected<ActivityModel> ActivityModel::fromStored(const TrainedModel& stored) {
     m.step = d.value(QStringLiteral("step")).toDouble();
     m.provenance = d;
     if (m.classes.size() < 2) return refuse(QStringLiteral("it lists fewer than two classes"));
+    if (!(m.window > 0) || !(m.step > 0)) return refuse(QStringLiteral("its window or step is not positive"));
+    auto segmentation = Segmentation::fromJson(d.value(QStringLiteral("segmentation")));
+    if (!segmentation) return refuse(segmentation.message());
+    m.segmentation = *segmentation;
+    if (isCnn) {
+        if (m.inputColumns.isEmpty()) return refuse(QStringLiteral("it lists no input columns"));
+        const auto bytes = QByteArray::fromBase64Encoding(stored.definition, QByteArray::AbortOnBase64DecodingErrors);
+        if (!bytes) return refuse(QStringLiteral("its definition is not base64 text"));
+        auto cnn = CnnClassifier::fromJson(*bytes, d.value(QStringLiteral("cnn")).toObject(),
+                                           int(m.inputColumns.size()), int(m.classes.size()));
+        if (!cnn) return refuse(cnn.message());
+        m.cnn = std::move(*cnn);
+        return m;
+    }
     if (m.features.isEmpty()) return refuse(QStringLiteral("it lists no features"));
     if (!(m.window > 0) || !(m.step > 0)) return refuse(QStringLiteral("its window or step is not positive"));
     auto scaling = RobustScaling::fromJson(d.value(QStringLiteral("scaling")).toObject(), int(m.features.size()));
@@ -101,6 +118,24 @@ Expected<ActivityModel> ActivityModel::fromStored(const TrainedModel& stored) {
 }
 
 Expected<TrainedModel> ActivityModel::toStored(const QString& name) const {
+    if (cnn) {
+        TrainedModel t;
+        t.name = name;
+        t.format = QString::fromLatin1(kOnnxFormat);
+        t.definition = cnn->onnx().toBase64();
+        QJsonObject d = provenance;
+        d[QStringLiteral("classes")] = QJsonArray::fromStringList(classes);
+        d[QStringLiteral("sensors")] = QJsonArray::fromStringList(sensors);
+        d[QStringLiteral("features")] = QJsonArray();
+        d[QStringLiteral("input_columns")] = QJsonArray::fromStringList(inputColumns);
+        d[QStringLiteral("window")] = window;
+        d[QStringLiteral("step")] = step;
+        d[QStringLiteral("cnn")] = cnn->toJson();
+        d[QStringLiteral("segmentation")] = segmentation.toJson();
+        d[QStringLiteral("classifier")] = QStringLiteral("cnn");
+        t.description = d;
+        return t;
+    }
     if (!classifier) return makeError(QStringLiteral("model '%1' has no trained classifier").arg(name));
     TrainedModel t;
     t.name = name;
@@ -130,6 +165,7 @@ Expected<TrainedModel> ActivityModel::toStored(const QString& name) const {
     d[QStringLiteral("window")] = window;
     d[QStringLiteral("step")] = step;
     d[QStringLiteral("scaling")] = scaling.toJson();
+    d[QStringLiteral("segmentation")] = segmentation.toJson();
     d[QStringLiteral("classifier")] = classifier->kind();
     t.description = d;
     return t;
@@ -143,7 +179,7 @@ void ActivityModel::probabilities(cv::Mat samples, cv::Mat& out) const {
 Status ActivityModel::checkStream(const StreamInfo& info) const {
     auto extractor = FeatureExtractor::create(info, sensors);
     if (!extractor) return extractor.error();
-    if (extractor->inputColumns() != inputColumns || extractor->names() != features)
+    if (extractor->inputColumns() != inputColumns || (!cnn && extractor->names() != features))
         return makeError(QStringLiteral("the model reads columns %1 with %2 features; this stream gives %3 with %4")
                              .arg(inputColumns.join(QStringLiteral(", ")))
                              .arg(features.size())
@@ -157,6 +193,37 @@ Status ActivityModel::checkStream(const StreamInfo& info) const {
             return makeError(
                 QStringLiteral("column %1 is in '%2'; the model was trained on '%3'").arg(column, unit, trained));
     }
+    return {};
+}
+
+Status ActivityModel::windowProbabilities(const StreamInfo& info, const StreamData& data,
+                                          const std::vector<Window>& windows, cv::Mat& out,
+                                          const Progress& progress) const {
+    if (cnn) {
+        std::vector<int> columns;
+        for (const QString& c : inputColumns) {
+            const int i = info.columnIndex(c);
+            if (i < 0) return makeError(QStringLiteral("the stream has no column '%1'").arg(c));
+            columns.push_back(i);
+        }
+        cv::Mat raw(int(windows.size()), cnn->channels() * cnn->length(), CV_32F);
+        for (std::size_t i = 0; i < windows.size(); ++i)
+            rawWindow(data, columns, windows[i].tStart, windows[i].tEnd, cnn->length(), raw.ptr<float>(int(i)));
+        if (progress.isCancelled()) return makeError(QStringLiteral("cancelled"));
+        progress.report(0.3, QStringLiteral("windows"));
+        return cnn->probabilities(raw, out);
+    }
+    auto extractor = FeatureExtractor::create(info, sensors);
+    if (!extractor) return extractor.error();
+    cv::Mat samples(int(windows.size()), extractor->size(), CV_32F);
+    for (std::size_t i = 0; i < windows.size(); ++i) {
+        extractor->compute(data, windows[i].begin, windows[i].end, samples.ptr<float>(int(i)));
+        if (i % 2000 == 1999) {
+            if (progress.isCancelled()) return makeError(QStringLiteral("cancelled"));
+            progress.report(0.8 * double(i) / double(windows.size()), QStringLiteral("features"));
+        }
+    }
+    probabilities(samples, out);
     return {};
 }
 
@@ -202,23 +269,34 @@ Annotations intervalsFromWindows(const std::vector<double>& centres, const cv::M
 Expected<Annotations> ActivityModel::classify(const StreamInfo& info, const StreamData& data, int smoothing,
                                               const Progress& progress) const {
     if (Status s = checkStream(info); !s) return s.error();
-    auto extractor = FeatureExtractor::create(info, sensors);
-    if (!extractor) return extractor.error();
+    if (segmentation.events()) {
+        auto windows = segmentation.windows(info, data, window, step);
+        if (!windows) return windows.error();
+        Annotations out;
+        if (windows->empty()) return out;
+        cv::Mat p;
+        if (Status s = windowProbabilities(info, data, *windows, p, progress); !s) return s.error();
+        for (int i = 0; i < p.rows; ++i) {
+            const float* row = p.ptr<float>(i);
+            const auto best = int(std::max_element(row, row + p.cols) - row);
+            if (classes.value(best) == segmentation.nullLabel) continue;
+            Annotation a;
+            a.label = classes.value(best);
+            const double t = (*windows)[std::size_t(i)].centre();
+            a.tStart = t - 0.5 * kEventSpan;
+            a.tEnd = t + 0.5 * kEventSpan;
+            a.confidence = std::clamp(double(row[best]), 0.0, 1.0);
+            out.push_back(std::move(a));
+        }
+        return out;
+    }
     const std::vector<Window> windows = slidingWindows(data, window, step);
     if (windows.empty()) return makeError(QStringLiteral("the stream has fewer than 2 samples to classify"));
-    cv::Mat samples(int(windows.size()), extractor->size(), CV_32F);
     std::vector<double> centres;
     centres.reserve(windows.size());
-    for (std::size_t i = 0; i < windows.size(); ++i) {
-        extractor->compute(data, windows[i].begin, windows[i].end, samples.ptr<float>(int(i)));
-        centres.push_back(windows[i].centre());
-        if (i % 2000 == 1999) {
-            if (progress.isCancelled()) return makeError(QStringLiteral("cancelled"));
-            progress.report(0.8 * double(i) / double(windows.size()), QStringLiteral("features"));
-        }
-    }
+    for (const Window& w : windows) centres.push_back(w.centre());
     cv::Mat p;
-    probabilities(samples, p);
+    if (Status s = windowProbabilities(info, data, windows, p, progress); !s) return s.error();
     progress.report(0.95, QStringLiteral("classified"));
     return intervalsFromWindows(centres, p, classes, data.t.front(), data.t.back(), std::max(0, smoothing));
 }

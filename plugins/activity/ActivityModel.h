@@ -8,7 +8,10 @@
 #include "core/model/TrainedModel.h"
 #include "core/util/Expected.h"
 #include "core/util/Progress.h"
+#include "plugins/activity/Windows.h"
 #include "plugins/activity/Classifier.h"
+#include "plugins/activity/CnnClassifier.h"
+#include "plugins/activity/Segmentation.h"
 
 #include <QJsonObject>
 #include <QStringList>
@@ -29,15 +32,20 @@ struct RobustScaling {
 class ActivityModel {
 public:
     static constexpr const char* kFormat = "opencv-yaml";
+    // The CNN: the ONNX bytes as base64 text (a project keeps definitions as text), parsed by cv::dnn only.
+    static constexpr const char* kOnnxFormat = "onnx-base64";
+    static constexpr double kEventSpan = 1.0;  // s, the interval written for a classified event
 
     QStringList classes;
     QStringList sensors;              // acc, gyr, mag
     QStringList features;             // names, in the order of FeatureExtractor
     QStringList inputColumns;         // stream columns read
     double window = 3.0, step = 1.5;  // s
+    Segmentation segmentation;        // sliding windows, or `window` s around each detected event
     RobustScaling scaling;
-    std::optional<Classifier> classifier;
-    QJsonObject provenance;  // training recordings, cross-validation, parameters (stored as is)
+    std::optional<Classifier> classifier;  // features → OpenCV ml
+    std::optional<CnnClassifier> cnn;      // or: raw windows of inputColumns → ONNX network (no features)
+    QJsonObject provenance;                // training recordings, cross-validation, parameters (stored as is)
 
     // Parses a stored model (its JSON description and the OpenCV YAML text); the error says what is wrong.
     static Expected<ActivityModel> fromStored(const TrainedModel& stored);
@@ -45,13 +53,18 @@ public:
 
     // Class probabilities of each window (rows) of `samples` (raw features, scaled here).
     void probabilities(cv::Mat samples, cv::Mat& out) const;
+    // Class probabilities of `windows` of a stream: features and the classifier, or raw windows and the CNN.
+    Status windowProbabilities(const StreamInfo& info, const StreamData& data, const std::vector<Window>& windows,
+                               cv::Mat& out, const Progress& progress = {}) const;
 
     // Refuses a stream whose columns or sensors do not match what the model was trained on.
     Status checkStream(const StreamInfo& info) const;
 
-    // Predicted annotations for a stream: windows classified, probabilities averaged over `smoothing`
-    // windows on each side, consecutive windows of one class merged; each window owns the time up to
-    // half-way to its neighbours' centres, the first and last extend to the ends of the stream.
+    // Predicted annotations for a stream. Sliding windows: windows classified, probabilities averaged
+    // over `smoothing` windows on each side, consecutive windows of one class merged; each window owns
+    // the time up to half-way to its neighbours' centres, the first and last extend to the ends of the
+    // stream. Events: one annotation of kEventSpan s centred on each detected event whose class is
+    // not the null label.
     Expected<Annotations> classify(const StreamInfo& info, const StreamData& data, int smoothing,
                                    const Progress& progress = {}) const;
 };

@@ -42,21 +42,77 @@ Expected<std::vector<TrainingSource>> trainingSources(const Project& project, co
     return sources;
 }
 
+QStringList trainingClasses(const std::vector<TrainingSource>& sources, const TrainingOptions& options) {
+    // As given, else every ground-truth label (sorted, so the order does not depend on the data).
+    if (!options.classes.isEmpty()) return options.classes;
+    std::set<QString> labels;
+    for (const auto& s : sources)
+        for (const auto& a : s.annotations) labels.insert(a.label);
+    if (options.segmentation.events()) labels.insert(options.segmentation.nullLabel);
+    QStringList classes;
+    for (const auto& l : labels) classes << l;
+    return classes;
+}
+
+Expected<Segmentation> fitSegmentation(const std::vector<TrainingSource>& sources, const TrainingOptions& options,
+                                       const QStringList& classes) {
+    Segmentation s = options.segmentation;
+    if (s.kind != QLatin1String("events:tackle") || s.tackle.threshold > 0) return s;
+    std::vector<double> peaks;
+    for (const TrainingSource& source : sources) {
+        auto signal = TackleDetector::signal(source.info, *source.data, s.tackle);
+        if (!signal)
+            return makeError(QStringLiteral("%1/%2: %3").arg(source.recording, source.info.name, signal.message()));
+        Annotations events;
+        for (const Annotation& a : source.annotations)
+            if (a.label != s.nullLabel && (classes.isEmpty() || classes.contains(a.label))) events.push_back(a);
+        const auto p = TackleDetector::annotationPeaks(*source.data, *signal, events);
+        peaks.insert(peaks.end(), p.begin(), p.end());
+    }
+    auto threshold = TackleDetector::fitThreshold(std::move(peaks), s.tackle);
+    if (!threshold) return threshold.error();
+    s.tackle.threshold = *threshold;
+    return s;
+}
+
+Expected<std::vector<LabelledWindow>> labelledWindows(const TrainingSource& source, const TrainingOptions& options,
+                                                      const Segmentation& segmentation, const QStringList& classes) {
+    std::vector<LabelledWindow> out;
+    if (!segmentation.events()) {
+        for (const Window& w : slidingWindows(*source.data, options.window, options.step)) {
+            const QString label = windowLabel(w, source.annotations, classes, options.minLabelFraction);
+            if (!label.isEmpty()) out.push_back({w, int(classes.indexOf(label))});
+        }
+        return out;
+    }
+    auto windows = segmentation.windows(source.info, *source.data, options.window, options.step);
+    if (!windows)
+        return makeError(QStringLiteral("%1/%2: %3").arg(source.recording, source.info.name, windows.message()));
+    for (const Window& w : *windows) {
+        const double t = w.centre();
+        QString label = segmentation.nullLabel;
+        for (const Annotation& a : source.annotations)
+            if (a.tStart <= t && t <= a.tEnd && a.label != segmentation.nullLabel &&
+                (classes.isEmpty() || classes.contains(a.label))) {
+                label = a.label;
+                break;
+            }
+        const int index = int(classes.indexOf(label));
+        if (index >= 0) out.push_back({w, index});
+    }
+    return out;
+}
+
 Expected<Dataset> buildDataset(const std::vector<TrainingSource>& sources, const TrainingOptions& options,
                                const Progress& progress) {
     Dataset d;
     d.sensors = options.sensors;
     if (!(options.window > 0) || !(options.step > 0))
         return makeError(QStringLiteral("--window and --step must be positive (s)"));
-    // Classes: as given, else every ground-truth label (sorted, so the order does not depend on the data).
-    if (!options.classes.isEmpty()) {
-        d.classes = options.classes;
-    } else {
-        std::set<QString> labels;
-        for (const auto& s : sources)
-            for (const auto& a : s.annotations) labels.insert(a.label);
-        for (const auto& l : labels) d.classes << l;
-    }
+    d.classes = trainingClasses(sources, options);
+    auto segmentation = fitSegmentation(sources, options, d.classes);
+    if (!segmentation) return segmentation.error();
+    d.segmentation = *segmentation;
     std::vector<float> rows;
     for (std::size_t si = 0; si < sources.size(); ++si) {
         const TrainingSource& s = sources[si];
@@ -76,14 +132,13 @@ Expected<Dataset> buildDataset(const std::vector<TrainingSource>& sources, const
                                          .arg(s.recording, s.info.name, c, unit, d.units.value(c).toString()));
             }
         }
-        const auto windows = slidingWindows(*s.data, options.window, options.step);
         std::vector<float> features(std::size_t(extractor->size()));
-        for (const Window& w : windows) {
-            const QString label = windowLabel(w, s.annotations, d.classes, options.minLabelFraction);
-            if (label.isEmpty()) continue;
-            extractor->compute(*s.data, w.begin, w.end, features.data());
+        auto windows = labelledWindows(s, options, d.segmentation, d.classes);
+        if (!windows) return windows.error();
+        for (const LabelledWindow& lw : *windows) {
+            extractor->compute(*s.data, lw.window.begin, lw.window.end, features.data());
             rows.insert(rows.end(), features.begin(), features.end());
-            d.labels.push_back(int(d.classes.indexOf(label)));
+            d.labels.push_back(lw.label);
             d.source.push_back(int(si));
         }
         if (progress.isCancelled()) return makeError(QStringLiteral("cancelled"));
@@ -263,6 +318,7 @@ Expected<ActivityModel> trainModel(const Dataset& dataset, const TrainingOptions
     auto classifier = Classifier::train(samples, dataset.labels, int(dataset.classes.size()), options.classifier);
     if (!classifier) return classifier.error();
     m.classifier = std::move(*classifier);
+    m.segmentation = dataset.segmentation;
     m.provenance[QStringLiteral("units")] = dataset.units;
     return m;
 }

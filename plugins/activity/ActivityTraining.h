@@ -7,6 +7,8 @@
 #include "core/util/Progress.h"
 #include "plugins/activity/ActivityModel.h"
 #include "plugins/activity/Classifier.h"
+#include "plugins/activity/Segmentation.h"
+#include "plugins/activity/Windows.h"
 
 #include <QJsonObject>
 #include <QStringList>
@@ -33,8 +35,28 @@ struct TrainingOptions {
     ClassifierOptions classifier;
     QString validation = QStringLiteral("leave-one-athlete-out");  // or leave-one-recording-out, k-fold, none
     int folds = 5;
-    int maxGroups = 10;  // leave-one-*-out with more subjects: subjects dealt into this many folds
+    int maxGroups = 10;         // leave-one-*-out with more subjects: subjects dealt into this many folds
+    int rawLength = 0;          // raw windows (CNN): samples per window; 0: the window at the first recording's rate
+    Segmentation segmentation;  // sliding windows or windows around detected events
 };
+
+// A window of a source with its label (index into the classes).
+struct LabelledWindow {
+    Window window;
+    int label = -1;
+};
+
+// The windows of `source` that carry one of `classes`: sliding windows labelled by annotation overlap,
+// or windows around detected events labelled by the annotation holding the event (else the null label).
+Expected<std::vector<LabelledWindow>> labelledWindows(const TrainingSource& source, const TrainingOptions& options,
+                                                      const Segmentation& segmentation, const QStringList& classes);
+// options.segmentation ready to use: the tackle detector's threshold fitted on the annotations of
+// `classes` (other than the null label) so that it reaches its target recall.
+Expected<Segmentation> fitSegmentation(const std::vector<TrainingSource>& sources, const TrainingOptions& options,
+                                       const QStringList& classes);
+// The classes: options.classes, else every ground-truth label of the sources (sorted; with event
+// segmentation the null label too).
+QStringList trainingClasses(const std::vector<TrainingSource>& sources, const TrainingOptions& options);
 
 struct Dataset {
     cv::Mat samples;          // windows × features, CV_32F (unscaled)
@@ -42,7 +64,8 @@ struct Dataset {
     std::vector<int> source;  // index into the sources per window
     QStringList classes;
     QStringList features, inputColumns, sensors;
-    QJsonObject units;  // column → unit of the training streams
+    QJsonObject units;          // column → unit of the training streams
+    Segmentation segmentation;  // as fitted (tackle threshold)
 };
 
 struct Evaluation {

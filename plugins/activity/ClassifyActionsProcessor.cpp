@@ -35,7 +35,9 @@ QString ClassifyActionsProcessor::description() const {
     return tr(
         "Classifies sliding windows of an IMU stream with a model trained in this project (athlos train) and "
         "writes the activities as predicted annotations with confidence: consecutive windows of one class merge "
-        "into one interval and the intervals cover the whole stream.");
+        "into one interval and the intervals cover the whole stream. A model trained on detected events "
+        "(--segmentation events:impact or events:tackle) runs its detector and writes one annotation per "
+        "event that is not classified as null.");
 }
 
 ParameterSpecs ClassifyActionsProcessor::parameters() const {

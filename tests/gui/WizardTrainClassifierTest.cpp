@@ -1,0 +1,136 @@
+// The "Train classifier" wizard offscreen: it lists the annotated recordings and their labels,
+// cross-validates on a worker (confusion heat map, balanced accuracy of clearly separable
+// simulated activities), stores the model on Finish, and Cancel stops a running training.
+#include "GuiTestSupport.h"
+#include "WizardTestSupport.h"
+
+#include "core/processing/OutputStreams.h"
+#include "ui/wizards/TrainClassifierWizard.h"
+
+#include <QAbstractButton>
+#include <QComboBox>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <cmath>
+#include <qcustomplot.h>
+#include <random>
+
+using namespace athlos;
+using namespace athlos::ui;
+
+namespace {
+
+class TestWorkspace : public testing::WorkspaceDouble {
+public:
+    using WorkspaceDouble::WorkspaceDouble;
+    Expected<RunOutcome> runProcessor(const RunRequest&) override { return makeError(QStringLiteral("unused")); }
+};
+
+// A wrist IMU at 50 Hz alternating 10 s of "rest" (gravity and noise) and "shake" (3 Hz oscillation
+// of 6 m/s² and 2 rad/s), annotated as imported ground truth.
+void addRecording(Project& project, const QString& name, const QString& athlete, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> noise(0.0, 0.2);
+    const std::size_t n = 50 * 80;
+    StreamData data(n, 6);
+    Annotations truth;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double t = double(i) / 50.0;
+        const bool shake = int(t / 10.0) % 2 == 1;
+        const double s = shake ? std::sin(2.0 * M_PI * 3.0 * t) : 0.0;
+        data.t[i] = t;
+        data.at(i, 0) = 6.0 * s + noise(rng);
+        data.at(i, 1) = noise(rng);
+        data.at(i, 2) = 9.81 + noise(rng);
+        data.at(i, 3) = 2.0 * s + 0.1 * noise(rng);
+        data.at(i, 4) = 0.1 * noise(rng);
+        data.at(i, 5) = 0.1 * noise(rng);
+    }
+    for (int k = 0; k < 8; ++k) {
+        Annotation a;
+        a.label = k % 2 ? QStringLiteral("shake") : QStringLiteral("rest");
+        a.tStart = 10.0 * k;
+        a.tEnd = 10.0 * (k + 1);
+        a.source = QStringLiteral("import");
+        truth.push_back(a);
+    }
+    const QStringList columns{QStringLiteral("acc_x"), QStringLiteral("acc_y"), QStringLiteral("acc_z"),
+                              QStringLiteral("gyr_x"), QStringLiteral("gyr_y"), QStringLiteral("gyr_z")};
+    const QStringList units{QStringLiteral("m/s^2"), QStringLiteral("m/s^2"), QStringLiteral("m/s^2"),
+                            QStringLiteral("rad/s"), QStringLiteral("rad/s"), QStringLiteral("rad/s")};
+    project.putStream(name + QStringLiteral("/imu"), outputStream(QStringLiteral("imu"), QStringLiteral("sensor"),
+                                                                  columnsOf(columns, units), std::move(data)));
+    Recording& r = *project.recording(name);
+    r.metadata[QStringLiteral("athlete")] = athlete;
+    r.annotations = truth;
+}
+
+}  // namespace
+
+class WizardTrainClassifierTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void init() {
+        QVERIFY(dir_.isValid());
+        project_ = Project::create(dir_.filePath(QStringLiteral("p.athlos")));
+        for (unsigned k = 1; k <= 3; ++k)
+            addRecording(*project_, QStringLiteral("r%1").arg(k), QStringLiteral("athlete %1").arg(k), k);
+    }
+
+    void trainsCrossValidatesAndSaves() {
+        TestWorkspace workspace(project_.get());
+        TrainClassifierWizard wizard(workspace);
+        QCOMPARE(wizard.streamCombo()->currentText(), QStringLiteral("imu"));
+        QCOMPARE(wizard.recordingList()->count(), 3);
+        QCOMPARE(wizard.classList()->count(), 2);
+        wizard.show();
+        wizard.classifierCombo()->setCurrentText(QStringLiteral("decision-tree"));
+        QSignalSpy finished(&wizard, &TrainClassifierWizard::evaluationFinished);
+        wizard.next();  // settings
+        wizard.next();  // cross-validation: starts the training
+        QCOMPARE(wizard.currentId(), int(TrainClassifierWizard::EvaluationPage));
+        QVERIFY(finished.count() == 1 || finished.wait(60000));
+        QCOMPARE(finished.first().first().toBool(), true);
+        QVERIFY2(wizard.balancedAccuracy() > 0.9, qPrintable(wizard.metricsText()));
+        QVERIFY(wizard.metricsText().contains(QStringLiteral("leave-one-athlete-out")));
+        QCOMPARE(wizard.confusionPlot()->plottableCount(), 1);
+        QVERIFY(qobject_cast<QCPColorMap*>(wizard.confusionPlot()->plottable(0)));
+        wizard.next();  // save
+        QCOMPARE(wizard.currentId(), int(TrainClassifierWizard::SavePage));
+        wizard.nameEdit()->setText(QStringLiteral("a/b"));
+        wizard.button(QWizard::FinishButton)->click();
+        QVERIFY(!project_->model(QStringLiteral("a/b")));
+        wizard.nameEdit()->setText(QStringLiteral("shaking"));
+        wizard.button(QWizard::FinishButton)->click();
+        QVERIFY(project_->model(QStringLiteral("shaking")));
+        QCOMPARE(workspace.modifications, 1);
+        QCOMPARE(project_->model(QStringLiteral("shaking"))->description.value(QStringLiteral("input")).toString(),
+                 QStringLiteral("imu"));
+    }
+
+    void cancelStopsTheTraining() {
+        TestWorkspace workspace(project_.get());
+        TrainClassifierWizard wizard(workspace);
+        wizard.classifierCombo()->setCurrentText(QStringLiteral("svm"));  // grid search: slow enough to cancel
+        QSignalSpy finished(&wizard, &TrainClassifierWizard::evaluationFinished);
+        wizard.startTraining();
+        QVERIFY(wizard.isRunning());
+        wizard.cancelTraining();
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(finished.first().first().toBool(), false);
+        QCOMPARE(wizard.metricsText(), QStringLiteral("Cancelled."));
+        QVERIFY(!wizard.hasModel());
+        QVERIFY(project_->models().empty());
+    }
+
+private:
+    QTemporaryDir dir_;
+    std::unique_ptr<Project> project_;
+};
+
+QTEST_MAIN(WizardTrainClassifierTest)
+#include "WizardTrainClassifierTest.moc"
