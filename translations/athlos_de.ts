@@ -55,6 +55,14 @@
         <source>Export report…</source>
         <translation>Bericht exportieren…</translation>
     </message>
+    <message>
+        <source>Train classifier…</source>
+        <translation>Klassifikator trainieren…</translation>
+    </message>
+    <message>
+        <source>Processing</source>
+        <translation>Verarbeitung</translation>
+    </message>
 </context>
 <context>
     <name>athlos::ui</name>
@@ -1996,6 +2004,115 @@
     <message>
         <source>Track</source>
         <translation>Bahn</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::TrainClassifierWizard</name>
+    <message>
+        <source>%1 windows from %2 recordings, %3 features, classes: %4
+</source>
+        <translation>%1 Fenster aus %2 Aufnahmen, %3 Merkmale, Klassen: %4
+</translation>
+    </message>
+    <message>
+        <source>Train classifier</source>
+        <translation>Klassifikator trainieren</translation>
+    </message>
+    <message>
+        <source>Recordings and classes</source>
+        <translation>Aufnahmen und Klassen</translation>
+    </message>
+    <message>
+        <source>Recordings with the stream and ground-truth annotations (manual or imported) to learn from, and the labels to learn.</source>
+        <translation>Aufnahmen mit dem Datenstrom und Referenz-Annotationen (manuell oder importiert), aus denen gelernt wird, und die zu lernenden Bezeichnungen.</translation>
+    </message>
+    <message>
+        <source>Stream:</source>
+        <translation>Datenstrom:</translation>
+    </message>
+    <message>
+        <source>Recordings:</source>
+        <translation>Aufnahmen:</translation>
+    </message>
+    <message>
+        <source>Classes:</source>
+        <translation>Klassen:</translation>
+    </message>
+    <message>
+        <source>Windows and classifier</source>
+        <translation>Fenster und Klassifikator</translation>
+    </message>
+    <message>
+        <source>Sliding windows for continuous activities, or windows around detected events for discrete actions; the classifier and how it is cross-validated.</source>
+        <translation>Gleitende Fenster für andauernde Aktivitäten oder Fenster um erkannte Ereignisse für einzelne Aktionen; der Klassifikator und seine Kreuzvalidierung.</translation>
+    </message>
+    <message>
+        <source>Window:</source>
+        <translation>Fenster:</translation>
+    </message>
+    <message>
+        <source>Step:</source>
+        <translation>Schritt:</translation>
+    </message>
+    <message>
+        <source>Segmentation:</source>
+        <translation>Segmentierung:</translation>
+    </message>
+    <message>
+        <source>Classifier:</source>
+        <translation>Klassifikator:</translation>
+    </message>
+    <message>
+        <source>Cross-validation:</source>
+        <translation>Kreuzvalidierung:</translation>
+    </message>
+    <message>
+        <source>Cross-validation</source>
+        <translation>Kreuzvalidierung</translation>
+    </message>
+    <message>
+        <source>Trained on a worker; the confusion matrix shows the share of each annotated class (rows) predicted as each class (columns).</source>
+        <translation>Im Hintergrund trainiert; die Konfusionsmatrix zeigt den Anteil jeder annotierten Klasse (Zeilen), der als jede Klasse (Spalten) vorhergesagt wurde.</translation>
+    </message>
+    <message>
+        <source>Cancel training</source>
+        <translation>Training abbrechen</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Speichern</translation>
+    </message>
+    <message>
+        <source>The model trained on every window is stored in the project; classify with Processing → Classify actions.</source>
+        <translation>Das auf allen Fenstern trainierte Modell wird im Projekt gespeichert; klassifizieren mit Verarbeitung → Aktionen klassifizieren.</translation>
+    </message>
+    <message>
+        <source>Model name:</source>
+        <translation>Modellname:</translation>
+    </message>
+    <message>
+        <source>Training…</source>
+        <translation>Training…</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>Abgebrochen.</translation>
+    </message>
+    <message>
+        <source>predicted</source>
+        <translation>vorhergesagt</translation>
+    </message>
+    <message>
+        <source>annotated</source>
+        <translation>annotiert</translation>
+    </message>
+    <message>
+        <source>There is no trained model to save.</source>
+        <translation>Es gibt kein trainiertes Modell zum Speichern.</translation>
+    </message>
+    <message>
+        <source>Give the model a name without &apos;/&apos;.</source>
+        <translation>Geben Sie dem Modell einen Namen ohne &apos;/&apos;.</translation>
     </message>
 </context>
 <context>
