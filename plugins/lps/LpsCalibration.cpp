@@ -492,18 +492,18 @@ Expected<LpsCalibration::Result> LpsCalibration::run(const std::vector<TdoaEpoch
             rms.push_back(fix.rmsResidual);
         }
     }
-    if (candidates.size() < 20)
-        return makeError(
-            QStringLiteral("calibration needs at least 20 instants with %1 or more beacons; the walk has %2")
-                .arg(params_.minBeacons)
-                .arg(candidates.size()));
     // Geometry of the guess (BeaconGeometry.h): e.g. 4 anchors inside a 2 m box cannot be calibrated
-    // from a walk around a track.
+    // from a walk around a track (checked first: its fixes fail too, which would hide the reason).
     const BeaconGeometryReport guessGeometry = assessBeaconGeometry(initial.positions, positions, params_.geometry);
     if (!guessGeometry.observable2d() && params_.geometryCheck == GeometryCheck::Refuse)
         return makeError(QStringLiteral("calibration refused: the initial beacon table's geometry makes the walk's "
                                         "positions unobservable: %1 (geometry_check=warn to calibrate anyway)")
                              .arg(guessGeometry.reason()));
+    if (candidates.size() < 20)
+        return makeError(
+            QStringLiteral("calibration needs at least 20 instants with %1 or more beacons; the walk has %2")
+                .arg(params_.minBeacons)
+                .arg(candidates.size()));
     const std::vector<bool> badFix = grubbsOutliers(rms, params_.alpha, int(rms.size() / 5));
     std::vector<TdoaEpoch> clean;
     std::vector<Vector3> cleanPositions;
@@ -532,7 +532,7 @@ Expected<LpsCalibration::Result> LpsCalibration::run(const std::vector<TdoaEpoch
         const Progress sub = progress.sub(s * span, (s + 1) * span);
         // Start 0: from the guess, free tags. Start 1 (trackConstraint): from the guess with the tags
         // on the track line. Further starts: re-perturbed (around the best solution once the guess
-        // proved poor: a start far from it lands in another wrong minimum, thesis §3.1.5).
+        // proved poor: a start re-perturbed from a guess metres off lands in another wrong minimum).
         const bool trackStart = useTrack && s == 1;
         BeaconLayout start = poorGuess && best && !trackStart ? best->beacons : initial;
         if (s > 0 && !trackStart)
