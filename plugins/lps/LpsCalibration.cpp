@@ -53,6 +53,31 @@ struct HeightPrior {
     }
 };
 
+// Walk-on-the-track constraint (venue marks as constraints, thesis step 6): the tag's signed lateral
+// offset from the track's reference line equals the walk's common offset d, within σ_track.
+// Analytic Jacobian: ∂d_track/∂(x, y) is the unit vector to the right of the running direction.
+class TrackLineResidual final : public ceres::SizedCostFunction<1, 3, 1> {
+public:
+    TrackLineResidual(const TrackGeometry* track, double inverseSigma) : track_(track), inverseSigma_(inverseSigma) {}
+    bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+        const TrackQuery q = track_->query(Eigen::Vector2d(parameters[0][0], parameters[0][1]));
+        residuals[0] = (q.d - parameters[1][0]) * inverseSigma_;
+        if (jacobians) {
+            if (jacobians[0]) {
+                jacobians[0][0] = std::sin(q.heading) * inverseSigma_;
+                jacobians[0][1] = -std::cos(q.heading) * inverseSigma_;
+                jacobians[0][2] = 0.0;
+            }
+            if (jacobians[1]) jacobians[1][0] = -inverseSigma_;
+        }
+        return true;
+    }
+
+private:
+    const TrackGeometry* track_;
+    double inverseSigma_;
+};
+
 TdoaSolver planarSolver(double height) {
     TdoaSolver::Params p;
     p.geometry = TdoaSolver::Geometry::Planar;
@@ -70,6 +95,9 @@ struct LpsCalibration::Start {
     double height = 0.0;
     std::vector<TdoaEpoch> epochs;  // outlier readings and fixes removed
     std::vector<Vector3> tags;      // x, y, o per epoch
+    double lateral = 0.0;           // m, walk's offset from the track's reference line (track constraint)
+    int mirrored = 0;               // beacons reflected in the walk plane by the mirror test
+    double priorSigmaXy = 0.0;      // m, prior σ used (0 = the parameter's)
     int readingsRemoved = 0, fixesRemoved = 0, iterations = 0;
     bool converged = false;
     double nrmsr = std::numeric_limits<double>::infinity();
@@ -122,6 +150,7 @@ struct BundleState {
     BeaconLayout* beacons;
     double* height;
     std::vector<Vector3>* tags;
+    double* lateral = nullptr;  // non-null: tags constrained to a line parallel to the track
 };
 
 // Runs one bundle adjustment over the epochs; returns (iterations, converged).
@@ -153,6 +182,11 @@ std::pair<int, bool> solveBundle(const std::vector<TdoaEpoch>& epochs, BundleSta
             new ceres::AutoDiffCostFunction<GuessPrior, 3, 3>(new GuessPrior{guess.positions[i], inverseSigma}),
             nullptr, positions[i].data());
     }
+    ceres::CauchyLoss trackLoss(params.trackSigmaOutlier / params.trackSigma);
+    if (state.lateral)
+        for (auto& tag : *state.tags)
+            problem.AddResidualBlock(new TrackLineResidual(&params.track, 1.0 / params.trackSigma), &trackLoss,
+                                     tag.data(), state.lateral);
     if (heightFree)
         problem.AddResidualBlock(new ceres::AutoDiffCostFunction<HeightPrior, 1, 1>(
                                      new HeightPrior{params.walkHeightPrior, 1.0 / params.walkHeightSigma}),
@@ -167,6 +201,7 @@ std::pair<int, bool> solveBundle(const std::vector<TdoaEpoch>& epochs, BundleSta
     for (std::size_t i = 0; i < positions.size(); ++i)
         if (used[i]) ordering->AddElementToGroup(positions[i].data(), 1);
     ordering->AddElementToGroup(state.height, 1);
+    if (state.lateral) ordering->AddElementToGroup(state.lateral, 1);
     options.linear_solver_ordering.reset(ordering);
     options.max_num_iterations = params.maxIterations;
     // Cost ∝ nRMSR²: a relative cost change of 2·tol is a relative nRMSR change of tol (0.01 %).
@@ -182,11 +217,16 @@ std::pair<int, bool> solveBundle(const std::vector<TdoaEpoch>& epochs, BundleSta
 }  // namespace
 
 Expected<LpsCalibration::Start> LpsCalibration::adjust(const std::vector<TdoaEpoch>& epochs, const BeaconLayout& start,
-                                                       const BeaconLayout& guess, const Progress& progress) const {
+                                                       const BeaconLayout& guess, const Progress& progress,
+                                                       bool onTrack) const {
     const bool heightFree = !std::isfinite(params_.walkHeight);
     Start s;
     s.beacons = start;
     s.height = heightFree ? params_.walkHeightPrior : params_.walkHeight;
+    if (params_.beaconsAboveWalk)
+        for (auto& b : s.beacons.positions)
+            if (b.z() < s.height + params_.minBeaconClearance)
+                b.z() = std::max(2.0 * s.height - b.z(), s.height + params_.minBeaconClearance);
     s.epochs = epochs;
 
     // Step 3: tag fixes with the starting beacons (IRLS keeps gross outliers out of the start).
@@ -201,10 +241,26 @@ Expected<LpsCalibration::Start> LpsCalibration::adjust(const std::vector<TdoaEpo
         s.tags[n] = fix.valid ? Vector3(fix.position.x(), fix.position.y(), fix.offset) : Vector3::Zero();
     }
     if (progress.isCancelled()) return makeError(QStringLiteral("cancelled"));
+    double* lateral = nullptr;
+    if (onTrack) {
+        // Start the tags on the track line (at the walk's median lateral offset) instead of where
+        // the guessed beacons put them.
+        std::vector<double> offsets;
+        std::vector<TrackQuery> queries;
+        for (const auto& tag : s.tags) {
+            queries.push_back(params_.track.query(tag.head<2>()));
+            offsets.push_back(queries.back().d);
+        }
+        s.lateral = std::clamp(math::median(offsets), -params_.trackMaxLateral, params_.trackMaxLateral);
+        for (std::size_t n = 0; n < s.tags.size(); ++n)
+            s.tags[n].head<2>() = params_.track.pointAt(queries[n].s, s.lateral).position;
+        lateral = &s.lateral;
+    }
 
     // Robust pass: readings with gross errors must not pull the beacons.
     ceres::HuberLoss huber(params_.huberScale / params_.rangeNoise);
-    auto [it1, ok1] = solveBundle(s.epochs, {&s.beacons, &s.height, &s.tags}, guess, params_, &huber, heightFree);
+    auto [it1, ok1] =
+        solveBundle(s.epochs, {&s.beacons, &s.height, &s.tags, lateral}, guess, params_, &huber, heightFree);
     progress.report(0.4, QStringLiteral("outlier test"));
     if (progress.isCancelled()) return makeError(QStringLiteral("cancelled"));
 
@@ -251,9 +307,59 @@ Expected<LpsCalibration::Start> LpsCalibration::adjust(const std::vector<TdoaEpo
                              .arg(s.epochs.size()));
 
     // Least-squares pass to convergence (stopping rule: nRMSR improves by < 0.01 %).
-    auto [it2, ok2] = solveBundle(s.epochs, {&s.beacons, &s.height, &s.tags}, guess, params_, nullptr, heightFree);
+    Params last = params_;
+    last.relativeTolerance = std::min(params_.relativeTolerance, params_.finalTolerance);
+    auto [it2, ok2] =
+        solveBundle(s.epochs, {&s.beacons, &s.height, &s.tags, lateral}, guess, last, nullptr, heightFree);
     s.iterations = it1 + it2;
     s.converged = ok2;
+
+    // Mirror test (see header): a planar walk cannot tell a beacon at height z from its reflection
+    // 2h − z in the walk plane except through the one distance |r − b_i| to the reference node, so
+    // the adjustment can stop in the reflected minimum when the guess is on the wrong side (σz ≥ the
+    // beacon's height above the walk). Each beacon in turn is reflected and the adjustment re-run;
+    // the reflection is kept when it lowers nRMSR (data only, the prior is not part of it).
+    s.nrmsr = nrmsr(s.epochs, s.beacons, s.height, params_.minBeacons);
+    if (params_.beaconsAboveWalk) {
+        // Height plausibility: beacons are mounted above the walking tag; one found below the walk
+        // plane sits in the reflected minimum and is reflected back, then the adjustment re-run.
+        for (int round = 0; round < 3; ++round) {
+            bool changed = false;
+            for (auto& b : s.beacons.positions)
+                if (b.z() < s.height + params_.minBeaconClearance) {
+                    b.z() = std::max(2.0 * s.height - b.z(), s.height + params_.minBeaconClearance);
+                    changed = true;
+                    ++s.mirrored;
+                }
+            if (!changed) break;
+            auto [it, ok] = solveBundle(s.epochs, {&s.beacons, &s.height, &s.tags, onTrack ? &s.lateral : nullptr},
+                                        guess, last, nullptr, heightFree);
+            s.iterations += it;
+            s.converged = ok;
+        }
+        s.nrmsr = nrmsr(s.epochs, s.beacons, s.height, params_.minBeacons);
+    } else if (params_.mirrorTest) {
+        for (int round = 0; round < 2; ++round) {
+            bool changed = false;
+            for (int i = 0; i < s.beacons.size(); ++i) {
+                if (progress.isCancelled()) return makeError(QStringLiteral("cancelled"));
+                Start c = s;
+                Vector3& b = c.beacons.positions[size_t(i)];
+                b.z() = 2.0 * c.height - b.z();
+                auto [it, ok] = solveBundle(c.epochs, {&c.beacons, &c.height, &c.tags, onTrack ? &c.lateral : nullptr},
+                                            guess, params_, nullptr, heightFree);
+                c.iterations += it;
+                c.converged = ok;
+                c.nrmsr = nrmsr(c.epochs, c.beacons, c.height, params_.minBeacons);
+                if (c.nrmsr < s.nrmsr * (1.0 - params_.mirrorMinGain)) {
+                    s = std::move(c);
+                    ++s.mirrored;
+                    changed = true;
+                }
+            }
+            if (!changed) break;
+        }
+    }
 
     // Gauge: rotate about r's vertical axis onto the guess (see header).
     const double yaw = fitYawAboutPivot(s.beacons.positions, guess.positions, s.beacons.reference);
@@ -262,6 +368,14 @@ Expected<LpsCalibration::Start> LpsCalibration::adjust(const std::vector<TdoaEpo
     s.nrmsr = nrmsr(s.epochs, s.beacons, s.height, params_.minBeacons);
     progress.report(1.0);
     return s;
+}
+
+double LpsCalibration::trackLineShare(const std::vector<Vector3>& tags, double lateral) const {
+    if (tags.empty()) return 0.0;
+    int on = 0;
+    for (const auto& tag : tags)
+        on += std::abs(params_.track.query(tag.head<2>()).d - lateral) <= 3.0 * params_.trackSigma;
+    return double(on) / double(tags.size());
 }
 
 double LpsCalibration::guessRotationSigma(const BeaconLayout& beacons, double sigmaXy) {
@@ -285,11 +399,13 @@ const char* LpsCalibration::gaugeName(Gauge gauge) {
 // Track gauge (header, TrackGauge.h): the whole walk re-solved with the calibrated beacons (IRLS),
 // fitted to a line parallel to the track; the beacons are rotated about r when the fit is accepted.
 Expected<LpsCalibration::GaugeReport> LpsCalibration::applyGauge(const std::vector<TdoaEpoch>& epochs, double height,
-                                                                 BeaconLayout& beacons) const {
+                                                                 BeaconLayout& beacons, double guessSigmaXy) const {
     GaugeReport g;
     g.requested = params_.gauge;
-    g.sigmaGuess = guessRotationSigma(
-        beacons, std::isfinite(params_.gaugeGuessSigma) ? params_.gaugeGuessSigma : params_.priorSigmaXy);
+    // The guess' σ: stated (gaugeGuessSigma), else the prior's as widened by adaptPrior.
+    g.sigmaGuess = guessRotationSigma(beacons, std::isfinite(params_.gaugeGuessSigma)
+                                                   ? params_.gaugeGuessSigma
+                                                   : std::max(params_.priorSigmaXy, guessSigmaXy));
     if (params_.gauge == Gauge::Guess) {
         g.reason = QStringLiteral("gauge=guess: rotation from the initial beacon table");
         return g;
@@ -376,6 +492,13 @@ Expected<LpsCalibration::Result> LpsCalibration::run(const std::vector<TdoaEpoch
             rms.push_back(fix.rmsResidual);
         }
     }
+    // Geometry of the guess (BeaconGeometry.h): e.g. 4 anchors inside a 2 m box cannot be calibrated
+    // from a walk around a track (checked first: its fixes fail too, which would hide the reason).
+    const BeaconGeometryReport guessGeometry = assessBeaconGeometry(initial.positions, positions, params_.geometry);
+    if (!guessGeometry.observable2d() && params_.geometryCheck == GeometryCheck::Refuse)
+        return makeError(QStringLiteral("calibration refused: the initial beacon table's geometry makes the walk's "
+                                        "positions unobservable: %1 (geometry_check=warn to calibrate anyway)")
+                             .arg(guessGeometry.reason()));
     if (candidates.size() < 20)
         return makeError(
             QStringLiteral("calibration needs at least 20 instants with %1 or more beacons; the walk has %2")
@@ -397,23 +520,63 @@ Expected<LpsCalibration::Result> LpsCalibration::run(const std::vector<TdoaEpoch
     std::normal_distribution<double> normal(0.0, 1.0);
     std::optional<Start> best;
     int starts = 0;
-    for (int s = 0; s < std::max(1, params_.maxStarts); ++s) {
+    Params effective = params_;  // the prior is widened when the first start finds a poor guess
+    bool poorGuess = false;
+    bool onTrack = false;
+    double trackShare = std::numeric_limits<double>::quiet_NaN();
+    const bool useTrack = params_.trackConstraint && params_.gauge != Gauge::Guess;
+    const int total = std::max(1, params_.maxStarts) + (useTrack ? 1 : 0);
+    const double span = 1.0 / total;
+    for (int s = 0; s < total; ++s) {
         if (progress.isCancelled()) return makeError(QStringLiteral("cancelled"));
-        BeaconLayout start = initial;
-        if (s > 0)
+        const Progress sub = progress.sub(s * span, (s + 1) * span);
+        // Start 0: from the guess, free tags. Start 1 (trackConstraint): from the guess with the tags
+        // on the track line. Further starts: re-perturbed (around the best solution once the guess
+        // proved poor: a start re-perturbed from a guess metres off lands in another wrong minimum).
+        const bool trackStart = useTrack && s == 1;
+        BeaconLayout start = poorGuess && best && !trackStart ? best->beacons : initial;
+        if (s > 0 && !trackStart)
             for (auto& p : start.positions)
                 p += Vector3(params_.restartSigmaXy * normal(rng), params_.restartSigmaXy * normal(rng),
                              params_.restartSigmaZ * normal(rng));
-        const double span = 1.0 / std::max(1, params_.maxStarts);
-        auto result = adjust(selected, start, initial, progress.sub(s * span, (s + 1) * span));
+        auto result = LpsCalibration(effective).adjust(selected, start, initial, sub, trackStart || onTrack);
         ++starts;
+        if (s == 0 && result && params_.adaptPrior) {
+            // Empirical prior (see header): the horizontal shifts from the guess measure the guess'
+            // real error; a prior much tighter than that would pull the weakly observable heights
+            // towards wrong guesses. Re-run the first start with the prior widened to it.
+            double sum = 0.0;
+            for (int i = 0; i < initial.size(); ++i)
+                sum += (result->beacons.positions[size_t(i)] - initial.positions[size_t(i)]).head<2>().squaredNorm();
+            const double sigma = std::sqrt(sum / (2.0 * std::max(1, initial.size())));
+            if (sigma > params_.adaptPriorFactor * params_.priorSigmaXy) {
+                poorGuess = true;
+                effective.priorSigmaZ = params_.priorSigmaZ * sigma / params_.priorSigmaXy;
+                effective.priorSigmaXy = sigma;
+                if (auto again = LpsCalibration(effective).adjust(selected, start, initial, sub, false); again)
+                    result = std::move(again);
+            }
+        }
         if (!result) {
             if (result.message() == QLatin1String("cancelled")) return result.error();
-            if (s == 0 && params_.maxStarts <= 1) return result.error();
+            if (s == 0 && total <= 1) return result.error();
+            continue;
+        }
+        result->priorSigmaXy = effective.priorSigmaXy;
+        if (trackStart) {
+            // The track-constrained solution replaces the free one when its walk really lies on a
+            // line parallel to the track (the free minimum's nRMSR can be as low while its geometry
+            // is wrong); afterwards restarts keep the constraint.
+            trackShare = trackLineShare(result->tags, result->lateral);
+            if (trackShare >= params_.gaugeMinInliers) {
+                onTrack = true;
+                best = std::move(*result);
+            }
+            if (!poorGuess && best && best->nrmsr <= params_.restartNrmsr) break;
             continue;
         }
         if (!best || result->nrmsr < best->nrmsr) best = std::move(*result);
-        if (best->nrmsr <= params_.restartNrmsr) break;
+        if (!poorGuess && !(useTrack && s == 0) && best->nrmsr <= params_.restartNrmsr) break;
     }
     if (!best)
         return makeError(QStringLiteral("calibration failed from every start; check the beacon table and the walk"));
@@ -421,10 +584,25 @@ Expected<LpsCalibration::Result> LpsCalibration::run(const std::vector<TdoaEpoch
     Result out;
     out.beacons = best->beacons;
     Report& report = out.report;
-    if (auto gauge = applyGauge(epochs, best->height, out.beacons); gauge)
+    if (auto gauge = applyGauge(epochs, best->height, out.beacons, best->priorSigmaXy); gauge)
         report.gauge = std::move(*gauge);
     else
         return gauge.error();
+    // Geometry of the result, with the walk re-solved as the area.
+    {
+        std::vector<Vector3> area;
+        for (const auto& tag : best->tags) area.emplace_back(tag.x(), tag.y(), best->height);
+        report.geometry = assessBeaconGeometry(out.beacons.positions, area, params_.geometry);
+        if (!report.geometry.observable2d() && params_.geometryCheck == GeometryCheck::Refuse)
+            return makeError(
+                QStringLiteral("calibration refused: the calibrated beacons' geometry is not observable: %1 "
+                               "(geometry_check=warn to keep it)")
+                    .arg(report.geometry.reason()));
+        QStringList warnings;
+        if (!guessGeometry.observable2d()) warnings << QStringLiteral("initial table: %1").arg(guessGeometry.reason());
+        if (!report.geometry.problems.isEmpty()) warnings << report.geometry.reason();
+        report.geometryWarning = warnings.join(QStringLiteral("; "));
+    }
     report.nrmsrCalibrated = best->nrmsr;
     report.nrmsrInitial = nrmsr(best->epochs, initial, h0, params_.minBeacons);
     if (reference) report.nrmsrReference = nrmsr(best->epochs, *reference, best->height, params_.minBeacons);
@@ -433,6 +611,11 @@ Expected<LpsCalibration::Result> LpsCalibration::run(const std::vector<TdoaEpoch
     report.fixesRemoved = int(candidates.size() - clean.size()) + best->fixesRemoved;
     report.readingsRemoved = best->readingsRemoved;
     report.starts = starts;
+    report.priorSigmaXy = best->priorSigmaXy;
+    report.poorGuess = poorGuess;
+    report.mirrored = best->mirrored;
+    report.trackConstrained = onTrack;
+    report.trackShare = trackShare;
     report.iterations = best->iterations;
     report.walkHeight = best->height;
     report.converged = best->converged;

@@ -29,10 +29,32 @@
 // (inlier RMS ≤ gaugeMaxRms, inlier share ≥ gaugeMinInliers), the walk covers the lap (coverage ≥
 // gaugeMinCoverage and, on an oval, both bends) and θ agrees with the guess-based gauge within
 // gaugeAgreementSigmas·√(σ_θ,guess² + σ_θ,fit²); otherwise it keeps the guess-based rotation and says why.
+// Rough guesses (σ 5–20 m, aerial image or GNSS; issue #16 item 5). Three failure modes of the plain
+// bundle adjustment and their remedies:
+//  - The prior σ (priorSigmaXy/Z) far tighter than the real guess error pulls the weakly observable
+//    heights towards the wrong guessed ones. Empirical prior (adaptPrior): the first start's
+//    horizontal shifts from the guess (well observable) estimate the guess error σ̂ =
+//    √(Σ|Δxy|²/2B); when σ̂ > adaptPriorFactor·priorSigmaXy the start is re-run with the prior
+//    widened to σ̂ (σz scaled alike), and the later starts restart around that solution.
+//  - Mirror ambiguity: a planar walk sees a beacon at height z and its reflection 2h − z in the
+//    walk plane alike, except through the one distance |r − b_i| (r 1 m below the walk plane
+//    here). A guess on the wrong side ends in the reflected minimum (in the study: beacons 10–15 m
+//    too low, the walk plane dragged to r's height, η ≈ 1.3). Height plausibility
+//    (beaconsAboveWalk): beacons are mounted above the walking tag, so starts and solutions below
+//    h + minBeaconClearance are reflected back and re-adjusted; with beaconsAboveWalk off each
+//    beacon's reflection is tried and kept when nRMSR drops (mirrorTest).
+//  - Flat valley of the heights: nRMSR changes by < 0.01 % per iteration while the heights still
+//    move by metres; the final least-squares pass runs to finalTolerance.
+// Track constraint (trackConstraint, with gauge auto|track): one extra start with every tag of the
+// walk on a line parallel to the track (residual (d_track(m_n) − d)/σ_track, Cauchy beyond
+// trackSigmaOutlier, d shared, the tags started on the line). It replaces the free solution when
+// ≥ gaugeMinInliers of its tags lie within 3σ_track of the line — a criterion that, unlike
+// nRMSR, sees a wrong geometry (the free wrong minimum warps the walk off the track).
 // Walk height: one unknown shared by all fixes (weak prior walkHeightPrior ± walkHeightSigma),
 // observable through r; a given walkHeight fixes it.
 #include "core/util/Expected.h"
 #include "core/util/Progress.h"
+#include "plugins/lps/BeaconGeometry.h"
 #include "plugins/lps/Tdoa.h"
 #include "plugins/lps/TrackGauge.h"
 
@@ -46,6 +68,9 @@ public:
     enum class OutlierTest { Grubbs, Mad };
     // Where the rotation about the reference node's vertical axis comes from (see above).
     enum class Gauge { Auto, Guess, Track };
+    // Beacon geometry (BeaconGeometry.h) of the guess and of the result: a layout whose horizontal
+    // positions are not observable (too few, clustered, collinear) is refused or only reported.
+    enum class GeometryCheck { Refuse, Warn };
 
     struct Params {
         double walkHeight = std::numeric_limits<double>::quiet_NaN();  // m; NaN = estimate
@@ -61,6 +86,9 @@ public:
         double priorSigmaZ = 1.0;         // m
         double huberScale = 0.5;          // m, first (robust) pass
         double relativeTolerance = 1e-4;  // stop when nRMSR improves by less than 0.01 %
+        // Final least-squares pass: the heights lie in a flat valley where nRMSR changes by < 0.01 %
+        // per iteration while they still move by metres; this pass runs to this tolerance.
+        double finalTolerance = 1e-9;
         int maxIterations = 200;
         int maxStarts = 5;
         double restartNrmsr = 0.3;    // m; above this after a start, restart from a re-perturbed guess
@@ -73,9 +101,22 @@ public:
         double gaugeMinInliers = 0.8;   // share of the walk's fixes within the fit's inlier band
         double gaugeMinCoverage = 0.5;  // share of the reference line's 10 m bins the walk visits
         double gaugeAgreementSigmas = 3.0;
-        // m, horizontal σ of the initial guess for the agreement test; NaN = priorSigmaXy. Set it
+        // m, horizontal σ of the initial guess for the agreement test; NaN = priorSigmaXy (as widened
+        // by adaptPrior). Set it
         // when the guess is known to be worse than the prior assumes (the prior also weights the fit).
         double gaugeGuessSigma = std::numeric_limits<double>::quiet_NaN();
+        GeometryCheck geometryCheck = GeometryCheck::Refuse;
+        BeaconGeometryParams geometry;
+        bool adaptPrior = true;           // widen the prior to the guess error the first start finds
+        double adaptPriorFactor = 1.5;    // ... when it exceeds priorSigmaXy by this factor
+        bool beaconsAboveWalk = true;     // height plausibility: beacons above the walk plane
+        double minBeaconClearance = 0.5;  // m, least height of a beacon above the walk plane
+        bool mirrorTest = true;
+        double mirrorMinGain = 1e-3;     // relative nRMSR decrease that accepts a reflected beacon
+        bool trackConstraint = true;     // an extra start with the walk's tags on a track-parallel line
+        double trackSigma = 0.3;         // m, σ of the walk's lateral offset about its line (track constraint)
+        double trackSigmaOutlier = 1.0;  // m, Cauchy scale of the track constraint (walker off the line)
+        double trackMaxLateral = 10.0;   // m, start value of the lateral offset clamped to ± this
     };
 
     struct GaugeReport {
@@ -101,9 +142,16 @@ public:
         double etaCalibrated() const { return nrmsrCalibrated / nrmsrReference; }  // Eqn. 3.7
         int epochs = 0, fixesUsed = 0, fixesRemoved = 0, readingsRemoved = 0;
         int starts = 0, iterations = 0;
+        double priorSigmaXy = 0.0;      // m, prior σ used in the end (widened by adaptPrior)
+        bool poorGuess = false;         // the first start found the guess worse than the prior
+        int mirrored = 0;               // beacon reflections in the walk plane (height plausibility)
+        bool trackConstrained = false;  // the solution is the track-constrained start's
+        double trackShare = std::numeric_limits<double>::quiet_NaN();  // its tags' share on the line
         double walkHeight = 0.0;
         bool converged = false;
         GaugeReport gauge;
+        BeaconGeometryReport geometry;  // of the calibrated beacons, area = the walk
+        QString geometryWarning;        // non-empty: what is not observable (2D or 3D)
         std::vector<BeaconReport> beacons;
     };
 
@@ -135,8 +183,10 @@ public:
 private:
     struct Start;
     Expected<Start> adjust(const std::vector<TdoaEpoch>& epochs, const BeaconLayout& start, const BeaconLayout& guess,
-                           const Progress& progress) const;
-    Expected<GaugeReport> applyGauge(const std::vector<TdoaEpoch>& epochs, double height, BeaconLayout& beacons) const;
+                           const Progress& progress, bool onTrack) const;
+    double trackLineShare(const std::vector<Vector3>& tags, double lateral) const;
+    Expected<GaugeReport> applyGauge(const std::vector<TdoaEpoch>& epochs, double height, BeaconLayout& beacons,
+                                     double guessSigmaXy) const;
     Params params_;
 };
 

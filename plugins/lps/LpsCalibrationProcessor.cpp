@@ -82,6 +82,30 @@ ParameterSpecs LpsCalibrationProcessor::parameters() const {
                        tr("gauge=auto: horizontal error of the initial guess for the agreement test (the track "
                           "rotation must agree with the guess within 3σ); absent = prior_sigma_xy."),
                        1e-3, 1000),
+        ParameterSpec::choice(QStringLiteral("geometry_check"), {QStringLiteral("refuse"), QStringLiteral("warn")},
+                              QStringLiteral("refuse"),
+                              tr("Beacons too few, clustered or collinear for the walk's area (horizontal spread "
+                                 "below 1 m or below 1/50 of the area's extent): refuse the calibration, or only "
+                                 "report it (report attributes geometry, geometry_reason).")),
+        ParameterSpec::boolean(QStringLiteral("adapt_prior"), true,
+                               tr("Widen the prior to the guess error the first start finds (σ̂ from the horizontal "
+                                  "shifts) when it exceeds 1.5 × prior_sigma_xy, and restart around that solution; "
+                                  "for guesses metres off (aerial image, GNSS).")),
+        ParameterSpec::boolean(QStringLiteral("beacons_above_walk"), true,
+                               tr("Height plausibility: beacons are mounted above the walking tag. A planar walk "
+                                  "cannot tell a beacon from its reflection in the walk plane; reflections below "
+                                  "are flipped back (else each reflection is tested on nRMSR).")),
+        ParameterSpec::number(QStringLiteral("min_beacon_clearance"), 0.5, 0.0, 100, QStringLiteral("m"),
+                              tr("beacons_above_walk: least height of a beacon above the walk plane.")),
+        ParameterSpec::boolean(QStringLiteral("track_constraint"), true,
+                               tr("gauge=auto|track: one extra start with the walk's tags on a line parallel to the "
+                                  "track; it is taken when at least 80 % of its tags lie within 3 × track_sigma of "
+                                  "the line (nRMSR alone does not see a wrong geometry).")),
+        ParameterSpec::number(QStringLiteral("track_sigma"), 0.3, 1e-3, 100, QStringLiteral("m"),
+                              tr("track_constraint: σ of the walk's lateral offset about its line.")),
+        ParameterSpec::number(QStringLiteral("final_tolerance"), 1e-9, 1e-15, 0.1, QString(),
+                              tr("Relative nRMSR change that stops the final least-squares pass (the beacon heights "
+                                 "lie in a flat valley the 0.01 % rule stops in).")),
         ParameterSpec::number(QStringLiteral("gauge_min_coverage"), 0.5, 0.0, 1.0, QString(),
                               tr("gauge=auto: least share of the lap (10 m bins) the walk must visit; on an oval also "
                                  "both bends.")),
@@ -159,6 +183,15 @@ Expected<std::vector<ProcessorOutput>> LpsCalibrationProcessor::run(const RunCon
         track->setPose(pose);
         p.track = std::move(*track);
     }
+    p.geometryCheck = context.text(QStringLiteral("geometry_check")) == QLatin1String("warn")
+                          ? LpsCalibration::GeometryCheck::Warn
+                          : LpsCalibration::GeometryCheck::Refuse;
+    p.adaptPrior = context.flag(QStringLiteral("adapt_prior"));
+    p.beaconsAboveWalk = context.flag(QStringLiteral("beacons_above_walk"));
+    p.minBeaconClearance = context.number(QStringLiteral("min_beacon_clearance"));
+    p.trackConstraint = context.flag(QStringLiteral("track_constraint"));
+    p.trackSigma = context.number(QStringLiteral("track_sigma"));
+    p.finalTolerance = context.number(QStringLiteral("final_tolerance"));
     p.gaugeMaxRms = context.number(QStringLiteral("gauge_max_rms"));
     p.gaugeMinCoverage = context.number(QStringLiteral("gauge_min_coverage"));
     if (context.has(QStringLiteral("gauge_guess_sigma")))
@@ -179,6 +212,10 @@ Expected<std::vector<ProcessorOutput>> LpsCalibrationProcessor::run(const RunCon
                         {"starts", report.starts},
                         {"iterations", report.iterations},
                         {"converged", report.converged},
+                        {"prior_sigma_xy_used", report.priorSigmaXy},
+                        {"poor_guess", report.poorGuess},
+                        {"mirrored_beacons", report.mirrored},
+                        {"track_constrained", report.trackConstrained},
                         {"units", QStringLiteral("nRMSR, heights, offsets and RMS in m; rotations in rad")}};
     const auto& g = report.gauge;
     summary.insert(QStringLiteral("gauge_requested"), QString::fromLatin1(LpsCalibration::gaugeName(g.requested)));
@@ -198,6 +235,16 @@ Expected<std::vector<ProcessorOutput>> LpsCalibrationProcessor::run(const RunCon
         summary.insert(QStringLiteral("gauge_lateral_offset"), g.fit.lateralOffset);
         summary.insert(QStringLiteral("gauge_fit_points"), g.fit.points);
     }
+    const auto& geo = report.geometry;
+    summary.insert(QStringLiteral("geometry"), report.geometryWarning.isEmpty() ? QStringLiteral("ok")
+                                               : !geo.observable2d()            ? QStringLiteral("unobservable")
+                                                                                : QStringLiteral("warning"));
+    summary.insert(QStringLiteral("geometry_reason"), report.geometryWarning);
+    summary.insert(QStringLiteral("geometry_spread_major"), geo.spreadMajor);
+    summary.insert(QStringLiteral("geometry_spread_minor"), geo.spreadMinor);
+    summary.insert(QStringLiteral("geometry_spread_vertical"), geo.spreadVertical);
+    if (std::isfinite(geo.dilution)) summary.insert(QStringLiteral("geometry_dilution"), geo.dilution);
+    if (std::isfinite(report.trackShare)) summary.insert(QStringLiteral("track_share"), report.trackShare);
     if (reference) {
         summary.insert(QStringLiteral("nrmsr_reference"), report.nrmsrReference);
         summary.insert(QStringLiteral("eta_initial"), report.etaInitial());

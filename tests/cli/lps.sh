@@ -40,6 +40,23 @@ expect_ok "position gauge=guess" "$ATHLOS" run "$P" lps-positioning --input test
 expect_ok "export gauge=guess" "$ATHLOS" export "$P" test/cal-guess --to "$WORK/cal-guess.csv"
 echo "tag RMSE with gauge=guess: $(rmse "$WORK/cal-guess.csv") m (for comparison; not judged)"
 
+# From a rough guess (σ 20 m horizontal, 10 m vertical, as from an aerial image) the same criterion
+# holds (issue #16 item 5), with default parameters: the prior is widened to the guess error found.
+expect_ok "simulate rough guess" "$ATHLOS" run "$S" simulate-lps --output sim/rough --param scenario=walk --param venue_seed=3 --param seed=1 --param sigma_xy=20 --param sigma_z=10
+expect_ok "export rough guess" "$ATHLOS" export "$S" sim/rough-guess --to "$WORK/rough-guess.csv"
+expect_ok "import rough guess" "$ATHLOS" import "$P" "$WORK/rough-guess.csv" --as rough --kind beacons
+expect_ok "calibrate rough" "$ATHLOS" run "$P" lps-calibration --input walk/tdoa,rough/beacons --output walk/beacons-rough
+expect_ok "position rough" "$ATHLOS" run "$P" lps-positioning --input test/tdoa,walk/beacons-rough --output test/cal-rough --param tag_height=1.2
+expect_ok "export rough" "$ATHLOS" export "$P" test/cal-rough --to "$WORK/cal-rough.csv"
+ROUGH=$(rmse "$WORK/cal-rough.csv")
+echo "tag RMSE from the rough guess: $ROUGH m"
+awk -v c="$ROUGH" -v r="$REF" 'BEGIN{exit !(c <= r + 0.10)}' || fail "rough-guess RMSE $ROUGH m exceeds surveyed $REF m + 0.10 m"
+
+# Geometry awareness (issue #16 item 3): 12 anchors inside a 2 m box are refused with the reason.
+{ echo "id,x,y,z"; for i in $(seq 1 12); do echo "$i,$(( 20 + i % 3 )).0,$(( 45 + i % 2 )).5,$(( 3 + i % 2 )).0"; done; } > "$WORK/box.csv"
+expect_ok "import box" "$ATHLOS" import "$P" "$WORK/box.csv" --as box --kind beacons
+expect_fail "clustered beacons" "clustered" "$ATHLOS" run "$P" lps-calibration --input walk/tdoa,box/beacons --output walk/x
+
 # Invalid parameters are refused with a one-line reason naming the parameter.
 expect_fail "bad selection" "selection" "$ATHLOS" run "$P" lps-positioning --input test/tdoa,survey/beacons --output test/x --param selection=magic
 expect_fail "bad gauge" "gauge" "$ATHLOS" run "$P" lps-calibration --input walk/tdoa,guess/beacons --output walk/x --param gauge=magic

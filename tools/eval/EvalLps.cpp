@@ -119,7 +119,7 @@ CalibrationRun calibrationRun(std::uint64_t seed, const Perturbation& level) {
     return run;
 }
 
-void calibrationStudy(int runs, std::uint64_t seed, bool quick) {
+void calibrationStudy(int runs, std::uint64_t seed, bool quick, const std::vector<int>& only) {
     std::printf("## Calibration (Figs. 3.6–3.9): %d runs per perturbation level\n\n", runs);
     std::printf(
         "| σxy / σz (m) | share η_calib < 1 | η_ini median | η_calib median | η_calib p90 | beacon RMSE median / p90 "
@@ -132,6 +132,7 @@ void calibrationStudy(int runs, std::uint64_t seed, bool quick) {
     const auto& levels = thesisPerturbations();
     const std::size_t count = quick ? 3 : levels.size();
     for (std::size_t l = 0; l < count; ++l) {
+        if (!only.empty() && std::find(only.begin(), only.end(), int(l)) == only.end()) continue;
         std::vector<double> etaI, etaC, bRmse, tS, tC, delta, deltaGuess, yaw, secs;
         int below = 0, within = 0, withinGuess = 0, track = 0;
         for (int r = 0; r < runs; ++r) {
@@ -216,6 +217,7 @@ int main(int argc, char** argv) {
     int runs = 25, nlosRuns = 34;  // 34 runs as in the thesis' selection study
     std::uint64_t seed = 20170101;
     bool calibration = true, selection = true;
+    std::vector<int> levels;  // --levels 4,6: only these perturbation levels (0-based, Table 3.2 order)
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--quick")
@@ -226,14 +228,17 @@ int main(int argc, char** argv) {
             nlosRuns = std::atoi(argv[++i]);
         else if (a == "--seed" && i + 1 < argc)
             seed = std::strtoull(argv[++i], nullptr, 10);
-        else if (a == "--only-calibration")
+        else if (a == "--levels" && i + 1 < argc) {
+            for (const auto& part : QString::fromLatin1(argv[++i]).split(QLatin1Char(',')))
+                levels.push_back(part.toInt());
+        } else if (a == "--only-calibration")
             selection = false;
         else if (a == "--only-selection")
             calibration = false;
         else {
             std::fprintf(stderr,
                          "usage: athlos-eval-lps [--quick] [--runs N] [--nlos-runs N] [--seed S] "
-                         "[--only-calibration|--only-selection]\n");
+                         "[--only-calibration|--only-selection] [--levels 0,4,6]\n");
             return 2;
         }
     }
@@ -242,7 +247,7 @@ int main(int argc, char** argv) {
         nlosRuns = std::min(nlosRuns, 8);
     }
     std::printf("# athlos-eval-lps (seed %llu%s)\n\n", static_cast<unsigned long long>(seed), quick ? ", quick" : "");
-    if (calibration) calibrationStudy(runs, seed, quick);
+    if (calibration) calibrationStudy(runs, seed, quick, levels);
     if (selection) {
         selectionStudy(nlosRuns, seed, false);
         selectionStudy(nlosRuns, seed, true);

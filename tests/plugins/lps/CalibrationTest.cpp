@@ -3,6 +3,7 @@
 #include "plugins/lps/FrameAlignment.h"
 #include "plugins/lps/LpsCalibration.h"
 #include "plugins/lps/RobustStatistics.h"
+#include "plugins/lps/TdoaPositioning.h"
 #include "plugins/lps/TdoaSimulator.h"
 
 #include <gtest/gtest.h>
@@ -109,4 +110,48 @@ TEST(LpsCalibration, RefusesAWalkThatIsTooShort) {
     auto result = LpsCalibration().run(walk.epochs, surveyed);
     ASSERT_FALSE(result.ok());
     EXPECT_TRUE(result.message().contains("at least 20"));
+}
+
+// Rough guesses (issue #16 item 5, docs/validation/lps.md): from σ 10/10/5 m and 20/20/10 m guesses
+// the calibrated beacons position a test lap within +0.10 m of the surveyed beacons' RMSE, with the
+// default parameters (the guess quality is not stated: the prior is widened by adaptPrior, the
+// heights kept above the walk, the track-constrained start chosen by its fit to the track). Before
+// these remedies 0 of these 6 runs passed at 20/10 (+0.3 m typical). Seeds disjoint from the eval's.
+TEST(LpsCalibration, CalibratesFromRoughGuesses) {
+    const TrackGeometry track = TrackGeometry::iaaf400m();
+    auto rmse = [](const std::vector<TagFix>& fixes, const std::vector<TrajectorySample>& truth) {
+        double sum = 0.0;
+        int n = 0;
+        for (std::size_t k = 0; k < fixes.size(); ++k)
+            if (fixes[k].valid) {
+                sum += (fixes[k].position - truth[k].position).head<2>().squaredNorm();
+                ++n;
+            }
+        return n ? std::sqrt(sum / n) : 1e9;
+    };
+    auto position = [](const std::vector<TdoaEpoch>& epochs, const BeaconLayout& beacons) {
+        TdoaPositioning::Params p;
+        p.solver.tagHeight = 1.2;
+        return *TdoaPositioning(p, beacons).run(epochs);
+    };
+    for (const Perturbation level : {Perturbation{10.0, 5.0}, Perturbation{20.0, 10.0}}) {
+        for (const std::uint64_t seed : {424201u, 424202u, 424203u}) {
+            TdoaSimulator sim(TdoaSimulator::Params(), seed);
+            const BeaconLayout surveyed = sim.venue(VenueParams(), track);
+            const BeaconLayout guess = sim.perturb(surveyed, level);
+            const auto walk = sim.measure(TdoaSimulator::laps(track, 0.3, 1.4, 1.0, 1.0, 1.0), surveyed);
+            const auto test =
+                sim.measure(TdoaSimulator::laps(track, track.laneOffset(3), 6.0, 10.0, 1.0, 1.2, 1e3), surveyed);
+            auto result = LpsCalibration().run(walk.epochs, guess);
+            ASSERT_TRUE(result.ok()) << result.message().toStdString();
+            const double reference = rmse(position(test.epochs, surveyed), test.truth);
+            const double calibrated = rmse(position(test.epochs, result->beacons), test.truth);
+            std::printf("σ %g/%g seed %llu: surveyed %.3f m, calibrated %.3f m, prior %.1f m, track %d, gauge %s\n",
+                        level.sigmaXy, level.sigmaZ, static_cast<unsigned long long>(seed), reference, calibrated,
+                        result->report.priorSigmaXy, int(result->report.trackConstrained),
+                        LpsCalibration::gaugeName(result->report.gauge.used));
+            EXPECT_LE(calibrated, reference + 0.10) << "σ " << level.sigmaXy << " seed " << seed;
+            EXPECT_TRUE(result->report.poorGuess);
+        }
+    }
 }
