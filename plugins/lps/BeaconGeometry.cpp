@@ -64,15 +64,18 @@ BeaconGeometryReport assessBeaconGeometry(const std::vector<Vector3>& beacons, c
     return r;
 }
 
-double tdoaDop(const std::vector<Vector3>& beacons, const Vector3& tag, bool planar) {
+namespace {
+
+// √trace of the position block of (HᵀH)⁻¹, rows (u_iᵀ[, −1]).
+double dilution(const std::vector<Vector3>& beacons, const Vector3& tag, bool planar, bool offset) {
     const int dims = planar ? 2 : 3;
-    Eigen::MatrixXd h(beacons.size(), dims + 1);
+    Eigen::MatrixXd h(beacons.size(), dims + (offset ? 1 : 0));
     for (std::size_t i = 0; i < beacons.size(); ++i) {
         const Vector3 d = tag - beacons[i];
         const double n = d.norm();
         if (n < 1e-9) return std::numeric_limits<double>::infinity();
         for (int k = 0; k < dims; ++k) h(Eigen::Index(i), k) = d[k] / n;
-        h(Eigen::Index(i), dims) = -1.0;  // offset o
+        if (offset) h(Eigen::Index(i), dims) = -1.0;  // offset o
     }
     if (h.rows() < h.cols()) return std::numeric_limits<double>::infinity();
     const Eigen::MatrixXd normal = h.transpose() * h;
@@ -82,6 +85,16 @@ double tdoaDop(const std::vector<Vector3>& beacons, const Vector3& tag, bool pla
     double trace = 0.0;
     for (int k = 0; k < dims; ++k) trace += inverse(k, k);
     return trace >= 0.0 ? std::sqrt(trace) : std::numeric_limits<double>::infinity();
+}
+
+}  // namespace
+
+double tdoaDop(const std::vector<Vector3>& beacons, const Vector3& tag, bool planar) {
+    return dilution(beacons, tag, planar, true);
+}
+
+double toaDop(const std::vector<Vector3>& beacons, const Vector3& tag, bool planar) {
+    return dilution(beacons, tag, planar, false);
 }
 
 }  // namespace athlos::lps

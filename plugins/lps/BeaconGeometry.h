@@ -54,5 +54,7 @@ BeaconGeometryReport assessBeaconGeometry(const std::vector<Vector3>& beacons, c
 
 // Dilution of precision of one TDoA fix at `tag` (see header); +inf when singular.
 double tdoaDop(const std::vector<Vector3>& beacons, const Vector3& tag, bool planar);
+// The same for a ToA (two-way ranging) fix: rows u_iᵀ, no offset column.
+double toaDop(const std::vector<Vector3>& beacons, const Vector3& tag, bool planar);
 
 }  // namespace athlos::lps

@@ -1,6 +1,7 @@
 #include "plugins/lps/LpsPositioningProcessor.h"
 
 #include "core/processing/Translator.h"
+#include "plugins/lps/BeaconGeometry.h"
 #include "plugins/lps/BeaconTable.h"
 #include "plugins/lps/LpsInputs.h"
 #include "plugins/lps/RangeSolver.h"
@@ -139,8 +140,9 @@ QList<InputSpec> LpsPositioningProcessor::inputs() const {
 }
 
 QList<OutputSpec> LpsPositioningProcessor::outputs() const {
-    return {OutputSpec{QStringLiteral("lps-position"), false, QString(),
-                       tr("t, x, y, z (m), offset (s), rms_residual (m), n_beacons per fix.")}};
+    return {OutputSpec{
+        QStringLiteral("lps-position"), false, QString(),
+        tr("t, x, y, z (m), offset (s), rms_residual (m), n_beacons, dop (dilution of precision) per fix.")}};
 }
 
 bool LpsPositioningProcessor::geometryAllows3d(const BeaconLayout& layout) {
@@ -323,7 +325,8 @@ Expected<std::vector<ProcessorOutput>> LpsPositioningProcessor::run(const RunCon
                     {QStringLiteral("z"), QStringLiteral("m")},
                     {QStringLiteral("offset"), QStringLiteral("s")},
                     {QStringLiteral("rms_residual"), QStringLiteral("m")},
-                    {QStringLiteral("n_beacons"), QStringLiteral("1")}};
+                    {QStringLiteral("n_beacons"), QStringLiteral("1")},
+                    {QStringLiteral("dop"), QStringLiteral("1")}};
     std::size_t valid = 0;
     for (const auto& f : *fixes) valid += f.valid;
     if (valid == 0 && plan->ranges)
@@ -334,10 +337,22 @@ Expected<std::vector<ProcessorOutput>> LpsPositioningProcessor::run(const RunCon
     if (valid == 0)
         return noFixError(context, plan->epochs.epochs, plan->params.selection.minBeacons,
                           plan->params.solver.geometry == TdoaSolver::Geometry::Spatial);
-    StreamData data(valid, 6);
+    StreamData data(valid, 7);
     std::size_t r = 0;
-    for (const auto& f : *fixes) {
+    const bool planarFix = plan->ranges ? plan->rangeSolver.geometry == RangeSolver::Geometry::Planar
+                                        : plan->params.solver.geometry == TdoaSolver::Geometry::Planar;
+    std::vector<Vector3> reporting;
+    for (std::size_t k = 0; k < fixes->size(); ++k) {
+        const TagFix& f = (*fixes)[k];
         if (!f.valid) continue;
+        // Dilution of precision of the fix over the beacons that reported at its instant (σ_pos ≈ DOP·σ_range).
+        reporting.clear();
+        if (fixes->size() == plan->epochs.epochs.size())
+            for (const auto& reading : plan->epochs.epochs[k].readings)
+                reporting.push_back(plan->layout.positions[std::size_t(reading.beacon)]);
+        const double dop =
+            plan->ranges ? toaDop(reporting, f.position, planarFix) : tdoaDop(reporting, f.position, planarFix);
+        data.at(r, 6) = std::isfinite(dop) ? dop : std::numeric_limits<double>::quiet_NaN();
         data.t[r] = f.t;
         data.at(r, 0) = f.position.x();
         data.at(r, 1) = f.position.y();
@@ -348,6 +363,10 @@ Expected<std::vector<ProcessorOutput>> LpsPositioningProcessor::run(const RunCon
         ++r;
     }
     info.attributes.insert(QStringLiteral("fixes_total"), qint64(fixes->size()));
+    info.attributes.insert(QStringLiteral("geometry"), [&] {
+        const QString reason = assessBeaconGeometry(plan->layout.positions).reason();
+        return reason.isEmpty() ? QStringLiteral("ok") : reason;
+    }());
     info.attributes.insert(QStringLiteral("fixes_dropped"), qint64(fixes->size() - valid));
     info.attributes.insert(QStringLiteral("readings_skipped"), qint64(plan->epochs.readingsSkipped));
     const bool planar = plan->ranges ? plan->rangeSolver.geometry == RangeSolver::Geometry::Planar

@@ -2,7 +2,9 @@
 // `lps-positioning`: per-instant TDoA fixes (thesis Eqn. 2.5) with beacon selection (§3.2).
 // Inputs: a TDoA stream (long form, see TdoaStream.h), a beacon table from any recording, and
 // optionally an orientation stream (heading for the field-of-view rule).
-// Output (kind lps-position): t, x, y, z (m), offset (s, t_off), rms_residual (m), n_beacons.
+// Output (kind lps-position): t, x, y, z (m), offset (s, t_off), rms_residual (m), n_beacons, dop (dilution
+// of precision over the beacons that reported: σ_pos ≈ dop·σ_range; BeaconGeometry.h); attribute `geometry`:
+// "ok" or why the beacon layout cannot give observable fixes (clustered, collinear, coplanar).
 // Two-way ranges (lps-range) instead of TDoA: ToA fixes (RangeSolver.h) every `epoch` seconds from each
 // anchor's newest range (mergeRangeEpochs), with selection all or irls; offset is then 0.
 // Instants with fewer than min_beacons readings or without a plausible solution are left out

@@ -117,3 +117,15 @@ TEST(LpsCalibrationGeometry, CoplanarBeaconsAreCalibratedWithAWarning) {
     EXPECT_TRUE(result->report.geometry.observable2d());
     EXPECT_TRUE(result->report.geometryWarning.contains("coplanar")) << result->report.geometryWarning.toStdString();
 }
+
+TEST(BeaconGeometry, ToaDopOfASquareAndOfAFarCluster) {
+    using athlos::lps::toaDop;
+    using athlos::lps::Vector3;
+    // Tag in the middle of a square at its height: HᵀH = 2 I, DOP = √(½ + ½) = 1.
+    const std::vector<Vector3> square = {{-5, -5, 1}, {5, -5, 1}, {5, 5, 1}, {-5, 5, 1}};
+    EXPECT_NEAR(toaDop(square, {0, 0, 1}, true), 1.0, 1e-12);
+    // Four anchors in a 2 m box seen from 50 m: the bearing is barely observable.
+    const std::vector<Vector3> cluster = {{0.7, 0.9, 0.5}, {2.6, 0.9, 2.0}, {2.6, -0.9, 2.0}, {2.6, -0.9, 0.5}};
+    EXPECT_GT(toaDop(cluster, {50, 0, 1}, true), 15.0);
+    EXPECT_LT(toaDop(cluster, {5, 0, 1}, true), 5.0);
+}

@@ -42,7 +42,7 @@ TEST(LpsProcessors, CalibrateThenPositionAsTheJudgeDoes) {
         run(*project, positioning, {"test/tdoa", "test/tdoa-beacons"}, "test/lps-ref", {{"tag_height", "1.2"}}));
     const Stream* cal = project->stream("test/lps-cal");
     ASSERT_NE(cal, nullptr);
-    EXPECT_EQ(cal->info().columnNames(), QStringList({"x", "y", "z", "offset", "rms_residual", "n_beacons"}));
+    EXPECT_EQ(cal->info().columnNames(), QStringList({"x", "y", "z", "offset", "rms_residual", "n_beacons", "dop"}));
     EXPECT_EQ(cal->info().columns[3].unit, "s");
     const double withSurveyed = rmse(*project->stream("test/lps-ref"), *project->stream("test/tdoa-truth"));
     const double withCalibrated = rmse(*cal, *project->stream("test/tdoa-truth"));
