@@ -270,12 +270,8 @@ PositionFilter::Estimate PositionFilter::estimateNoise(const Params& params, con
 }
 
 std::vector<PositionSamples> PositionFilter::noiseChunks(const PositionSamples& fixes, double duration, int count) {
-    const double t0 = fixes.t.front(), t1 = fixes.t.back();
-    if (count <= 0 || !(duration > 0) || (t1 - t0) <= count * duration) return {fixes};
     std::vector<PositionSamples> chunks;
-    const double spacing = (t1 - t0 - duration) / (count - 1 > 0 ? count - 1 : 1);
-    for (int c = 0; c < count; ++c) {
-        const double a = t0 + c * spacing, b = a + duration;
+    for (const auto& [a, b] : chunkWindows(fixes.t.front(), fixes.t.back(), duration, count)) {
         const auto lo = std::lower_bound(fixes.t.begin(), fixes.t.end(), a) - fixes.t.begin();
         const auto hi = std::upper_bound(fixes.t.begin(), fixes.t.end(), b) - fixes.t.begin();
         if (hi - lo < 10) continue;
@@ -286,6 +282,14 @@ std::vector<PositionSamples> PositionFilter::noiseChunks(const PositionSamples& 
     }
     if (chunks.empty()) return {fixes};
     return chunks;
+}
+
+std::vector<std::pair<double, double>> PositionFilter::chunkWindows(double t0, double t1, double duration, int count) {
+    std::vector<std::pair<double, double>> windows;
+    if (count <= 0 || !(duration > 0) || (t1 - t0) <= count * duration) return windows;
+    const double spacing = (t1 - t0 - duration) / (count - 1 > 0 ? count - 1 : 1);
+    for (int c = 0; c < count; ++c) windows.emplace_back(t0 + c * spacing, t0 + c * spacing + duration);
+    return windows;
 }
 
 std::vector<double> PositionFilter::outputGrid(double tBegin, double tEnd, double rate) {

@@ -11,6 +11,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace athlos::positioning {
@@ -85,6 +86,9 @@ public:
     // evenly over the fixes (the whole input when it is shorter than count × duration). The noise of a
     // device does not change within a session, so a 90-min match needs no 54 000-sample estimate.
     static std::vector<PositionSamples> noiseChunks(const PositionSamples& fixes, double duration, int count);
+    // The windows [a, a + duration] of noiseChunks over [t0, t1], evenly spread; empty when the span is not
+    // longer than count × duration (then the whole input is used). Shared with RangeFilter::noiseChunks.
+    static std::vector<std::pair<double, double>> chunkWindows(double t0, double t1, double duration, int count);
     // Uniform grid on multiples of 1/rate covering [tBegin, tEnd].
     static std::vector<double> outputGrid(double tBegin, double tEnd, double rate);
     // Rough measurement variance from the data: MAD of second differences (robust to outliers).

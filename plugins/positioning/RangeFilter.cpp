@@ -419,12 +419,9 @@ PositionFilter::Estimate RangeFilter::estimateNoise(const Params& params, const 
 
 std::vector<RangeMeasurements> RangeFilter::noiseChunks(const RangeMeasurements& in, double duration, int count) {
     if (in.t.empty()) return {in};
-    const double t0 = in.t.front(), t1 = in.t.back();
-    if (count <= 0 || !(duration > 0) || (t1 - t0) <= count * duration) return {in};
     std::vector<RangeMeasurements> chunks;
-    const double spacing = (t1 - t0 - duration) / (count - 1 > 0 ? count - 1 : 1);
-    for (int c = 0; c < count; ++c) {
-        RangeMeasurements chunk = in.slice(t0 + c * spacing, t0 + c * spacing + duration);
+    for (const auto& [a, b] : PositionFilter::chunkWindows(in.t.front(), in.t.back(), duration, count)) {
+        RangeMeasurements chunk = in.slice(a, b);
         if (chunk.size() >= 30 && initialPosition(chunk, 0.0)) chunks.push_back(std::move(chunk));
     }
     if (chunks.empty()) return {in};
