@@ -118,6 +118,9 @@ QWidget* ParameterForm::createEditor(const ParameterSpec& spec) {
             auto* box = new QComboBox(this);
             box->addItems(spec.choices);
             box->setCurrentIndex(std::max<qsizetype>(0, spec.choices.indexOf(spec.defaultValue.toString())));
+            // A choice that takes an argument ("profile:" + NAME) is typed into the box.
+            box->setEditable(std::any_of(spec.choices.begin(), spec.choices.end(),
+                                         [](const QString& c) { return c.endsWith(QLatin1Char(':')); }));
             return box;
         }
         case ParameterSpec::Type::String:
@@ -138,7 +141,10 @@ void ParameterForm::setEditorValue(QWidget* editor, const QVariant& value) {
         check->setChecked(value.toBool());
     else if (auto* combo = qobject_cast<QComboBox*>(editor)) {
         const int index = combo->findText(value.toString());
-        if (index >= 0) combo->setCurrentIndex(index);
+        if (index >= 0)
+            combo->setCurrentIndex(index);
+        else if (combo->isEditable())
+            combo->setEditText(value.toString());
     } else if (auto* edit = qobject_cast<QLineEdit*>(editor)) {
         edit->setText(value.typeId() == QMetaType::Double ? numberText(value.toDouble()) : value.toString());
     }

@@ -1,6 +1,7 @@
 #include "core/processing/ParameterSpec.h"
 
 #include <QJsonArray>
+#include <algorithm>
 #include <cmath>
 
 namespace athlos {
@@ -124,13 +125,20 @@ Expected<QVariant> ParameterSpec::convert(const QVariant& value) const {
             return bad(QStringLiteral("'%1' is not a boolean (use true or false)").arg(text));
         }
         case Type::Choice:
-            if (!choices.contains(text))
+            if (!acceptsChoice(text))
                 return bad(QStringLiteral("'%1' is not one of %2").arg(text, choices.join(QStringLiteral("|"))));
             return QVariant(text);
         case Type::String:
             return QVariant(value.toString());
     }
     return bad(QStringLiteral("unsupported type"));
+}
+
+bool ParameterSpec::acceptsChoice(const QString& text) const {
+    if (choices.contains(text) && !text.endsWith(QLatin1Char(':'))) return true;
+    return std::any_of(choices.begin(), choices.end(), [&](const QString& c) {
+        return c.endsWith(QLatin1Char(':')) && text.size() > c.size() && text.startsWith(c);
+    });
 }
 
 Expected<QVariantMap> validateParameters(const ParameterSpecs& specs, const QVariantMap& given) {

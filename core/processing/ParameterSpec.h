@@ -20,8 +20,10 @@ struct ParameterSpec {
     QVariant defaultValue;                                      // invalid QVariant = required
     double minimum = -std::numeric_limits<double>::infinity();  // inclusive, numbers only
     double maximum = std::numeric_limits<double>::infinity();
-    QStringList choices;  // Choice only
-    QString unit;         // SI unit of the value ("Hz", "s", "m", ...)
+    // Choice only. A choice ending in ':' takes an argument: "profile:" accepts "profile:NAME" for any
+    // non-empty NAME (the GUI then offers an editable list).
+    QStringList choices;
+    QString unit;  // SI unit of the value ("Hz", "s", "m", ...)
     QString help;
     bool optional = false;  // may be absent (no default), e.g. output_rate
 
@@ -37,6 +39,8 @@ struct ParameterSpec {
     // Converts a user-given value (a string from the CLI or any QVariant from the GUI) to the
     // parameter's type and checks range/choices. The error names the parameter and the range.
     Expected<QVariant> convert(const QVariant& value) const;
+    // Whether `text` is one of the choices or an argument choice ("profile:" + NAME).
+    bool acceptsChoice(const QString& text) const;
 };
 
 using ParameterSpecs = QList<ParameterSpec>;

@@ -4,6 +4,7 @@
 #include "core/processing/Translator.h"
 #include "plugins/lps/BeaconTable.h"
 #include "plugins/lps/RangeStream.h"
+#include "plugins/positioning/NoiseProfile.h"
 #include "plugins/positioning/RangeFilter.h"
 
 #include <QJsonArray>
@@ -23,28 +24,6 @@ ParameterSpec optionalNumber(const QString& name, double min, double max, const 
     spec.defaultValue = QVariant();
     spec.optional = true;
     return spec;
-}
-
-Expected<PositionSamples> loadPositions(const RunContext& context) {
-    const Stream* stream = context.stream(0);
-    if (!stream) return makeError(QStringLiteral("input '%1' was not given").arg(context.inputRole(0)));
-    const int cx = stream->info().columnIndex(QStringLiteral("x")),
-              cy = stream->info().columnIndex(QStringLiteral("y"));
-    if (cx < 0 || cy < 0) return context.inputError(0, QStringLiteral("needs columns x and y"));
-    auto input = context.samples(0);
-    if (!input) return input.error();
-    PositionSamples samples;
-    const StreamData& d = *input->data;
-    for (std::size_t k = 0; k < d.rows(); ++k) {
-        const double x = d.at(k, cx), y = d.at(k, cy);
-        if (!std::isfinite(x) || !std::isfinite(y)) continue;  // missing fixes are gaps, not zeros
-        samples.t.push_back(d.t[k]);
-        samples.p.emplace_back(x, y);
-    }
-    if (samples.t.size() < 10)
-        return input->error(
-            QStringLiteral("%1 valid samples; position-filter needs at least 10").arg(samples.t.size()));
-    return samples;
 }
 
 bool rawRanges(const RunContext& context) {
@@ -178,6 +157,10 @@ std::vector<ProcessorOutput> trajectoryOutputs(const RunContext& context, const 
 
 // Tightly coupled: every range updates the filter (RangeFilter.h).
 Expected<std::vector<ProcessorOutput>> runRanges(const RunContext& context, const PositionFilter::Params& base) {
+    if (context.text(QStringLiteral("noise")).startsWith(QLatin1String("profile:")))
+        return makeError(
+            QStringLiteral("parameter 'noise': noise profiles hold the noise of position fixes; raw "
+                           "ranges take noise=auto or manual (r_range)"));
     auto rangesOr = loadRanges(context);
     if (!rangesOr) return rangesOr.error();
     const RangeMeasurements& in = *rangesOr;
@@ -237,6 +220,48 @@ Expected<std::vector<ProcessorOutput>> runRanges(const RunContext& context, cons
 }
 }  // namespace
 
+Expected<PositionSamples> PositionFilterProcessor::positionSamples(const RunContext& context, int index) {
+    const Stream* stream = context.stream(index);
+    if (!stream) return makeError(QStringLiteral("input '%1' was not given").arg(context.inputRole(index)));
+    const int cx = stream->info().columnIndex(QStringLiteral("x")),
+              cy = stream->info().columnIndex(QStringLiteral("y"));
+    if (cx < 0 || cy < 0) return context.inputError(index, QStringLiteral("needs columns x and y"));
+    auto input = context.samples(index);
+    if (!input) return input.error();
+    PositionSamples samples;
+    const StreamData& d = *input->data;
+    for (std::size_t k = 0; k < d.rows(); ++k) {
+        const double x = d.at(k, cx), y = d.at(k, cy);
+        if (!std::isfinite(x) || !std::isfinite(y)) continue;  // missing fixes are gaps, not zeros
+        samples.t.push_back(d.t[k]);
+        samples.p.emplace_back(x, y);
+    }
+    if (samples.t.size() < 10)
+        return input->error(QStringLiteral("%1 valid samples; the filter needs at least 10").arg(samples.t.size()));
+    return samples;
+}
+
+Expected<std::optional<NoiseProfile>> PositionFilterProcessor::noiseProfile(const RunContext& context,
+                                                                            ModelKind model) {
+    const QString noise = context.text(QStringLiteral("noise"));
+    const QString prefix = QStringLiteral("profile:");
+    if (!noise.startsWith(prefix)) return std::optional<NoiseProfile>();
+    const QString path = noise.mid(prefix.size()).trimmed();
+    const Table* table = context.project().table(path);
+    if (!table)
+        return makeError(QStringLiteral("parameter 'noise': no table '%1' in the project (estimate a profile with "
+                                        "the noise-profile processor and give its output path)")
+                             .arg(path));
+    auto profile = noiseProfileFromTable(*table, path);
+    if (!profile) return makeError(QStringLiteral("parameter 'noise': %1").arg(profile.message()));
+    if (profile->model != model)
+        return makeError(QStringLiteral("parameter 'noise': profile '%1' was estimated for model=%2, this run uses "
+                                        "model=%3 (Q differs between models: set model=%2 or estimate a profile "
+                                        "for %3)")
+                             .arg(path, modelKindName(profile->model), modelKindName(model)));
+    return std::optional<NoiseProfile>(*profile);
+}
+
 QString PositionFilterProcessor::name() const { return tr("Position filter"); }
 
 QString PositionFilterProcessor::description() const {
@@ -271,10 +296,12 @@ ParameterSpecs PositionFilterProcessor::parameters() const {
                        tr("Track origin y in LPS coordinates.")),
         optionalNumber(QStringLiteral("track_rotation"), -10.0, 10.0, QStringLiteral("rad"),
                        tr("Rotation of the track frame in LPS coordinates (counter-clockwise).")),
-        ParameterSpec::choice(QStringLiteral("noise"), {QStringLiteral("auto"), QStringLiteral("manual")},
-                              QStringLiteral("auto"),
-                              tr("auto: estimate Q, R and the gate from the input itself (innovation likelihood, no "
-                                 "ground truth); manual: use the q_*, r_* and gate parameters.")),
+        ParameterSpec::choice(
+            QStringLiteral("noise"), {QStringLiteral("auto"), QStringLiteral("manual"), QStringLiteral("profile:")},
+            QStringLiteral("auto"),
+            tr("auto: estimate Q, R and the gate from the input itself (innovation likelihood, no ground truth); "
+               "manual: use the q_*, r_* and gate parameters; profile:PATH: the values of a noise-profile table "
+               "estimated on training recordings (thesis §4.4 deployment), e.g. profile:training/noise.")),
         ParameterSpec::integer(QStringLiteral("noise_chunks"), 8, 0, 1000,
                                tr("noise=auto estimates on this many evenly spread chunks of noise_chunk seconds (a "
                                   "representative subsample; 0 or a shorter recording: all of it).")),
@@ -431,8 +458,9 @@ Expected<PositionFilter::Params> PositionFilterProcessor::readParams(const RunCo
 Status PositionFilterProcessor::prepare(const RunContext& context) const {
     auto params = readParams(context);
     if (!params) return params.error();
+    if (auto profile = noiseProfile(context, params->model); !profile) return profile.error();
     if (rawRanges(context)) return statusOf(loadRanges(context));
-    auto samples = loadPositions(context);
+    auto samples = positionSamples(context, 0);
     if (!samples) return samples.error();
     return {};
 }
@@ -442,12 +470,18 @@ Expected<std::vector<ProcessorOutput>> PositionFilterProcessor::run(const RunCon
     if (!paramsOr) return paramsOr.error();
     PositionFilter::Params params = std::move(*paramsOr);
     if (rawRanges(context)) return runRanges(context, params);
-    auto samplesOr = loadPositions(context);
+    auto samplesOr = positionSamples(context, 0);
     if (!samplesOr) return samplesOr.error();
     const PositionSamples& in = *samplesOr;
     const bool autoNoise = context.text(QStringLiteral("noise")) == QLatin1String("auto");
 
     QJsonObject attributes;
+    auto profile = noiseProfile(context, params.model);
+    if (!profile) return profile.error();
+    if (*profile) {
+        params.noise = (*profile)->noise;
+        attributes.insert(QStringLiteral("noise_profile"), context.text(QStringLiteral("noise")).mid(8));
+    }
     if (autoNoise) {
         const Progress sub = context.progress().sub(0.0, 0.8);
         const auto estimate =
