@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace athlos::lps {
@@ -18,6 +19,10 @@ TagFix BeaconSelection::solve(FixInput& input, TdoaSolver& solver, const TagFix*
             return solveLargestResidual(input, solver, start);
         case Method::FieldOfView:
             return view ? solveFieldOfView(input, solver, start, *view) : solveLargestResidual(input, solver, start);
+        case Method::AllSubsets:
+            return solveAllSubsets(input, solver, start);
+        case Method::BestSubset:
+            return solveBestSubset(input, solver, start);
     }
     return {};
 }
@@ -72,6 +77,86 @@ TagFix BeaconSelection::solveIrlsWeighted(FixInput& input, TdoaSolver& solver, c
         if (change < 1e-3) break;
     }
     return fix;
+}
+
+TagFix BeaconSelection::solveBestSubset(FixInput& input, TdoaSolver& solver, const TagFix* start) const {
+    const int n = input.size(), k = std::max(params_.bestSubsetSize, solver.unknowns() + 1);
+    TagFix all = solveAll(input, solver, start);
+    if (n <= k) return all;
+    const TagFix* seed = all.valid ? &all : start;
+    // Every combination of k readings: a selection mask permuted through all arrangements.
+    std::vector<char> pick(std::size_t(n), 0);
+    std::fill(pick.begin(), pick.begin() + k, 1);
+    std::vector<double> e, best;
+    TagFix bestFix;
+    double bestRms = std::numeric_limits<double>::infinity();
+    do {
+        for (int i = 0; i < n; ++i) input.weights[size_t(i)] = pick[size_t(i)] ? 1.0 : 0.0;
+        const TagFix fix = solver.solve(input, seed);
+        if (!fix.valid) continue;
+        TdoaSolver::residuals(input, fix.position, fix.offset, e);
+        const double rms = TdoaSolver::weightedRms(input, e);
+        if (rms < bestRms) {
+            bestRms = rms;
+            bestFix = fix;
+            best = input.weights;
+        }
+    } while (std::prev_permutation(pick.begin(), pick.end()));
+    if (!bestFix.valid) {
+        input.setAllWeights(1.0);
+        return all;
+    }
+    input.weights = best;
+    return bestFix;
+}
+
+TagFix BeaconSelection::solveAllSubsets(FixInput& input, TdoaSolver& solver, const TagFix* start) const {
+    const int n = input.size();
+    TagFix all = solveAll(input, solver, start);
+    const int maxOut = std::min(params_.subsetMaxExcluded > 0 ? params_.subsetMaxExcluded : n, n - params_.minBeacons);
+    if (maxOut < 1 || n > 31) return all;
+    const TagFix* seed = all.valid ? &all : start;
+    std::vector<double> sum(std::size_t(n), 0.0), e;
+    int hypotheses = 0;
+    // Hypotheses by size: every set of `out` readings assumed NLOS (weight 0), the rest weighted
+    // equally so that Σ w = B (§3.2.3).
+    for (int out = 0; out <= maxOut; ++out) {
+        std::vector<char> nlos(std::size_t(n), 0);
+        std::fill(nlos.begin(), nlos.begin() + out, 1);
+        do {
+            for (int i = 0; i < n; ++i) input.weights[size_t(i)] = nlos[size_t(i)] ? 0.0 : double(n) / (n - out);
+            const TagFix fix = solver.solve(input, seed);
+            if (!fix.valid) continue;
+            TdoaSolver::residuals(input, fix.position, fix.offset, e);
+            for (int i = 0; i < n; ++i) sum[size_t(i)] += std::abs(e[size_t(i)]);
+            ++hypotheses;
+        } while (std::prev_permutation(nlos.begin(), nlos.end()));
+    }
+    if (hypotheses == 0) {
+        input.setAllWeights(1.0);
+        return all;
+    }
+    // Bisquare weights of the summed residuals (Cleveland 1979), one-sided: a small sum is never suspicious.
+    for (double& v : sum) v /= hypotheses;
+    const double centre = math::median(sum);
+    const double scale = std::max(1.4826 * medianAbsoluteDeviation(sum), params_.irlsMinScale);
+    std::vector<double> u(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) {
+        u[size_t(i)] = std::max(0.0, sum[size_t(i)] - centre) / (params_.irlsK * scale);
+        const double a = 1.0 - u[size_t(i)] * u[size_t(i)];
+        input.weights[size_t(i)] = u[size_t(i)] < 1.0 ? a * a : 0.0;
+    }
+    if (input.activeCount() < params_.minBeacons) {
+        std::vector<int> order(static_cast<std::size_t>(n));
+        std::iota(order.begin(), order.end(), 0);
+        std::sort(order.begin(), order.end(), [&](int a, int b) { return u[size_t(a)] < u[size_t(b)]; });
+        for (int k = 0; k < std::min(params_.minBeacons, n); ++k)
+            input.weights[size_t(order[size_t(k)])] = std::max(input.weights[size_t(order[size_t(k)])], 0.05);
+    }
+    const TagFix fix = solver.solve(input, seed);
+    if (fix.valid) return fix;
+    input.setAllWeights(1.0);
+    return all;
 }
 
 TagFix BeaconSelection::solveLargestResidual(FixInput& input, TdoaSolver& solver, const TagFix* start) const {

@@ -11,6 +11,12 @@
 //                   the fix falls back to LargestResidual. With fovRefine, LargestResidual then
 //                   runs on the beacons in view, choosing by leave-one-out (an addition of this
 //                   project, see docs).
+//   AllSubsets      method 4, after Cong & Zhuang (2005) as the thesis adapts it (§3.2.3): solve for every
+//                   hypothesis of which readings are NLOS (weight 0, the rest equal), sum each reading's
+//                   |e_i| over all hypotheses, bisquare weights from the sums, final fix. Hypotheses with
+//                   at most `subsetMaxExcluded` NLOS readings (all 2^B with 0 = no limit, B ≤ 16).
+//   BestSubset      method 5 (Cong & Zhuang 2001): every combination of B_best = 5 readings is solved;
+//                   the one with the lowest RMS residual is the fix.
 #include "plugins/lps/GainPattern.h"
 #include "plugins/lps/TdoaSolver.h"
 
@@ -20,7 +26,7 @@ namespace athlos::lps {
 
 class BeaconSelection {
 public:
-    enum class Method { All, Irls, LargestResidual, FieldOfView };
+    enum class Method { All, Irls, LargestResidual, FieldOfView, AllSubsets, BestSubset };
 
     struct Params {
         Method method = Method::Irls;
@@ -38,7 +44,9 @@ public:
         // ≈ 0.2–0.3 s behind at 10 Hz: ~2 m at sprint speed) is re-solved from m̂_ini with IRLS over
         // all readings (grid 1.5…8 m on seed 777, docs/validation/lps.md).
         double fovMaxJump = 4.0;
-        double frequency = 5.8e9;  // Hz, carrier of the thesis' LPS (free-space loss)
+        double frequency = 5.8e9;   // Hz, carrier of the thesis' LPS (free-space loss)
+        int bestSubsetSize = 5;     // B_best of method 5 ("yielded the best results in [Cong 01]", §3.2.3)
+        int subsetMaxExcluded = 3;  // method 4: NLOS hypotheses with at most this many readings; 0 = all 2^B
         GainPattern gain;
     };
 
@@ -64,6 +72,8 @@ public:
     TagFix solveIrls(FixInput& input, TdoaSolver& solver, const TagFix* start) const;
     TagFix solveLargestResidual(FixInput& input, TdoaSolver& solver, const TagFix* start) const;
     TagFix solveFieldOfView(FixInput& input, TdoaSolver& solver, const TagFix* start, const View& view) const;
+    TagFix solveAllSubsets(FixInput& input, TdoaSolver& solver, const TagFix* start) const;
+    TagFix solveBestSubset(FixInput& input, TdoaSolver& solver, const TagFix* start) const;
 
 private:
     // Method 8's loop from the current weights and fix.

@@ -78,8 +78,21 @@ ParameterSpecs LpsPositioningProcessor::parameters() const {
                               tr("Tag height in the LPS frame for 2D fixes.")),
         ParameterSpec::choice(QStringLiteral("selection"),
                               {QStringLiteral("all"), QStringLiteral("irls"), QStringLiteral("largest-residual"),
-                               QStringLiteral("field-of-view")},
-                              QStringLiteral("irls"), tr("Beacon selection method (thesis §3.2).")),
+                               QStringLiteral("field-of-view"), QStringLiteral("grubbs"), QStringLiteral("kalman-gate"),
+                               QStringLiteral("all-subsets"), QStringLiteral("best-subset")},
+                              QStringLiteral("irls"),
+                              tr("Beacon selection method (thesis §3.2, Fig. 3.16): grubbs and kalman-gate drop "
+                                 "readings whose TDoA changes abruptly (Grubbs test on each beacon's TDoA rate; "
+                                 "a constant-velocity Kalman filter per beacon with a Mahalanobis gate) and solve "
+                                 "with the rest; all-subsets weights readings by their residuals summed over NLOS "
+                                 "hypotheses (Cong & Zhuang); best-subset keeps the best-fitting 5 readings.")),
+        ParameterSpec::number(QStringLiteral("screen_gate"), TdoaScreening::Params().gate, 0.1, 1e6, QString(),
+                              tr("kalman-gate: squared Mahalanobis distance above which a reading is dropped.")),
+        ParameterSpec::number(QStringLiteral("grubbs_alpha"), 0.05, 1e-6, 0.5, QString(),
+                              tr("grubbs: significance level of the test (thesis: 0.05).")),
+        ParameterSpec::integer(QStringLiteral("subset_max_excluded"), 3, 0, 16,
+                               tr("all-subsets: NLOS hypotheses with at most this many readings (0 = all 2^B; "
+                                  "slow beyond 12 readings).")),
         ParameterSpec::choice(
             QStringLiteral("loss"), {QStringLiteral("none"), QStringLiteral("huber"), QStringLiteral("cauchy")},
             QStringLiteral("none"), tr("Robust loss of the fix (solved with a ceres::Problem; slower).")),
@@ -177,10 +190,20 @@ Expected<LpsPositioningProcessor::Plan> LpsPositioningProcessor::makePlan(const 
 
     auto& sel = plan.params.selection;
     const QString method = context.text(QStringLiteral("selection"));
-    sel.method = method == QLatin1String("all")                ? BeaconSelection::Method::All
+    const bool screen = method == QLatin1String("grubbs") || method == QLatin1String("kalman-gate");
+    sel.method = method == QLatin1String("all") || screen      ? BeaconSelection::Method::All
                  : method == QLatin1String("largest-residual") ? BeaconSelection::Method::LargestResidual
                  : method == QLatin1String("field-of-view")    ? BeaconSelection::Method::FieldOfView
+                 : method == QLatin1String("all-subsets")      ? BeaconSelection::Method::AllSubsets
+                 : method == QLatin1String("best-subset")      ? BeaconSelection::Method::BestSubset
                                                                : BeaconSelection::Method::Irls;
+    auto& scr = plan.params.screening;
+    scr.method = method == QLatin1String("grubbs")        ? TdoaScreening::Method::GrubbsRate
+                 : method == QLatin1String("kalman-gate") ? TdoaScreening::Method::KalmanGate
+                                                          : TdoaScreening::Method::None;
+    scr.gate = context.number(QStringLiteral("screen_gate"));
+    scr.alpha = context.number(QStringLiteral("grubbs_alpha"));
+    sel.subsetMaxExcluded = context.integer(QStringLiteral("subset_max_excluded"));
     sel.minBeacons = std::max(context.integer(QStringLiteral("min_beacons")), spatial ? 5 : 4);
     sel.irlsK = context.number(QStringLiteral("irls_k"));
     sel.rejectionThreshold = context.number(QStringLiteral("rejection_threshold"));

@@ -57,14 +57,18 @@ TagFix TdoaPositioning::update(const TdoaEpoch& epoch) {
 
 std::optional<std::vector<TagFix>> TdoaPositioning::run(const std::vector<TdoaEpoch>& epochs,
                                                         const Progress& progress) {
+    std::vector<TdoaEpoch> screened;
+    if (params_.screening.method != TdoaScreening::Method::None)
+        screened = TdoaScreening(params_.screening).screen(epochs, layout_.size(), &screened_);
+    const std::vector<TdoaEpoch>& in = screened.empty() ? epochs : screened;
     std::vector<TagFix> fixes;
-    fixes.reserve(epochs.size());
-    for (std::size_t k = 0; k < epochs.size(); ++k) {
-        if (k % 4096 == 0) {
+    fixes.reserve(in.size());
+    for (std::size_t k = 0; k < in.size(); ++k) {
+        if (k % 256 == 0) {
             if (progress.isCancelled()) return std::nullopt;
-            progress.report(double(k) / double(epochs.size()), QStringLiteral("positioning"));
+            progress.report(double(k) / double(in.size()), QStringLiteral("positioning"));
         }
-        fixes.push_back(update(epochs[k]));
+        fixes.push_back(update(in[k]));
     }
     progress.report(1.0);
     return fixes;

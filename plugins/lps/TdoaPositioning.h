@@ -10,6 +10,7 @@
 #include "core/geometry/TrackGeometry.h"
 #include "core/util/Progress.h"
 #include "plugins/lps/BeaconSelection.h"
+#include "plugins/lps/TdoaScreening.h"
 
 #include <functional>
 
@@ -23,6 +24,7 @@ public:
     struct Params {
         TdoaSolver::Params solver;
         BeaconSelection::Params selection;
+        TdoaScreening::Params screening;  // whole-recording screening before the fixes (run() only)
         HeadingSource heading = HeadingSource::Track;
         bool clockwise = false;        // running direction on the track
         double maxWarmStartGap = 2.0;  // s; older fixes do not seed the solver or the history
@@ -33,12 +35,14 @@ public:
 
     // One instant. Invalid fixes (fewer than B_min readings, no convergence) come back with valid = false.
     TagFix update(const TdoaEpoch& epoch);
-    // Batch over a recording; empty optional when cancelled.
+    // Batch over a recording (screened first when params.screening says so); empty optional when cancelled.
     std::optional<std::vector<TagFix>> run(const std::vector<TdoaEpoch>& epochs, const Progress& progress = {});
 
     // The body view at time t from the history and the heading source, if available.
     std::optional<BeaconSelection::View> view(double t) const;
     void reset();
+    // Readings the screening dropped in the last run().
+    int screened() const { return screened_; }
 
 private:
     Params params_;
@@ -52,6 +56,7 @@ private:
     FixInput input_;
     TagFix last_;
     FixHistory history_;
+    int screened_ = 0;
 };
 
 }  // namespace athlos::lps

@@ -55,7 +55,8 @@ TEST_P(SelectionRemovesNlos, PlantedNlosReadingGetsNoWeight) {
 
 INSTANTIATE_TEST_SUITE_P(Methods, SelectionRemovesNlos,
                          ::testing::Values(BeaconSelection::Method::Irls, BeaconSelection::Method::LargestResidual,
-                                           BeaconSelection::Method::FieldOfView));
+                                           BeaconSelection::Method::FieldOfView, BeaconSelection::Method::AllSubsets,
+                                           BeaconSelection::Method::BestSubset));
 
 TEST(BeaconSelection, AllBeaconsIsBiasedByTheNlosReading) {
     const BeaconLayout layout = square();
