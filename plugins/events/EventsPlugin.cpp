@@ -2,11 +2,17 @@
 
 #include "plugins/events/GaitEventsProcessor.h"
 #include "plugins/events/GaitParametersProcessor.h"
+#include "plugins/events/AlpineTurnsProcessor.h"
+#include "plugins/events/SimulateSkiingProcessor.h"
+#include "plugins/events/SkimoPhasesProcessor.h"
+#include "plugins/events/XcSkiingCyclesProcessor.h"
 
 namespace athlos::events {
 
 std::vector<std::shared_ptr<const Processor>> EventsPlugin::processors() const {
-    return {std::make_shared<GaitEventsProcessor>(), std::make_shared<GaitParametersProcessor>()};
+    return {std::make_shared<GaitEventsProcessor>(),     std::make_shared<GaitParametersProcessor>(),
+            std::make_shared<XcSkiingCyclesProcessor>(), std::make_shared<SkimoPhasesProcessor>(),
+            std::make_shared<AlpineTurnsProcessor>(),    std::make_shared<SimulateSkiingProcessor>()};
 }
 
 }  // namespace athlos::events
