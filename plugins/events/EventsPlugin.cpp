@@ -2,11 +2,16 @@
 
 #include "plugins/events/GaitEventsProcessor.h"
 #include "plugins/events/GaitParametersProcessor.h"
+#include "plugins/events/SimulateWristWalkProcessor.h"
+#include "plugins/events/WristCadenceProcessor.h"
+#include "plugins/events/WristSpeedProcessor.h"
 
 namespace athlos::events {
 
 std::vector<std::shared_ptr<const Processor>> EventsPlugin::processors() const {
-    return {std::make_shared<GaitEventsProcessor>(), std::make_shared<GaitParametersProcessor>()};
+    return {std::make_shared<GaitEventsProcessor>(),        std::make_shared<GaitParametersProcessor>(),
+            std::make_shared<SimulateWristWalkProcessor>(), std::make_shared<WristCadenceProcessor>(),
+            std::make_shared<WristSpeedTrainProcessor>(),   std::make_shared<WristSpeedProcessor>()};
 }
 
 }  // namespace athlos::events
