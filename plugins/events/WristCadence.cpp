@@ -162,14 +162,19 @@ std::vector<CadenceWindow> WristCadence::estimate(const double* t, const double*
             continue;
         }
         double cadence = 2.0 * global.f;  // steps/s, eq. 12.1
-        // Re-acquisition (not in the thesis): a track that overruled every window's own maximum for
-        // `reacquire` windows in a row started on a wrong maximum (e.g. a doubled cadence at gait
-        // initiation, whose range B lies outside the search range); start again from the maximum.
-        if (std::abs(global.f - 0.5 * previous) > p_.trackStride && ++disagreements > p_.reacquire) {
+        // Re-acquisition (not in the thesis): a track that more than `reacquire` windows in a row had
+        // a maximum near neither its stride (A) nor its step frequency (B) started on a wrong one
+        // (e.g. a doubled cadence at gait initiation, whose range B lies outside the search range);
+        // start again from the maximum.
+        // A maximum at the previous step frequency (range B: weak arm swing) agrees with the track.
+        const bool explained =
+            std::abs(global.f - 0.5 * previous) <= p_.trackStride || std::abs(global.f - previous) <= p_.trackStep;
+        if (explained)
+            disagreements = 0;
+        else if (std::isfinite(previous) && ++disagreements > p_.reacquire) {
             previous = kNaN;
             disagreements = 0;
         }
-        if (std::abs(global.f - 0.5 * previous) <= p_.trackStride) disagreements = 0;
         if (std::isfinite(previous) && std::abs(global.f - 0.5 * previous) > p_.trackStride) {
             // eq. 12.4–12.5: keep the more prominent maximum near the previous stride (A) or step (B).
             const Peak a = maxIn(cl, p_, 0.5 * previous - p_.trackStride, 0.5 * previous + p_.trackStride);

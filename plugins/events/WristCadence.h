@@ -17,8 +17,9 @@
 // the mean log-amplitude excess of the harmonics n·f (n = 1..4, f the comb's maximum) over the
 // mean of their neighbouring half harmonics (n ± 0.5)·f: unlike CL it is ~0 for any smooth
 // (e.g. falling) spectrum, so aperiodic arm movements do not pass for walking. Tracking
-// restarts after a non-walking window, and after `reacquire` consecutive windows whose own maximum
-// the tracking overruled (a track locked on a wrong maximum would otherwise never recover).
+// restarts after a non-walking window, and after `reacquire` consecutive windows whose maximum lies
+// near neither the tracked stride nor the tracked step frequency (a track locked on a wrong
+// maximum would otherwise never recover).
 #include <vector>
 
 namespace athlos::events {
@@ -33,7 +34,7 @@ struct WristCadenceParams {
     double trackStride = 0.07;        // Hz, range A half-width (eq. 12.4)
     double trackStep = 0.14;          // Hz, range B half-width (eq. 12.4)
     double smoothing = 0.33;          // weight of c[n−1] (thesis low-pass)
-    int reacquire = 3;                // windows overruled in a row before the track restarts (ours)
+    int reacquire = 3;                // windows in a row unexplained by the track before it restarts (ours)
     double minHarmonicity = 1.8;      // log-amplitude excess of the harmonics for walking (ours)
     double minStd = 0.4;              // m/s², SD of the norm in the window for walking
 };

@@ -102,8 +102,9 @@ ParameterSpecs WristCadenceProcessor::parameters() const {
                    tr("Weight of the previous cadence in the low-pass c[n] = a c[n-1] + (1-a) c[n] (thesis: "
                       "0.33).")),
         PS::integer(QStringLiteral("reacquire"), d.reacquire, 0, 1000,
-                    tr("Windows in a row whose own maximum the tracking overrules before the track restarts "
-                       "(ours; 0: never overrule twice).")),
+                    tr("Windows in a row whose comb maximum lies near neither the tracked stride nor step "
+                       "frequency before the track restarts from the maximum (ours, not in the thesis; 1000: "
+                       "never).")),
     };
 }
 
