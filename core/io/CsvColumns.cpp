@@ -226,6 +226,9 @@ Expected<Header> planHeader(CsvReader& reader, const QString& file, const Import
             if (!unit.isEmpty())
                 return makeError(QStringLiteral("%1: an id column has no unit (got '%2')").arg(at, unit));
         } else if (!target.isEmpty()) {
+            // A kind may read a column without a unit in a conventional one (barometer: hPa).
+            if (unit.trimmed().isEmpty() && kind && !kind->assumedUnitFor(col.name).isEmpty())
+                unit = kind->assumedUnitFor(col.name);
             const auto conversion = conversionTo(unit, target);
             if (!conversion) return makeError(QStringLiteral("%1: %2").arg(at, conversion.message()));
             col.unit = conversion->si;
@@ -339,6 +342,7 @@ QString inferCsvKind(const QStringList& names) {
     if (hasPrefix("acc_") || hasPrefix("gyr_") || hasPrefix("mag_")) return QStringLiteral("imu");
     if (has("qw") && has("qx") && has("qy") && has("qz")) return QStringLiteral("orientation");
     if (has("lat") && has("lon")) return QStringLiteral("gnss");
+    if (has("pressure") && !has("x")) return QStringLiteral("barometer");
     if (has("x") && has("y")) return QStringLiteral("lps-position");
     return {};
 }

@@ -45,7 +45,10 @@ void appendText(std::string& out, const QString& text, bool firstCell) {
 
 QString headerCell(const QString& name, const QString& unit, const StreamKind* kind) {
     const QString implied = kind ? kind->unitFor(name) : QString();
-    if (!unit.isEmpty() && unit != implied) return QStringLiteral("%1 [%2]").arg(name, unit);
+    // A column whose kind assumes another unit when none is written (barometer pressure: hPa) keeps
+    // its unit in the header, so that a re-import reads it back unchanged.
+    const bool assumed = kind && !kind->assumedUnitFor(name).isEmpty();
+    if (!unit.isEmpty() && (unit != implied || assumed)) return QStringLiteral("%1 [%2]").arg(name, unit);
     if (name.endsWith(QLatin1Char(')')) || name.endsWith(QLatin1Char(']')))
         return name + QStringLiteral(" []");  // so that the end of the name is not read as a unit
     return name;

@@ -13,6 +13,16 @@ QString StreamKind::unitFor(const QString& column) const {
     return {};
 }
 
+QString StreamKind::assumedUnitFor(const QString& column) const {
+    for (const auto& rule : rules)
+        if (rule.prefix == column && !rule.prefix.endsWith(QLatin1Char('_'))) return rule.assumed;
+    for (const auto& rule : rules)
+        if (rule.prefix.endsWith(QLatin1Char('_')) && column.startsWith(rule.prefix) &&
+            column.size() > rule.prefix.size())
+            return rule.assumed;
+    return {};
+}
+
 const std::vector<StreamKind>& streamKinds() {
     const QString m = QStringLiteral("m"), mps = QStringLiteral("m/s"), one = QStringLiteral("1");
     static const std::vector<StreamKind> kinds{
@@ -115,6 +125,14 @@ const std::vector<StreamKind>& streamKinds() {
         {"joint-angles", "joint-angles", "segment", false, {}, {}, "Joint angles, one column per angle."},
         {"events", "events", "", false, {}, {}, "Detected instants (gait events, strokes, ...)."},
         {"actions", "actions", "", false, {}, {}, "Classified activities per time."},
+        {"barometer",
+         "barometer",
+         "",
+         false,
+         {{"pressure", "Pa", "hPa"}, {"temp", "degC"}},
+         {"pressure"},
+         "Barometric pressure: pressure, stored in Pa; a header without a unit ('pressure') means hPa, "
+         "any other pressure unit is converted ('pressure[Pa]', 'pressure (mbar)'); optional temp (degC)."},
     };
     return kinds;
 }

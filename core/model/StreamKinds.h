@@ -13,6 +13,9 @@ namespace athlos {
 struct KindColumnRule {
     QString prefix;  // column name or prefix, e.g. "acc_" or "x"
     QString unit;    // SI unit, e.g. "m/s^2"
+    // Unit of a column given without one (empty: the SI unit above). Barometer pressure is written
+    // in hPa by convention (the interchange format and most sensors), stored in Pa.
+    QString assumed = {};
 };
 
 struct StreamKind {
@@ -26,6 +29,9 @@ struct StreamKind {
 
     // Unit a column of this kind must have, or empty if the kind says nothing about it.
     QString unitFor(const QString& column) const;
+    // Unit a column of this kind is read in when its header gives none (KindColumnRule::assumed),
+    // or empty: then it is taken as already in unitFor(column).
+    QString assumedUnitFor(const QString& column) const;
 };
 
 // All known kinds; unknown kinds are allowed (any columns, units as given).
