@@ -97,6 +97,8 @@ BodyComEvaluation evaluateBodyCom(const BodyComEvaluationOptions& options) {
             for (int s = 0; s < kBodySegments; ++s) segs[s].q = std::move(r.q[s]);
             if (options.vectors == ComVectors::Estimated)
                 for (int j = 0; j < kBodyJoints; ++j) {
+                    result.vectorError[j] = std::max((r.links[j].proximalToJoint - proximalToJoint[j]).norm(),
+                                                     (r.links[j].distalToJoint - distalToJoint[j]).norm());
                     proximalToJoint[j] = r.links[j].proximalToJoint;
                     distalToJoint[j] = r.links[j].distalToJoint;
                 }

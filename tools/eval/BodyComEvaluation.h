@@ -7,6 +7,8 @@
 #include "plugins/inertial/DriftReduction.h"
 #include "plugins/inertial/OrientationEstimation.h"
 
+#include <array>
+
 namespace athlos::eval {
 
 enum class ComOrientations { True, Uncorrected, Corrected };
@@ -34,6 +36,8 @@ struct BodyComEvaluation {
     // Absolute CoM from the helmet antenna (heading aligned over the first 2 s for 6D orientations).
     double absoluteRmse = 0;          // m, 3D
     double speedBias = 0, speedSd = 0;  // m/s, CoM speed error
+    // Estimated vectors only: the larger of |r_p − r_p,true| and |r_d − r_d,true| per joint (BodyJoint order, m).
+    std::array<double, 7> vectorError{};
     std::size_t samples = 0;
 };
 

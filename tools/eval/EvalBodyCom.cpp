@@ -51,11 +51,18 @@ int main(int argc, char** argv) {
                 sum.absoluteRmse += e.absoluteRmse / seeds;
                 sum.speedBias += e.speedBias / seeds;
                 sum.speedSd += e.speedSd / seeds;
+                for (int j = 0; j < 7; ++j) sum.vectorError[j] += e.vectorError[j] / seeds;
             }
             std::printf("| %s | %.1f | %.1f | %.1f/%.1f/%.1f | %.1f/%.1f/%.1f | %.1f | %.1f / %.1f | %.0f | %+.3f ± %.3f |\n",
                         c.name, 1e3 * sum.rmse, 1e3 * sum.meanError, 1e3 * sum.bias.x(), 1e3 * sum.bias.y(),
                         1e3 * sum.bias.z(), 1e3 * sum.sd.x(), 1e3 * sum.sd.y(), 1e3 * sum.sd.z(), 1e3 * sum.foreAftRmse, 1e3 * sum.pelvisFrameRmse,
                         1e3 * sum.ankleRmse, 1e3 * sum.absoluteRmse, sum.speedBias, sum.speedSd);
+            if (c.v == ComVectors::Estimated)
+                std::printf("|  (drift-reduction's sensor-to-joint vectors vs truth, mm: lumbar %.0f, hips %.0f/%.0f, knees "
+                            "%.0f/%.0f, ankles %.0f/%.0f) |\n",
+                            1e3 * sum.vectorError[0], 1e3 * sum.vectorError[1], 1e3 * sum.vectorError[4],
+                            1e3 * sum.vectorError[2], 1e3 * sum.vectorError[5], 1e3 * sum.vectorError[3],
+                            1e3 * sum.vectorError[6]);
             std::fflush(stdout);
         }
     }
