@@ -5,13 +5,13 @@ namespace athlos::body {
 namespace {
 
 constexpr std::array<const char*, kSegments> kSegmentNames{
-    "pelvis",          "thorax",          "head",          "right-upper-arm", "right-forearm",
-    "right-hand",      "left-upper-arm",  "left-forearm",  "left-hand",       "right-thigh",
-    "right-shank",     "right-foot",      "left-thigh",    "left-shank",      "left-foot"};
-constexpr std::array<const char*, kJoints> kJointNames{
-    "lumbar",    "cervical",   "head-vertex", "right-shoulder", "right-elbow",
-    "right-wrist", "left-shoulder", "left-elbow", "left-wrist", "right-hip",
-    "right-knee", "right-ankle", "left-hip",   "left-knee",      "left-ankle"};
+    "pelvis",      "thorax",         "head",         "right-upper-arm", "right-forearm",
+    "right-hand",  "left-upper-arm", "left-forearm", "left-hand",       "right-thigh",
+    "right-shank", "right-foot",     "left-thigh",   "left-shank",      "left-foot"};
+constexpr std::array<const char*, kJoints> kJointNames{"lumbar",      "cervical",    "head-vertex",   "right-shoulder",
+                                                       "right-elbow", "right-wrist", "left-shoulder", "left-elbow",
+                                                       "left-wrist",  "right-hip",   "right-knee",    "right-ankle",
+                                                       "left-hip",    "left-knee",   "left-ankle"};
 
 // One row of a table: length (mm at the reference stature), mass (% of body mass), CoM (% of the length).
 struct Row {
@@ -25,23 +25,23 @@ enum Type { Head, Torso, UpperArm, Forearm, Hand, Pelvis, Thigh, Shank, Foot, kT
 // the cervical joint centre; pelvis: the lumbar joint centre).
 // [NOTE] the female head & neck x, z were not available to us and are set to 0 (y = 55.9 %).
 constexpr std::array<Row, kTypes> kDumasMale{{{278, 6.7, 2.0, 53.4, 0.1},
-                                             {477, 33.3, -3.6, -42.0, -0.2},
-                                             {271, 2.4, 1.7, -45.2, -2.6},
-                                             {283, 1.7, 1.0, -41.7, 1.4},
-                                             {80, 0.6, 3.5, -35.7, 3.2},
-                                             {94, 14.2, 2.8, -28.0, -0.6},
-                                             {432, 12.3, -4.1, -42.9, 3.3},
-                                             {433, 4.8, -4.8, -41.0, 0.7},
-                                             {183, 1.2, 38.2, -15.1, 2.6}}};
+                                              {477, 33.3, -3.6, -42.0, -0.2},
+                                              {271, 2.4, 1.7, -45.2, -2.6},
+                                              {283, 1.7, 1.0, -41.7, 1.4},
+                                              {80, 0.6, 3.5, -35.7, 3.2},
+                                              {94, 14.2, 2.8, -28.0, -0.6},
+                                              {432, 12.3, -4.1, -42.9, 3.3},
+                                              {433, 4.8, -4.8, -41.0, 0.7},
+                                              {183, 1.2, 38.2, -15.1, 2.6}}};
 constexpr std::array<Row, kTypes> kDumasFemale{{{244, 6.7, 0.0, 55.9, 0.0},
-                                               {429, 30.4, -1.6, -43.6, -0.6},
-                                               {243, 2.2, -7.3, -45.4, -2.8},
-                                               {247, 1.3, 2.1, -41.1, 1.9},
-                                               {71, 0.5, 3.3, -32.7, 2.1},
-                                               {107, 14.6, -0.9, -23.2, 0.2},
-                                               {379, 14.6, -7.7, -37.7, 0.8},
-                                               {388, 4.5, -4.9, -40.4, 3.1},
-                                               {165, 1.0, 27.0, -21.8, 3.9}}};
+                                                {429, 30.4, -1.6, -43.6, -0.6},
+                                                {243, 2.2, -7.3, -45.4, -2.8},
+                                                {247, 1.3, 2.1, -41.1, 1.9},
+                                                {71, 0.5, 3.3, -32.7, 2.1},
+                                                {107, 14.6, -0.9, -23.2, 0.2},
+                                                {379, 14.6, -7.7, -37.7, 0.8},
+                                                {388, 4.5, -4.9, -40.4, 3.1},
+                                                {165, 1.0, 27.0, -21.8, 3.9}}};
 // Mean statures of the samples behind Table 2 (McConville et al. 1980 men, Young et al. 1983 women), used to
 // scale the lengths to the athlete. [NOTE] taken as 1.77 m / 1.61 m; check against the paper's Table 1.
 constexpr double kDumasStatureMale = 1.77, kDumasStatureFemale = 1.61;
@@ -53,7 +53,19 @@ constexpr double kDumasStatureMale = 1.77, kDumasStatureFemale = 1.61;
 struct DeLevaRow {
     double length, mass, com;
 };
-enum DeLevaType { DHead, DUpperTrunk, DMiddleTrunk, DLowerTrunk, DUpperArm, DForearm, DHand, DThigh, DShank, DFoot, kD };
+enum DeLevaType {
+    DHead,
+    DUpperTrunk,
+    DMiddleTrunk,
+    DLowerTrunk,
+    DUpperArm,
+    DForearm,
+    DHand,
+    DThigh,
+    DShank,
+    DFoot,
+    kD
+};
 constexpr std::array<DeLevaRow, kD> kDeLevaMale{{{242.9, 6.94, 50.02},
                                                  {170.7, 15.96, 29.99},
                                                  {215.5, 16.33, 45.02},

@@ -78,24 +78,24 @@ bool isLeft(Segment s);
 enum class BspTable { Dumas2007, DeLeva1996 };
 enum class Sex { Male, Female };
 Expected<BspTable> parseTable(const QString& name);  // "dumas-2007", "de-leva-1996"
-Expected<Sex> parseSex(const QString& name);      // "male", "female"
+Expected<Sex> parseSex(const QString& name);         // "male", "female"
 QString tableName(BspTable t);
 QString sexName(Sex s);
 
 // One segment at the athlete's size, in its ISB segment frame (X anterior, Y superior, Z right; left
 // segments mirrored in Z), origin at the proximal joint centre.
 struct SegmentParameters {
-    double massFraction = 0;           // of the body mass (renormalised so the 15 segments sum to 1)
-    Vec3 distal = Vec3::Zero();        // proximal → distal joint (m), upright neutral posture
-    Vec3 com = Vec3::Zero();           // proximal joint → segment CoM (m)
-    bool comFromMidHip = false;        // pelvis of de Leva: the CoM is measured from the mid-hip point
+    double massFraction = 0;     // of the body mass (renormalised so the 15 segments sum to 1)
+    Vec3 distal = Vec3::Zero();  // proximal → distal joint (m), upright neutral posture
+    Vec3 com = Vec3::Zero();     // proximal joint → segment CoM (m)
+    bool comFromMidHip = false;  // pelvis of de Leva: the CoM is measured from the mid-hip point
 };
 
 // Geometry that neither table gives (each an assumption, see Anthropometry.cpp).
 struct BodyProportions {
-    double hipWidth = 0.10;        // hip-joint-centre separation / height
-    double shoulderWidth = 0.20;   // shoulder-joint-centre separation / height
-    double shoulderDrop = 0.025;   // shoulder joint centres below the cervical joint centre / height
+    double hipWidth = 0.10;       // hip-joint-centre separation / height
+    double shoulderWidth = 0.20;  // shoulder-joint-centre separation / height
+    double shoulderDrop = 0.025;  // shoulder joint centres below the cervical joint centre / height
 };
 
 struct Anthropometry {

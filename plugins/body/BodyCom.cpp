@@ -51,7 +51,9 @@ BodyCom::Pose BodyCom::update(const std::array<std::optional<Quat>, kSegments>& 
     }
     const auto& q = pose.segment;
     std::array<Vec3, kJoints>& j = pose.joint;
-    const auto vec = [&](const std::optional<Vec3>& measured, const Vec3& table) { return measured ? *measured : table; };
+    const auto vec = [&](const std::optional<Vec3>& measured, const Vec3& table) {
+        return measured ? *measured : table;
+    };
     // The chain (spec §6).
     j[idx(Joint::Lumbar)] = Vec3::Zero();
     j[idx(Joint::RightHip)] = q[idx(Segment::Pelvis)] * vec(p_.rightHip, a.rightHip);
@@ -84,7 +86,8 @@ BodyCom::Pose BodyCom::update(const std::array<std::optional<Quat>, kSegments>& 
         const SegmentParameters& sp = a.segments[s];
         Vec3 c;
         if (seg == Segment::Pelvis) {
-            const Vec3 origin = sp.comFromMidHip ? Vec3(0.5 * (j[idx(Joint::RightHip)] + j[idx(Joint::LeftHip)])) : Vec3(Vec3::Zero());
+            const Vec3 origin =
+                sp.comFromMidHip ? Vec3(0.5 * (j[idx(Joint::RightHip)] + j[idx(Joint::LeftHip)])) : Vec3(Vec3::Zero());
             c = origin + q[s] * sp.com;
         } else {
             const int d = distalJoint(seg);

@@ -22,7 +22,7 @@ class BodyCom {
 public:
     struct Params {
         Anthropometry geometry;
-        std::array<double, kSegments> mass{};  // kg per segment, equipment included
+        std::array<double, kSegments> mass{};                  // kg per segment, equipment included
         double shoulderFlexion = 20.0 * 0.017453292519943295;  // rad, rigid arm posture (assumption)
         double elbowFlexion = 60.0 * 0.017453292519943295;     // rad
         // Measured joint vectors in the proximal segment's coordinates (m): lumbar → right/left hip in the
@@ -34,7 +34,7 @@ public:
                                                        const std::array<double, kSegments>& equipment = {});
 
     struct Pose {
-        std::array<Vec3, kJoints> joint;      // relative to the lumbar joint centre, ENU axes (m)
+        std::array<Vec3, kJoints> joint;  // relative to the lumbar joint centre, ENU axes (m)
         std::array<Vec3, kSegments> segmentCom;
         std::array<Quat, kSegments> segment;  // all segment orientations used (derived ones included)
         Vec3 com = Vec3::Zero();              // relative to the lumbar joint centre (m)

@@ -92,15 +92,18 @@ Expected<Plan> makePlan(const RunContext& c) {
                                      .arg(name, m.sensor[s], QLatin1String(col)));
         }
         auto data = stream->data();
-        if (!data) return makeError(QStringLiteral("segment '%1': stream '%2': %3").arg(name, m.sensor[s], data.message()));
+        if (!data)
+            return makeError(QStringLiteral("segment '%1': stream '%2': %3").arg(name, m.sensor[s], data.message()));
         plan.stream[s] = stream;
         plan.data[s] = *data;
         if (plan.data[s]->rows() < 2)
-            return makeError(QStringLiteral("segment '%1': stream '%2' has fewer than 2 samples").arg(name, m.sensor[s]));
+            return makeError(
+                QStringLiteral("segment '%1': stream '%2' has fewer than 2 samples").arg(name, m.sensor[s]));
         if (s > 0 && plan.data[s]->t != plan.data[0]->t)
-            return makeError(QStringLiteral("segment '%1': stream '%2' is not on the time axis of the pelvis' '%3' (the "
-                                            "sensors must be sampled together)")
-                                 .arg(name, m.sensor[s], m.sensor[0]));
+            return makeError(
+                QStringLiteral("segment '%1': stream '%2' is not on the time axis of the pelvis' '%3' (the "
+                               "sensors must be sampled together)")
+                    .arg(name, m.sensor[s], m.sensor[0]));
     }
     // Mounts: segment orientation = sensor orientation × mount.
     for (int s = 0; s < kSegments; ++s) {
@@ -113,9 +116,9 @@ Expected<Plan> makePlan(const RunContext& c) {
             const Table* table = c.table(t);
             if (!table || !table->column(QStringLiteral("segment"))) continue;
             const QStringList& names = table->column(QStringLiteral("segment"))->texts;
-            const QString name = names.contains(segmentName(seg)) ? segmentName(seg)
+            const QString name = names.contains(segmentName(seg))                   ? segmentName(seg)
                                  : (t == which && names.contains(genericName(seg))) ? genericName(seg)
-                                                                                     : QString();
+                                                                                    : QString();
             if (name.isEmpty()) continue;
             auto q = inertial::segmentMount(*table, c.inputPath(t), name);
             if (!q) return q.error();
@@ -126,7 +129,9 @@ Expected<Plan> makePlan(const RunContext& c) {
         if (!found) plan.identityMounts << segmentName(seg);
     }
     // Measured joint vectors, in segment coordinates.
-    const auto toSegment = [&](Segment s, const Vec3& v) { return Vec3(plan.mount[static_cast<int>(s)].conjugate() * v); };
+    const auto toSegment = [&](Segment s, const Vec3& v) {
+        return Vec3(plan.mount[static_cast<int>(s)].conjugate() * v);
+    };
     const QString vectors = c.text(QStringLiteral("vectors"));
     const Table* vt = c.table(VectorsIn);
     if (vectors == QLatin1String("table") && !vt)
@@ -135,7 +140,8 @@ Expected<Plan> makePlan(const RunContext& c) {
         const TableColumn* joint = vt->column(QStringLiteral("joint"));
         std::array<const TableColumn*, 6> v{};
         int i = 0;
-        for (const char* col : {"rp_x", "rp_y", "rp_z", "rd_x", "rd_y", "rd_z"}) v[i++] = vt->column(QLatin1String(col));
+        for (const char* col : {"rp_x", "rp_y", "rp_z", "rd_x", "rd_y", "rd_z"})
+            v[i++] = vt->column(QLatin1String(col));
         if (!joint || std::any_of(v.begin(), v.end(), [](const TableColumn* col) { return !col || col->isText; }))
             return makeError(QStringLiteral("joint vectors '%1': needs columns joint, rp_x..z, rd_x..z")
                                  .arg(c.inputPath(VectorsIn)));
@@ -151,7 +157,8 @@ Expected<Plan> makePlan(const RunContext& c) {
         if (!lumbar) return lumbar.error();
         for (int side = 0; side < 2; ++side) {
             const bool right = side == 0;
-            auto hipP = row(right ? "right-hip" : "left-hip", true), hipD = row(right ? "right-hip" : "left-hip", false);
+            auto hipP = row(right ? "right-hip" : "left-hip", true),
+                 hipD = row(right ? "right-hip" : "left-hip", false);
             auto kneeP = row(right ? "right-knee" : "left-knee", true),
                  kneeD = row(right ? "right-knee" : "left-knee", false);
             auto ankleP = row(right ? "right-ankle" : "left-ankle", true);
@@ -193,8 +200,9 @@ Expected<Plan> makePlan(const RunContext& c) {
             p.leftAnkle = toSegment(Segment::LeftShank, ankleP[1] - kneeD[1]);
             plan.vectorsSource = QStringLiteral("drift-reduction attributes");
         } else if (vectors == QLatin1String("attributes")) {
-            return makeError(QStringLiteral("vectors=attributes: the sensor streams of the model lack drift-reduction's "
-                                            "sensor_to_joint attributes (thorax, thighs, shanks and feet needed)"));
+            return makeError(
+                QStringLiteral("vectors=attributes: the sensor streams of the model lack drift-reduction's "
+                               "sensor_to_joint attributes (thorax, thighs, shanks and feet needed)"));
         }
     }
     if (plan.vectorsSource.isEmpty()) plan.vectorsSource = QStringLiteral("anthropometric table");
@@ -218,7 +226,8 @@ Expected<Plan> makePlan(const RunContext& c) {
         plan.antennaData = *data;
         for (const char* col : {"x", "y", "z"})
             if (plan.antenna->info().columnIndex(QLatin1String(col)) < 0)
-                return makeError(QStringLiteral("antenna stream '%1' has no column %2").arg(m.position[a], QLatin1String(col)));
+                return makeError(
+                    QStringLiteral("antenna stream '%1' has no column %2").arg(m.position[a], QLatin1String(col)));
     }
     return plan;
 }
@@ -244,18 +253,18 @@ QString BodyComProcessor::description() const {
 
 ParameterSpecs BodyComProcessor::parameters() const {
     return {
-        ParameterSpec::choice(QStringLiteral("vectors"),
-                              {QStringLiteral("auto"), QStringLiteral("table"), QStringLiteral("attributes"),
-                               QStringLiteral("model")},
-                              QStringLiteral("auto"),
-                              tr("Joint vectors: the joint-vectors table, drift-reduction's sensor_to_joint attributes "
-                                 "of the sensor streams, or the anthropometric table only (auto: the first present).")),
-        ParameterSpec::number(QStringLiteral("shoulder_flexion"), 20.0 * math::kDeg, -std::numbers::pi, std::numbers::pi,
-                              QStringLiteral("rad"),
+        ParameterSpec::choice(
+            QStringLiteral("vectors"),
+            {QStringLiteral("auto"), QStringLiteral("table"), QStringLiteral("attributes"), QStringLiteral("model")},
+            QStringLiteral("auto"),
+            tr("Joint vectors: the joint-vectors table, drift-reduction's sensor_to_joint attributes "
+               "of the sensor streams, or the anthropometric table only (auto: the first present).")),
+        ParameterSpec::number(QStringLiteral("shoulder_flexion"), 20.0 * math::kDeg, -std::numbers::pi,
+                              std::numbers::pi, QStringLiteral("rad"),
                               tr("Fixed arm posture on the thorax: shoulder flexion (a skier holding the poles; "
                                  "an assumption, arms carry no sensor).")),
-        ParameterSpec::number(QStringLiteral("elbow_flexion"), 60.0 * math::kDeg, 0.0, std::numbers::pi, QStringLiteral("rad"),
-                              tr("Fixed arm posture: elbow flexion.")),
+        ParameterSpec::number(QStringLiteral("elbow_flexion"), 60.0 * math::kDeg, 0.0, std::numbers::pi,
+                              QStringLiteral("rad"), tr("Fixed arm posture: elbow flexion.")),
         ParameterSpec::number(QStringLiteral("speed_window"), 0.5, 0.0, 10.0, QStringLiteral("s"),
                               tr("Absolute CoM speed: central difference over this span (antenna noise).")),
     };
@@ -263,12 +272,21 @@ ParameterSpecs BodyComProcessor::parameters() const {
 
 QList<InputSpec> BodyComProcessor::inputs() const {
     return {InputSpec{QStringLiteral("model"), {kBodyModelKind}, true, false, tr("Body model (body-model).")},
-            InputSpec{QStringLiteral("mounts"), {inertial::kSegmentCalibrationKind}, true, true,
+            InputSpec{QStringLiteral("mounts"),
+                      {inertial::kSegmentCalibrationKind},
+                      true,
+                      true,
                       tr("Sensor mounts (segment-calibration): pelvis, thorax, right leg (or full segment names); "
                          "absent = sensors aligned with their segments.")},
-            InputSpec{QStringLiteral("left-mounts"), {inertial::kSegmentCalibrationKind}, true, true,
+            InputSpec{QStringLiteral("left-mounts"),
+                      {inertial::kSegmentCalibrationKind},
+                      true,
+                      true,
                       tr("Mounts of the left leg (thigh, shank, foot).")},
-            InputSpec{QStringLiteral("joint-vectors"), {QStringLiteral("sensor-to-joint")}, true, true,
+            InputSpec{QStringLiteral("joint-vectors"),
+                      {QStringLiteral("sensor-to-joint")},
+                      true,
+                      true,
                       tr("Sensor-to-joint vectors (joint, rp_x..z, rd_x..z in the sensors' frames).")}};
 }
 
@@ -332,7 +350,8 @@ Expected<std::vector<ProcessorOutput>> BodyComProcessor::run(const RunContext& c
         attributes.insert(QStringLiteral("identity_mounts"), plan.identityMounts.join(QLatin1Char(',')));
     QJsonObject sources;
     for (int s = 0; s < kSegments; ++s)
-        if (plan.stream[s]) sources.insert(plan.model.sensor[s], QString::fromLatin1(plan.stream[s]->info().contentHash));
+        if (plan.stream[s])
+            sources.insert(plan.model.sensor[s], QString::fromLatin1(plan.stream[s]->info().contentHash));
     attributes.insert(QStringLiteral("orientation_inputs"), sources);
     QStringList jointColumns, jointUnits;
     for (int j = 0; j < kJoints; ++j)
@@ -345,9 +364,9 @@ Expected<std::vector<ProcessorOutput>> BodyComProcessor::run(const RunContext& c
                                            columnsOf({"com_x", "com_y", "com_z", "fore_aft", "above_ankles"},
                                                      {"m", "m", "m", "m", "m"}),
                                            std::move(main), attributes)});
-    out.push_back({QStringLiteral("joints"), outputStream(QStringLiteral("joint-centres"), QStringLiteral("pelvis-ENU"),
-                                                          columnsOf(jointColumns, jointUnits), std::move(joints),
-                                                          attributes)});
+    out.push_back(
+        {QStringLiteral("joints"), outputStream(QStringLiteral("joint-centres"), QStringLiteral("pelvis-ENU"),
+                                                columnsOf(jointColumns, jointUnits), std::move(joints), attributes)});
     if (antennaSegment >= 0) {
         // Absolute CoM on the antenna's time axis inside the orientation span: antenna + (CoM − antenna) of the
         // chain, linearly interpolated between orientation samples.
@@ -370,9 +389,10 @@ Expected<std::vector<ProcessorOutput>> BodyComProcessor::run(const RunContext& c
             p.push_back(a + (1.0 - w) * antennaOffset[k0] + w * antennaOffset[k1]);
         }
         if (t.size() < 2)
-            return makeError(QStringLiteral("antenna stream '%1' has fewer than 2 fixes inside the orientation streams' "
-                                            "time span")
-                                 .arg(plan.model.position[antennaSegment]));
+            return makeError(
+                QStringLiteral("antenna stream '%1' has fewer than 2 fixes inside the orientation streams' "
+                               "time span")
+                    .arg(plan.model.position[antennaSegment]));
         StreamData d(t.size(), 4);
         d.t = t;
         const double half = 0.5 * plan.speedWindow;
@@ -384,10 +404,10 @@ Expected<std::vector<ProcessorOutput>> BodyComProcessor::run(const RunContext& c
             d.at(r, 3) = t[b] > t[a] ? (p[b] - p[a]).norm() / (t[b] - t[a]) : kNaN;
         }
         attributes.insert(QStringLiteral("antenna"), plan.model.position[antennaSegment]);
-        out.push_back({QStringLiteral("absolute"),
-                       outputStream(QStringLiteral("centre-of-mass"), QStringLiteral("ENU"),
-                                    columnsOf({"x", "y", "z", "speed"}, {"m", "m", "m", "m/s"}), std::move(d),
-                                    attributes)});
+        out.push_back(
+            {QStringLiteral("absolute"),
+             outputStream(QStringLiteral("centre-of-mass"), QStringLiteral("ENU"),
+                          columnsOf({"x", "y", "z", "speed"}, {"m", "m", "m", "m/s"}), std::move(d), attributes)});
     }
     context.report(1.0);
     return out;

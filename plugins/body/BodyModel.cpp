@@ -28,25 +28,23 @@ int BodyModel::antennaSegment() const {
 }
 
 QString tableSource(BspTable t) {
-    return t == BspTable::Dumas2007
-               ? QStringLiteral("Dumas, Cheze, Verriest 2007, J Biomech 40:543-553, Table 2")
-               : QStringLiteral("de Leva 1996, J Biomech 29:1223-1230, Table 4");
+    return t == BspTable::Dumas2007 ? QStringLiteral("Dumas, Cheze, Verriest 2007, J Biomech 40:543-553, Table 2")
+                                    : QStringLiteral("de Leva 1996, J Biomech 29:1223-1230, Table 4");
 }
 
 athlos::Table bodyModelTable(const BodyModel& m) {
     athlos::Table t;
     t.kind = kBodyModelKind;
-    t.attributes = QJsonObject{{"height", m.height},
-                               {"mass", m.mass},
-                               {"sex", sexName(m.sex)},
-                               {"table", tableName(m.table)},
-                               {"table_source", tableSource(m.table)},
-                               {"antenna_offset", QStringLiteral("%1,%2,%3")
-                                                      .arg(m.antennaOffset.x())
-                                                      .arg(m.antennaOffset.y())
-                                                      .arg(m.antennaOffset.z())},
-                               {"arms", QStringLiteral("segments without a sensor ride rigidly on their parent "
-                                                       "(arms on the thorax in a fixed posture)")}};
+    t.attributes = QJsonObject{
+        {"height", m.height},
+        {"mass", m.mass},
+        {"sex", sexName(m.sex)},
+        {"table", tableName(m.table)},
+        {"table_source", tableSource(m.table)},
+        {"antenna_offset",
+         QStringLiteral("%1,%2,%3").arg(m.antennaOffset.x()).arg(m.antennaOffset.y()).arg(m.antennaOffset.z())},
+        {"arms", QStringLiteral("segments without a sensor ride rigidly on their parent "
+                                "(arms on the thorax in a fixed posture)")}};
     const auto text = [](const char* name) { return TableColumn{QLatin1String(name), QString(), true, {}, {}}; };
     const auto number = [](const char* name, const char* unit) {
         return TableColumn{QLatin1String(name), QLatin1String(unit), false, {}, {}};
@@ -66,16 +64,18 @@ athlos::Table bodyModelTable(const BodyModel& m) {
         position.texts << m.position[s];
         equipment.numbers.push_back(m.equipment[s]);
         mass.numbers.push_back(geometry ? geometry->segments[s].massFraction * m.mass + m.equipment[s] : NAN);
-        length.numbers.push_back(geometry ? (seg == Segment::Pelvis ? geometry->rightHip.y() * -1.0
-                                                                    : geometry->segments[s].distal.norm())
-                                          : NAN);
+        length.numbers.push_back(
+            geometry ? (seg == Segment::Pelvis ? geometry->rightHip.y() * -1.0 : geometry->segments[s].distal.norm())
+                     : NAN);
     }
     t.columns = {segment, parent, proximal, distal, sensor, position, equipment, mass, length};
     return t;
 }
 
 Expected<BodyModel> readBodyModel(const athlos::Table& t, const QString& path) {
-    const auto fail = [&](const QString& what) { return makeError(QStringLiteral("body model '%1': %2").arg(path, what)); };
+    const auto fail = [&](const QString& what) {
+        return makeError(QStringLiteral("body model '%1': %2").arg(path, what));
+    };
     if (t.kind != kBodyModelKind) return fail(QStringLiteral("kind is '%1', not '%2'").arg(t.kind, kBodyModelKind));
     BodyModel m;
     m.height = t.attributes.value(QStringLiteral("height")).toDouble(NAN);
@@ -101,7 +101,8 @@ Expected<BodyModel> readBodyModel(const athlos::Table& t, const QString& path) {
         auto s = parseSegment(segment->texts[r]);
         if (!s) return fail(QStringLiteral("row %1: %2").arg(r + 1).arg(s.error().message));
         const int i = static_cast<int>(*s);
-        if (seen[i]) return fail(QStringLiteral("row %1: segment '%2' appears twice").arg(r + 1).arg(segment->texts[r]));
+        if (seen[i])
+            return fail(QStringLiteral("row %1: segment '%2' appears twice").arg(r + 1).arg(segment->texts[r]));
         seen[i] = true;
         m.sensor[i] = sensor->texts[r];
         m.position[i] = position->texts[r];

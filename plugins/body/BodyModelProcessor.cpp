@@ -44,7 +44,8 @@ Expected<BodyModel> makeModel(const RunContext& c) {
     for (const auto& [segment, kg] : *equipment) {
         bool ok = false;
         const double v = kg.toDouble(&ok);
-        if (!ok) return makeError(QStringLiteral("equipment: '%1' on %2 is not a mass in kg").arg(kg, segmentName(segment)));
+        if (!ok)
+            return makeError(QStringLiteral("equipment: '%1' on %2 is not a mass in kg").arg(kg, segmentName(segment)));
         m.equipment[static_cast<int>(segment)] += v;
     }
     auto antenna = parseSegmentList(c.text(QStringLiteral("antenna")), QStringLiteral("antenna"));

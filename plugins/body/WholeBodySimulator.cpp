@@ -67,7 +67,8 @@ WholeBodySimulation simulateWholeBody(const WholeBodyParams& p) {
         for (int side = 0; side < 2; ++side) {
             const int o = 3 * side;
             const double mz = side == 0 ? 1.0 : -1.0;
-            const Vec3 shoulder = cervical + q[1] * Vec3(a.rightShoulder.x(), a.rightShoulder.y(), mz * a.rightShoulder.z());
+            const Vec3 shoulder =
+                cervical + q[1] * Vec3(a.rightShoulder.x(), a.rightShoulder.y(), mz * a.rightShoulder.z());
             const Vec3 elbow = shoulder + q[3 + o] * a.segments[3 + o].distal;
             const Vec3 wrist = elbow + q[4 + o] * a.segments[4 + o].distal;
             add(static_cast<Segment>(3 + o), shoulder + q[3 + o] * a.segments[3 + o].com);
@@ -102,7 +103,8 @@ WholeBodySimulation simulateWholeBody(const WholeBodyParams& p) {
         Vec3 e;
         for (int i = 0; i < 3; ++i)
             e[i] = p.gnssNoise * normal(rng) +
-                   p.gnssWander * 0.5 * (std::sin(twoPi * t / 47.0 + phases[i]) + std::sin(twoPi * t / 19.0 + phases[3 + i]));
+                   p.gnssWander * 0.5 *
+                       (std::sin(twoPi * t / 47.0 + phases[i]) + std::sin(twoPi * t / 19.0 + phases[3 + i]));
         w.gnssT.push_back(t);
         w.gnss.push_back(w.antenna[k] + e);
     }

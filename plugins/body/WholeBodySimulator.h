@@ -23,23 +23,23 @@ struct WholeBodyParams {
     double shoulderFlexion = 20.0 * 0.017453292519943295, shoulderSwing = 12.0 * 0.017453292519943295;
     double elbowFlexion = 60.0 * 0.017453292519943295, elbowSwing = 8.0 * 0.017453292519943295;
     double abductionSwing = 4.0 * 0.017453292519943295, headNod = 6.0 * 0.017453292519943295;
-    double swingFrequency = 0.8;                 // Hz
+    double swingFrequency = 0.8;                // Hz
     Vec3 antennaOffset = Vec3(0.0, 0.03, 0.0);  // helmet antenna: above the head vertex, head coordinates (m)
-    double gnssRate = 50.0;                      // Hz
-    double gnssNoise = 0.02;                     // m, white, per axis
-    double gnssWander = 0.03;                    // m, amplitude of the slowly varying offset per axis
+    double gnssRate = 50.0;                     // Hz
+    double gnssNoise = 0.02;                    // m, white, per axis
+    double gnssWander = 0.03;                   // m, amplitude of the slowly varying offset per axis
 };
 
 struct WholeBodySimulation {
     inertial::BodySimulation body;
     Anthropometry geometry;
-    std::array<double, kSegments> mass{};          // kg, equipment included
+    std::array<double, kSegments> mass{};              // kg, equipment included
     std::vector<std::array<Quat, kSegments>> segment;  // all 15 segment orientations (segment → ENU)
-    std::vector<Vec3> lumbar;                       // true lumbar joint centre, ENU (m)
-    std::vector<Vec3> com;                          // true CoM relative to the lumbar joint centre, ENU axes (m)
-    std::vector<Vec3> antenna;                      // true antenna position, ENU (m)
-    std::vector<double> gnssT;                      // antenna stream
-    std::vector<Vec3> gnss;                         // measured antenna position, ENU (m)
+    std::vector<Vec3> lumbar;                          // true lumbar joint centre, ENU (m)
+    std::vector<Vec3> com;                             // true CoM relative to the lumbar joint centre, ENU axes (m)
+    std::vector<Vec3> antenna;                         // true antenna position, ENU (m)
+    std::vector<double> gnssT;                         // antenna stream
+    std::vector<Vec3> gnss;                            // measured antenna position, ENU (m)
 };
 
 WholeBodySimulation simulateWholeBody(const WholeBodyParams& params);

@@ -24,8 +24,8 @@ double yawOf(const Quat& segment) {
 }
 // The body segment each of the simulator's eight sensors sits on.
 constexpr std::array<Segment, kBodySegments> kSegmentOf{Segment::Pelvis,     Segment::Thorax,    Segment::RightThigh,
-                                                       Segment::RightShank, Segment::RightFoot, Segment::LeftThigh,
-                                                       Segment::LeftShank,  Segment::LeftFoot};
+                                                        Segment::RightShank, Segment::RightFoot, Segment::LeftThigh,
+                                                        Segment::LeftShank,  Segment::LeftFoot};
 // Circular mean of yaw differences over rows [0, m).
 double meanYawOffset(const std::vector<Quat>& reference, const std::vector<Quat>& other, std::size_t m) {
     double c = 0, s = 0;
@@ -76,8 +76,10 @@ BodyComEvaluation evaluateBodyCom(const BodyComEvaluationOptions& options) {
             segs[s].gyr = sensor.gyr;
         }
         // Functional calibration (upright + squats), as DriftEvaluation; feet keep their true mounts.
-        const std::size_t s0 = std::size_t(std::ceil(1.0 / ts)), s1 = std::min(n, std::size_t((sim.uprightEnd - 1.0) / ts));
-        const std::size_t m0 = std::size_t(std::ceil(sim.squatBegin / ts)), m1 = std::min(n, std::size_t(sim.squatEnd / ts));
+        const std::size_t s0 = std::size_t(std::ceil(1.0 / ts)),
+                          s1 = std::min(n, std::size_t((sim.uprightEnd - 1.0) / ts));
+        const std::size_t m0 = std::size_t(std::ceil(sim.squatBegin / ts)),
+                          m1 = std::min(n, std::size_t(sim.squatEnd / ts));
         for (int s = 0; s < kBodySegments; ++s) {
             const bool foot = s == int(BodySegment::RightFoot) || s == int(BodySegment::LeftFoot);
             if (options.trueMounts || foot || m1 <= m0) continue;
@@ -128,11 +130,13 @@ BodyComEvaluation evaluateBodyCom(const BodyComEvaluationOptions& options) {
         const Vec3 lumbar = proximalToJoint[int(BodyJoint::Lumbar)];
         p.rightHip = inSegment(0, proximalToJoint[int(BodyJoint::RightHip)] - lumbar);
         p.leftHip = inSegment(0, proximalToJoint[int(BodyJoint::LeftHip)] - lumbar);
-        p.rightKnee = inSegment(2, proximalToJoint[int(BodyJoint::RightKnee)] - distalToJoint[int(BodyJoint::RightHip)]);
+        p.rightKnee =
+            inSegment(2, proximalToJoint[int(BodyJoint::RightKnee)] - distalToJoint[int(BodyJoint::RightHip)]);
         p.leftKnee = inSegment(5, proximalToJoint[int(BodyJoint::LeftKnee)] - distalToJoint[int(BodyJoint::LeftHip)]);
         p.rightAnkle =
             inSegment(3, proximalToJoint[int(BodyJoint::RightAnkle)] - distalToJoint[int(BodyJoint::RightKnee)]);
-        p.leftAnkle = inSegment(6, proximalToJoint[int(BodyJoint::LeftAnkle)] - distalToJoint[int(BodyJoint::LeftKnee)]);
+        p.leftAnkle =
+            inSegment(6, proximalToJoint[int(BodyJoint::LeftAnkle)] - distalToJoint[int(BodyJoint::LeftKnee)]);
     }
     p.shoulderFlexion = options.simulation.shoulderFlexion;
     p.elbowFlexion = options.simulation.elbowFlexion;
@@ -145,7 +149,8 @@ BodyComEvaluation evaluateBodyCom(const BodyComEvaluationOptions& options) {
                             : aboutUp(meanYawOffset(sim.sensors[0].segment, segment[0], m));
 
     const Vec3 antenna = w.geometry[Segment::Head].distal + options.simulation.antennaOffset;
-    const std::size_t e0 = std::size_t(std::ceil(sim.motionBegin / ts)), e1 = std::min(n, std::size_t(sim.motionEnd / ts));
+    const std::size_t e0 = std::size_t(std::ceil(sim.motionBegin / ts)),
+                      e1 = std::min(n, std::size_t(sim.motionEnd / ts));
     std::vector<Vec3> errors;
     std::vector<double> foreAft;
     double ankleSq = 0, pelvisFrameSq = 0;
@@ -168,7 +173,8 @@ BodyComEvaluation evaluateBodyCom(const BodyComEvaluationOptions& options) {
         // Fore-aft truth: along the true feet heading from the true mid-ankle.
         const Vec3 ankleR = sim[BodyJoint::RightAnkle].centre[k] - w.lumbar[k];
         const Vec3 ankleL = sim[BodyJoint::LeftAnkle].centre[k] - w.lumbar[k];
-        Vec3 fwd = sim[BodySegment::RightFoot].segment[k] * Vec3::UnitX() + sim[BodySegment::LeftFoot].segment[k] * Vec3::UnitX();
+        Vec3 fwd = sim[BodySegment::RightFoot].segment[k] * Vec3::UnitX() +
+                   sim[BodySegment::LeftFoot].segment[k] * Vec3::UnitX();
         fwd.z() = 0;
         foreAft.push_back(pose.foreAft - (w.com[k] - 0.5 * (ankleR + ankleL)).dot(fwd.normalized()));
         // In the pelvis sensor's frame: the chain's own accuracy, without the whole body's common tilt error.

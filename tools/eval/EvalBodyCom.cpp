@@ -18,18 +18,22 @@ int main(int argc, char** argv) {
         ComVectors v;
         bool trueMounts;
     };
-    const Case cases[] = {{"true orientations, true vectors", ComOrientations::True, ComVectors::True, true},
-                          {"6D uncorrected, true vectors", ComOrientations::Uncorrected, ComVectors::True, false},
-                          {"drift-reduced, true vectors", ComOrientations::Corrected, ComVectors::True, false},
-                          {"drift-reduced, true vectors, true mounts", ComOrientations::Corrected, ComVectors::True, true},
-                          {"drift-reduced, estimated vectors", ComOrientations::Corrected, ComVectors::Estimated, false},
-                          {"drift-reduced, table lengths only", ComOrientations::Corrected, ComVectors::Model, false}};
+    const Case cases[] = {
+        {"true orientations, true vectors", ComOrientations::True, ComVectors::True, true},
+        {"6D uncorrected, true vectors", ComOrientations::Uncorrected, ComVectors::True, false},
+        {"drift-reduced, true vectors", ComOrientations::Corrected, ComVectors::True, false},
+        {"drift-reduced, true vectors, true mounts", ComOrientations::Corrected, ComVectors::True, true},
+        {"drift-reduced, estimated vectors", ComOrientations::Corrected, ComVectors::Estimated, false},
+        {"drift-reduced, table lengths only", ComOrientations::Corrected, ComVectors::Model, false}};
     for (body::BspTable table : {body::BspTable::Dumas2007, body::BspTable::DeLeva1996}) {
-        std::printf("\n%s, skiing %.0f s, mean of %d seeds (mm; CoM relative to the lumbar joint centre, pelvis heading "
-                    "frame)\n",
-                    qUtf8Printable(body::tableName(table)), duration, seeds);
-        std::printf("| orientations | RMSE | mean |e| | bias fwd/left/up | SD fwd/left/up | fore-aft RMSE | CoM / ankle RMSE in the pelvis frame | "
-                    "absolute RMSE | speed error (m/s) |\n|---|---|---|---|---|---|---|---|---|\n");
+        std::printf(
+            "\n%s, skiing %.0f s, mean of %d seeds (mm; CoM relative to the lumbar joint centre, pelvis heading "
+            "frame)\n",
+            qUtf8Printable(body::tableName(table)), duration, seeds);
+        std::printf(
+            "| orientations | RMSE | mean |e| | bias fwd/left/up | SD fwd/left/up | fore-aft RMSE | CoM / ankle RMSE "
+            "in the pelvis frame | "
+            "absolute RMSE | speed error (m/s) |\n|---|---|---|---|---|---|---|---|---|\n");
         for (const Case& c : cases) {
             BodyComEvaluation sum;
             for (int s = 1; s <= seeds; ++s) {
@@ -53,16 +57,18 @@ int main(int argc, char** argv) {
                 sum.speedSd += e.speedSd / seeds;
                 for (int j = 0; j < 7; ++j) sum.vectorError[j] += e.vectorError[j] / seeds;
             }
-            std::printf("| %s | %.1f | %.1f | %.1f/%.1f/%.1f | %.1f/%.1f/%.1f | %.1f | %.1f / %.1f | %.0f | %+.3f ± %.3f |\n",
-                        c.name, 1e3 * sum.rmse, 1e3 * sum.meanError, 1e3 * sum.bias.x(), 1e3 * sum.bias.y(),
-                        1e3 * sum.bias.z(), 1e3 * sum.sd.x(), 1e3 * sum.sd.y(), 1e3 * sum.sd.z(), 1e3 * sum.foreAftRmse, 1e3 * sum.pelvisFrameRmse,
-                        1e3 * sum.ankleRmse, 1e3 * sum.absoluteRmse, sum.speedBias, sum.speedSd);
+            std::printf(
+                "| %s | %.1f | %.1f | %.1f/%.1f/%.1f | %.1f/%.1f/%.1f | %.1f | %.1f / %.1f | %.0f | %+.3f ± %.3f |\n",
+                c.name, 1e3 * sum.rmse, 1e3 * sum.meanError, 1e3 * sum.bias.x(), 1e3 * sum.bias.y(), 1e3 * sum.bias.z(),
+                1e3 * sum.sd.x(), 1e3 * sum.sd.y(), 1e3 * sum.sd.z(), 1e3 * sum.foreAftRmse, 1e3 * sum.pelvisFrameRmse,
+                1e3 * sum.ankleRmse, 1e3 * sum.absoluteRmse, sum.speedBias, sum.speedSd);
             if (c.v == ComVectors::Estimated)
-                std::printf("|  (drift-reduction's sensor-to-joint vectors vs truth, mm: lumbar %.0f, hips %.0f/%.0f, knees "
-                            "%.0f/%.0f, ankles %.0f/%.0f) |\n",
-                            1e3 * sum.vectorError[0], 1e3 * sum.vectorError[1], 1e3 * sum.vectorError[4],
-                            1e3 * sum.vectorError[2], 1e3 * sum.vectorError[5], 1e3 * sum.vectorError[3],
-                            1e3 * sum.vectorError[6]);
+                std::printf(
+                    "|  (drift-reduction's sensor-to-joint vectors vs truth, mm: lumbar %.0f, hips %.0f/%.0f, knees "
+                    "%.0f/%.0f, ankles %.0f/%.0f) |\n",
+                    1e3 * sum.vectorError[0], 1e3 * sum.vectorError[1], 1e3 * sum.vectorError[4],
+                    1e3 * sum.vectorError[2], 1e3 * sum.vectorError[5], 1e3 * sum.vectorError[3],
+                    1e3 * sum.vectorError[6]);
             std::fflush(stdout);
         }
     }

@@ -52,10 +52,10 @@ TEST(BodyComProcessor, TrueOrientationsEndToEndAndRefusals) {
     wp.equipment[int(Segment::RightFoot)] = wp.equipment[int(Segment::LeftFoot)] = 3.0;
     const WholeBodySimulation w = simulateWholeBody(wp);
     ASSERT_FALSE(w.com.empty());
-    const char* names[] = {"sacrum", "sternum", "right-thigh", "right-shank", "right-foot", "left-thigh", "left-shank",
-                           "left-foot"};
-    const char* segments[] = {"pelvis", "thorax", "right-thigh", "right-shank", "right-foot", "left-thigh", "left-shank",
-                              "left-foot"};
+    const char* names[] = {"sacrum",     "sternum",    "right-thigh", "right-shank",
+                           "right-foot", "left-thigh", "left-shank",  "left-foot"};
+    const char* segments[] = {"pelvis",     "thorax",     "right-thigh", "right-shank",
+                              "right-foot", "left-thigh", "left-shank",  "left-foot"};
     QStringList sensors;
     for (int s = 0; s < 8; ++s) {
         const QString path = QStringLiteral("ski/%1-orientation").arg(QLatin1String(names[s]));
@@ -87,7 +87,8 @@ TEST(BodyComProcessor, TrueOrientationsEndToEndAndRefusals) {
     const StreamData& d = **data;
     ASSERT_EQ(d.rows(), w.com.size());
     double sq = 0;
-    for (std::size_t k = 0; k < d.rows(); ++k) sq += (Vec3(d.at(k, 0), d.at(k, 1), d.at(k, 2)) - w.com[k]).squaredNorm();
+    for (std::size_t k = 0; k < d.rows(); ++k)
+        sq += (Vec3(d.at(k, 0), d.at(k, 1), d.at(k, 2)) - w.com[k]).squaredNorm();
     EXPECT_LT(std::sqrt(sq / double(d.rows())), 0.003);  // arm/head swing only (≈ 1 mm)
     // Absolute CoM against the truth (GNSS noise 2 cm white + 3 cm wander).
     auto absolute = project->stream("ski/com-absolute")->data();
@@ -127,7 +128,8 @@ TEST(BodyComProcessor, TrueOrientationsEndToEndAndRefusals) {
     bad["sensors"] = "pelvis:ski/sacrum-orientation,thorax:ski/sternum-orientation";
     ASSERT_TRUE(run(*project, model, {}, "ski/legless", bad));
     fails(com, {"ski/legless"}, {}, "right-thigh");
-    project->putTable("ski/not-a-model", project->table("ski/imu-joint-vectors") ? *project->table("ski/imu-joint-vectors")
-                                                                                 : athlos::Table{});
+    project->putTable("ski/not-a-model", project->table("ski/imu-joint-vectors")
+                                             ? *project->table("ski/imu-joint-vectors")
+                                             : athlos::Table{});
     fails(com, {"ski/not-a-model"}, {}, "body-model");
 }

@@ -24,8 +24,8 @@ BodyComEvaluation evaluate(ComOrientations o, ComVectors v, double duration = 60
 // thorax) is left: about 1 mm. A wrong chain (sign, mount, fraction along the segment) costs centimetres.
 TEST(BodyCom, TrueOrientationsReproduceTheSimulatedCentreOfMass) {
     const BodyComEvaluation e = evaluate(ComOrientations::True, ComVectors::True, 20.0);
-    std::cout << "true orientations: CoM RMSE " << 1e3 * e.rmse << " mm, absolute (GNSS helmet) " << 1e3 * e.absoluteRmse
-              << " mm, speed error " << e.speedBias << " ± " << e.speedSd << " m/s\n";
+    std::cout << "true orientations: CoM RMSE " << 1e3 * e.rmse << " mm, absolute (GNSS helmet) "
+              << 1e3 * e.absoluteRmse << " mm, speed error " << e.speedBias << " ± " << e.speedSd << " m/s\n";
     EXPECT_GT(e.samples, 1000u);
     EXPECT_LT(e.rmse, 0.003);
     EXPECT_LT(e.ankleRmse, 1e-6);
