@@ -51,6 +51,7 @@ struct Plan {
     const Stream* antenna = nullptr;
     std::shared_ptr<const StreamData> antennaData;
     double speedWindow = 0.5;
+    double alignSeconds = 0.0;  // > 0: align each segment's heading to the pelvis over the first seconds
 };
 
 Expected<Plan> makePlan(const RunContext& c) {
@@ -69,6 +70,7 @@ Expected<Plan> makePlan(const RunContext& c) {
     p.shoulderFlexion = c.number(QStringLiteral("shoulder_flexion"));
     p.elbowFlexion = c.number(QStringLiteral("elbow_flexion"));
     plan.speedWindow = c.number(QStringLiteral("speed_window"));
+    if (c.text(QStringLiteral("heading")) == QLatin1String("align-start")) plan.alignSeconds = 2.0;
 
     for (Segment s : kRequired)
         if (m.sensor[static_cast<int>(s)].isEmpty())
@@ -265,6 +267,11 @@ ParameterSpecs BodyComProcessor::parameters() const {
                                  "an assumption, arms carry no sensor).")),
         ParameterSpec::number(QStringLiteral("elbow_flexion"), 60.0 * math::kDeg, 0.0, std::numbers::pi,
                               QStringLiteral("rad"), tr("Fixed arm posture: elbow flexion.")),
+        ParameterSpec::choice(QStringLiteral("heading"), {QStringLiteral("none"), QStringLiteral("align-start")},
+                              QStringLiteral("none"),
+                              tr("none: the orientations share one heading (drift-reduction outputs, 9D); align-start: "
+                                 "6D orientations with unrelated headings, each segment turned about the vertical so "
+                                 "its anterior axis matches the pelvis' over the first 2 s (standing upright).")),
         ParameterSpec::number(QStringLiteral("speed_window"), 0.5, 0.0, 10.0, QStringLiteral("s"),
                               tr("Absolute CoM speed: central difference over this span (antenna noise).")),
     };
@@ -296,8 +303,9 @@ QList<OutputSpec> BodyComProcessor::outputs() const {
                           "above_ankles (m, against the mid-ankle point along the feet's heading / vertical).")},
             OutputSpec{QStringLiteral("joint-centres"), false, QStringLiteral("joints"),
                        tr("<joint>_x..z of the 15 joints (m, relative to the lumbar joint centre, ENU axes).")},
-            OutputSpec{QStringLiteral("centre-of-mass"), false, QStringLiteral("absolute"),
-                       tr("Only with an antenna: x, y, z (m, ENU) and speed (m/s) on the antenna's time axis.")}};
+            OutputSpec{QStringLiteral("trajectory"), false, QStringLiteral("absolute"),
+                       tr("Only with an antenna: the absolute CoM x, y, z (m, the antenna stream's frame), vx, vy, vz "
+                          "and speed (m/s) on the antenna's time axis (a trajectory: drawn on the venue).")}};
 }
 
 Status BodyComProcessor::prepare(const RunContext& context) const { return statusOf(makePlan(context)); }
@@ -314,6 +322,26 @@ Expected<std::vector<ProcessorOutput>> BodyComProcessor::run(const RunContext& c
     joints.t = axis.t;
     const int antennaSegment = plan.model.antennaSegment();
     std::vector<Vec3> antennaOffset(antennaSegment >= 0 ? n : 0);  // CoM − antenna, from the chain
+    // Heading alignment (heading=align-start): circular mean of the pelvis' minus the segment's anterior-axis yaw.
+    std::array<Quat, kSegments> align;
+    align.fill(Quat::Identity());
+    if (plan.alignSeconds > 0.0) {
+        const auto yaw = [](const Quat& q) {
+            const Vec3 x = q * Vec3::UnitX();
+            return std::atan2(x.y(), x.x());
+        };
+        for (int s = 1; s < kSegments; ++s) {
+            if (!plan.data[s]) continue;
+            double cs = 0.0, sn = 0.0;
+            for (std::size_t k = 0; k < n && axis.t[k] - axis.t[0] <= plan.alignSeconds; ++k) {
+                const double d = yaw(sample(plan, 0, k).normalized() * plan.mount[0]) -
+                                 yaw(sample(plan, s, k).normalized() * plan.mount[s]);
+                cs += std::cos(d);
+                sn += std::sin(d);
+            }
+            align[s] = math::quatFromAxisAngle(Vec3::UnitZ(), std::atan2(sn, cs));
+        }
+    }
     std::array<std::optional<Quat>, kSegments> q;
     for (std::size_t k = 0; k < n; ++k) {
         if (k % 4096 == 0) {
@@ -328,7 +356,7 @@ Expected<std::vector<ProcessorOutput>> BodyComProcessor::run(const RunContext& c
                 return makeError(QStringLiteral("segment '%1': stream '%2' row %3 holds no valid quaternion")
                                      .arg(segmentName(static_cast<Segment>(s)), plan.model.sensor[s])
                                      .arg(k));
-            q[s] = sensor.normalized() * plan.mount[s];
+            q[s] = align[s] * sensor.normalized() * plan.mount[s];
         }
         const BodyCom::Pose pose = com.update(q);
         for (int i = 0; i < 3; ++i) main.at(k, i) = pose.com[i];
@@ -393,21 +421,26 @@ Expected<std::vector<ProcessorOutput>> BodyComProcessor::run(const RunContext& c
                 QStringLiteral("antenna stream '%1' has fewer than 2 fixes inside the orientation streams' "
                                "time span")
                     .arg(plan.model.position[antennaSegment]));
-        StreamData d(t.size(), 4);
+        StreamData d(t.size(), 7);
         d.t = t;
         const double half = 0.5 * plan.speedWindow;
         for (std::size_t r = 0, lo = 0, hi = 0; r < t.size(); ++r) {
             while (t[r] - t[lo] > half) ++lo;
             while (hi + 1 < t.size() && t[hi + 1] - t[r] <= half) ++hi;
-            for (int i = 0; i < 3; ++i) d.at(r, i) = p[r][i];
             const std::size_t a = std::min(lo, r == 0 ? 0 : r - 1), b = std::max(hi, std::min(r + 1, t.size() - 1));
-            d.at(r, 3) = t[b] > t[a] ? (p[b] - p[a]).norm() / (t[b] - t[a]) : kNaN;
+            const Vec3 v = t[b] > t[a] ? Vec3((p[b] - p[a]) / (t[b] - t[a])) : Vec3(Vec3::Constant(kNaN));
+            for (int i = 0; i < 3; ++i) {
+                d.at(r, i) = p[r][i];
+                d.at(r, 3 + i) = v[i];
+            }
+            d.at(r, 6) = v.norm();
         }
         attributes.insert(QStringLiteral("antenna"), plan.model.position[antennaSegment]);
         out.push_back(
-            {QStringLiteral("absolute"),
-             outputStream(QStringLiteral("centre-of-mass"), QStringLiteral("ENU"),
-                          columnsOf({"x", "y", "z", "speed"}, {"m", "m", "m", "m/s"}), std::move(d), attributes)});
+            {QStringLiteral("absolute"), outputStream(QStringLiteral("trajectory"), plan.antenna->info().frame,
+                                                      columnsOf({"x", "y", "z", "vx", "vy", "vz", "speed"},
+                                                                {"m", "m", "m", "m/s", "m/s", "m/s", "m/s"}),
+                                                      std::move(d), attributes)});
     }
     context.report(1.0);
     return out;

@@ -28,6 +28,15 @@ expect_ok "body-com" "$ATHLOS" run "$P" body-com \
 expect_ok "body-com (drift-reduction's vectors)" "$ATHLOS" run "$P" body-com \
   --input ski/body,ski/imu-right-mounts,ski/imu-left-mounts --output ski/com-dr --param vectors=attributes
 
+# Uncorrected 6D orientations: unrelated headings, aligned over the first 2 s of standing.
+raw="pelvis:ski/q,thorax:ski/q-sternum"
+for s in right-thigh right-shank right-foot left-thigh left-shank left-foot; do raw="$raw,$s:ski/q-$s"; done
+expect_ok "body-model (6D)" "$ATHLOS" run "$P" body-model --output ski/body-6d --param height=1.78 --param mass=75 \
+  --param sensors="$raw"
+expect_ok "body-com heading=align-start" "$ATHLOS" run "$P" body-com \
+  --input ski/body-6d,ski/imu-right-mounts,ski/imu-left-mounts,ski/imu-joint-vectors --output ski/com-6d \
+  --param heading=align-start
+
 expect_ok "export com" "$ATHLOS" export "$P" ski/com --to "$WORK/com.csv"
 expect_ok "export joints" "$ATHLOS" export "$P" ski/com-joints --to "$WORK/joints.csv"
 expect_ok "export q" "$ATHLOS" export "$P" ski/q --to "$WORK/q.csv"
@@ -36,8 +45,13 @@ expect_ok "export q" "$ATHLOS" export "$P" ski/q --to "$WORK/q.csv"
 head -1 "$WORK/joints.csv" | grep -q "right-knee_x" || fail "joint columns: $(head -1 "$WORK/joints.csv")"
 # Plausible everywhere: the CoM within 0.4 m of the lumbar joint centre, at most 0.25 m above it, and 0.5–1.2 m
 # above the ankles.
-awk -F, 'NR > 1 { r = sqrt($2*$2 + $3*$3 + $4*$4); if (r > 0.4 || $4 > 0.25 || $6 < 0.5 || $6 > 1.2) bad++ }
-         END { exit bad > 0 }' "$WORK/com.csv" || fail "implausible CoM rows in ski/com"
+plausible() {
+  awk -F, 'NR > 1 { r = sqrt($2*$2 + $3*$3 + $4*$4); if (r > 0.4 || $4 > 0.25 || $6 < 0.5 || $6 > 1.2) bad++ }
+           END { exit bad > 0 }' "$1"
+}
+plausible "$WORK/com.csv" || fail "implausible CoM rows in ski/com"
+expect_ok "export com-6d" "$ATHLOS" export "$P" ski/com-6d --to "$WORK/com-6d.csv"
+plausible "$WORK/com-6d.csv" || fail "implausible CoM rows in ski/com-6d (heading=align-start)"
 
 # Refusals: each names the culprit and leaves the file byte-identical.
 before=$(sha256sum "$P" | cut -d' ' -f1)
