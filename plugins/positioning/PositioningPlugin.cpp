@@ -2,11 +2,14 @@
 
 #include "plugins/positioning/PositionFilterProcessor.h"
 #include "plugins/positioning/SimulateTrackRunProcessor.h"
+#include "plugins/positioning/AnchorSmootherProcessor.h"
+#include "plugins/positioning/SimulateGatesProcessor.h"
 
 namespace athlos::positioning {
 
 std::vector<std::shared_ptr<const Processor>> PositioningPlugin::processors() const {
-    return {std::make_shared<PositionFilterProcessor>(), std::make_shared<SimulateTrackRunProcessor>()};
+    return {std::make_shared<PositionFilterProcessor>(), std::make_shared<SimulateTrackRunProcessor>(),
+            std::make_shared<AnchorSmootherProcessor>(), std::make_shared<SimulateGatesProcessor>()};
 }
 
 }  // namespace athlos::positioning
