@@ -310,7 +310,6 @@ Expected<AnchorSmoother::Result> AnchorSmoother::run(const Input& in, const std:
             rel.push_back(sacrumToMagnet(vel, c.distance, c.side, P.sacrumHeight));
             estimated.push_back(pos + rel.back());
         }
-        if (relative) result.inertialGates = estimated;
         matched = matchGates(estimated, in.gates, P.matchRadius, relative);
         anchors.clear();
         for (std::size_t m = 0; m < in.crossings.size(); ++m) {
@@ -327,6 +326,11 @@ Expected<AnchorSmoother::Result> AnchorSmoother::run(const Input& in, const std:
     };
 
     if (!smooth(1.0, estimation::kNoGate, 0)) return cancelledError();
+    for (const auto& c : in.crossings) {  // pass-0 gate estimates (GNSS-free averaging over runs, ch. 10)
+        Vec3 pos, vel;
+        stateAt(c.t, pos, vel);
+        result.inertialGates.push_back(pos + sacrumToMagnet(vel, c.distance, c.side, P.sacrumHeight));
+    }
     for (int pass = 1; pass <= passes; ++pass) {
         buildAnchors(pass == 1);
         if (anchors.empty()) return makeError(QStringLiteral("no detected crossing matches a gate"));

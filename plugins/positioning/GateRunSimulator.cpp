@@ -147,6 +147,7 @@ GateRunSimulator::Result GateRunSimulator::simulate(const Params& p) {
     }
 
     // Gates: the magnet on the inside of the turn, below the sacrum along the snow normal.
+    std::mt19937_64 courseRng(p.courseSeed != 0 ? p.courseSeed : p.seed + 0x9e3779b97f4a7c15ULL);
     const Vec3 snowNormal = (std::sin(p.slope) * c.forward + std::cos(p.slope) * Vec3::UnitZ()).normalized();
     for (int gi = 0; gi < nGates; ++gi) {
         const double ug = c.gateU(gi);
@@ -155,8 +156,8 @@ GateRunSimulator::Result GateRunSimulator::simulate(const Params& p) {
         const Vec3 tangent = d1.normalized();
         Vec3 inward = d2 - d2.dot(tangent) * tangent;
         inward = (inward - inward.dot(snowNormal) * snowNormal).normalized();
-        const double lateral = p.lateralMin + (p.lateralMax - p.lateralMin) * uniform(rng);
-        const double height = p.heightMin + (p.heightMax - p.heightMin) * uniform(rng);
+        const double lateral = p.lateralMin + (p.lateralMax - p.lateralMin) * uniform(courseRng);
+        const double height = p.heightMin + (p.heightMax - p.heightMin) * uniform(courseRng);
         r.gates.push_back({QStringLiteral("G%1").arg(gi + 1, 2, 10, QLatin1Char('0')),
                            pos + lateral * inward - height * snowNormal});
         // Truth crossing: the IMU sample of closest approach, refined on the path.

@@ -29,6 +29,7 @@ class GateRunSimulator {
 public:
     struct Params {
         std::uint64_t seed = 1;
+        std::uint64_t courseSeed = 0;  // ≠ 0: the gates' magnet offsets from this seed (several runs, one course)
         int gates = 24;
         double gateSpacing = 26.0;         // m along the fall line between turns
         double spacingJitter = 0.25;       // rad of phase wobble (varies the gate distances)

@@ -4,12 +4,14 @@
 #include "plugins/positioning/SimulateTrackRunProcessor.h"
 #include "plugins/positioning/AnchorSmootherProcessor.h"
 #include "plugins/positioning/SimulateGatesProcessor.h"
+#include "plugins/positioning/AnchorGateAverageProcessor.h"
 
 namespace athlos::positioning {
 
 std::vector<std::shared_ptr<const Processor>> PositioningPlugin::processors() const {
     return {std::make_shared<PositionFilterProcessor>(), std::make_shared<SimulateTrackRunProcessor>(),
-            std::make_shared<AnchorSmootherProcessor>(), std::make_shared<SimulateGatesProcessor>()};
+            std::make_shared<AnchorSmootherProcessor>(), std::make_shared<SimulateGatesProcessor>(),
+            std::make_shared<AnchorGateAverageProcessor>()};
 }
 
 }  // namespace athlos::positioning

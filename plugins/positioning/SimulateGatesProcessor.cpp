@@ -28,6 +28,9 @@ ParameterSpecs SimulateGatesProcessor::parameters() const {
     using PS = ParameterSpec;
     return {
         PS::integer(QStringLiteral("seed"), 1, 0, std::numeric_limits<int>::max(), tr("Random seed (deterministic).")),
+        PS::integer(QStringLiteral("course_seed"), 0, 0, std::numeric_limits<int>::max(),
+                    tr("Seed of the gates' magnet offsets; the same value gives the same course for several runs (0: "
+                       "from seed).")),
         PS::integer(QStringLiteral("gates"), d.gates, 2, 200, tr("Number of gates (one turn each).")),
         PS::number(QStringLiteral("gate_spacing"), d.gateSpacing, 10.0, 100.0, QStringLiteral("m"),
                    tr("Distance between turns along the fall line (thesis course: 21.8-27.8 m between gates).")),
@@ -57,6 +60,7 @@ QList<OutputSpec> SimulateGatesProcessor::outputs() const {
 Expected<std::vector<ProcessorOutput>> SimulateGatesProcessor::run(const RunContext& c) const {
     GateRunSimulator::Params p;
     p.seed = static_cast<std::uint64_t>(c.integer(QStringLiteral("seed")));
+    p.courseSeed = static_cast<std::uint64_t>(c.integer(QStringLiteral("course_seed")));
     p.gates = c.integer(QStringLiteral("gates"));
     p.gateSpacing = c.number(QStringLiteral("gate_spacing"));
     p.amplitude = c.number(QStringLiteral("amplitude"));

@@ -38,6 +38,18 @@ awk -v a="$rmse" 'BEGIN { exit !(a + 0 <= 0.25) }' || fail "position RMSE $rmse 
 awk -v a="$sd" 'BEGIN { exit !(a + 0 <= 0.2) }' || fail "speed error SD $sd m/s > 0.2 m/s"
 awk -v a="$rmse" -v b="$rmse_free" 'BEGIN { exit !(b + 0 > 5 * a) }' || fail "without anchors ($rmse_free m) not much worse than with ($rmse m)"
 
+# GNSS-free gates (ch. 10): three runs on one course, ZUPT-only gate estimates averaged, then a run
+# smoothed against the averaged gates (their frame is the runs' mean frame, not the survey's).
+for r in 1 2 3; do
+  expect_ok "simulate course run $r" "$ATHLOS" run "$P" simulate-gates --output "c$r/imu" --param seed=$((20 + r)) --param course_seed=5
+  expect_ok "orientation run $r" "$ATHLOS" run "$P" orientation --input "c$r/imu" --output "c$r/q"
+  expect_ok "zupt-only run $r" "$ATHLOS" run "$P" anchor-smoother --input "c$r/imu,c$r/q,c$r/imu-gates" --output "c$r/free" --param passes=0
+done
+expect_ok "gate average" "$ATHLOS" run "$P" anchor-gate-average --input c1/free-crossings,c2/free-crossings,c3/free-crossings --output course/gates
+expect_ok "smooth on averaged gates" "$ATHLOS" run "$P" anchor-smoother --input c1/imu,c1/q,course/gates --output c1/anchored
+expect_ok "info" "$ATHLOS" info "$P"
+grep -q "course/gates .* 24 rows" "$WORK/out" || fail "averaged gates table does not have 24 rows"
+
 # Refusals: one-line reasons, nothing stored, the file byte-identical.
 before=$(sha256sum "$P" | cut -d' ' -f1)
 expect_fail "no gates" "recording 'gs'.*no gate crossing found.*threshold 40" \
@@ -60,5 +72,7 @@ qbefore=$(sha256sum "$Q" | cut -d' ' -f1)
 expect_fail "no magnetometer" "input 'r/imu'.*mag_x" \
   "$ATHLOS" run "$Q" anchor-smoother --input r/imu,r/q,s/imu-gates --output r/none
 [ "$(sha256sum "$Q" | cut -d' ' -f1)" = "$qbefore" ] || fail "a refused run changed the second project"
+expect_fail "average of one run" "run2" \
+  "$ATHLOS" run "$P" anchor-gate-average --input c1/free-crossings --output course/one
 [ "$(sha256sum "$P" | cut -d' ' -f1)" = "$before" ] || fail "a refused run changed the project"
 finish

@@ -2,6 +2,9 @@
 
 #include "core/math/Angles.h"
 #include "plugins/inertial/OrientationEstimation.h"
+#include "plugins/positioning/GateAveraging.h"
+
+#include <complex>
 
 #include <cmath>
 
@@ -9,8 +12,9 @@ namespace athlos::positioning {
 
 using math::Vec3;
 
-Expected<AnchorScore> evaluateAnchorRun(const AnchorEvalOptions& o) {
-    const auto sim = GateRunSimulator::simulate(o.simulation);
+namespace {
+
+std::vector<math::Quat> vqfOrientation(const GateRunSimulator::Result& sim, const AnchorEvalOptions& o) {
     const std::size_t n = sim.t.size();
 
     std::vector<double> gyr(3 * n), acc(3 * n), mag(3 * n);
@@ -26,14 +30,71 @@ Expected<AnchorScore> evaluateAnchorRun(const AnchorEvalOptions& o) {
     orientationOptions.offline = o.offlineOrientation;
     orientationOptions.filter.tauAcc = o.tauAcc;
     auto orientation = inertial::estimateOrientation(orientationOptions, batch, 1.0 / o.simulation.imuRate);
-    if (o.truthOrientation) orientation.track.q = sim.orientation;
+    return o.truthOrientation ? sim.orientation : orientation.track.q;
+}
+
+// Horizontal errors of estimated gates after the similarity that maps their first and last onto the truth's.
+std::vector<double> alignedErrors(const std::vector<Vec3>& est, const std::vector<Gate>& truth) {
+    using C = std::complex<double>;
+    const C f(est.front().x(), est.front().y()), l(est.back().x(), est.back().y());
+    const C F(truth.front().position.x(), truth.front().position.y()),
+        L(truth.back().position.x(), truth.back().position.y());
+    const C a = (L - F) / (l - f);
+    std::vector<double> e;
+    for (std::size_t m = 0; m < est.size(); ++m)
+        e.push_back(std::abs(F + a * (C(est[m].x(), est[m].y()) - f) - C(truth[m].position.x(), truth[m].position.y())));
+    return e;
+}
+
+}  // namespace
+
+Expected<GateAverageScore> evaluateGateAveraging(AnchorEvalOptions o, int runs, std::uint64_t seed0) {
+    o.simulation.courseSeed = 1000 + seed0;
+    o.pipeline.smoother.passes = 0;
+    std::vector<std::vector<Vec3>> estimates;
+    std::vector<Gate> truth;
+    GateAverageScore score;
+    for (int r = 0; r < runs; ++r) {
+        o.simulation.seed = seed0 + std::uint64_t(r);
+        const auto sim = GateRunSimulator::simulate(o.simulation);
+        AnchorPipelineInput in;
+        in.t = sim.t;
+        in.acc = sim.acc;
+        in.gyr = sim.gyr;
+        in.mag = sim.mag;
+        in.orientation = vqfOrientation(sim, o);
+        in.gates = sim.gates;
+        auto run = runAnchorPipeline(in, o.pipeline);
+        if (!run) return run.error();
+        if (run->smoothed.inertialGates.size() != sim.gates.size())
+            return makeError(QStringLiteral("run %1: %2 crossings for %3 gates").arg(r + 1).arg(run->smoothed.inertialGates.size()).arg(sim.gates.size()));
+        estimates.push_back(run->smoothed.inertialGates);
+        truth = sim.gates;
+        double sum = 0.0;
+        for (double e : alignedErrors(estimates.back(), truth)) sum += e;
+        score.singleMean += sum / double(truth.size()) / runs;
+    }
+    auto mean = GateAveraging::average(estimates);
+    if (!mean) return mean.error();
+    const auto errors = alignedErrors(*mean, truth);
+    for (double e : errors) {
+        score.averagedMean += e / double(errors.size());
+        score.averagedMax = std::max(score.averagedMax, e);
+    }
+    return score;
+}
+
+Expected<AnchorScore> evaluateAnchorRun(const AnchorEvalOptions& o) {
+    const auto sim = GateRunSimulator::simulate(o.simulation);
+    const std::size_t n = sim.t.size();
+    const std::vector<math::Quat> orientation = vqfOrientation(sim, o);
 
     AnchorPipelineInput in;
     in.t = sim.t;
     in.acc = sim.acc;
     in.gyr = sim.gyr;
     in.mag = sim.mag;
-    in.orientation = orientation.track.q;
+    in.orientation = orientation;
     for (std::size_t g = 0; g < sim.gates.size(); g += std::size_t(std::max(1, o.keepEveryGate)))
         in.gates.push_back(sim.gates[g]);
     if (o.giveStart) in.start = sim.position.front();

@@ -32,4 +32,14 @@ struct AnchorScore {
 
 Expected<AnchorScore> evaluateAnchorRun(const AnchorEvalOptions& options);
 
+// GNSS-free gates (ch. 10): `runs` simulated runs on one course (seeds seed0 … seed0 + runs − 1),
+// ZUPT-only gate estimates averaged by GateAveraging; errors after a similarity that puts the first
+// and last gates on the truth (the thesis aligned azimuth and the first gate).
+struct GateAverageScore {
+    double singleMean = 0.0;    // m, mean horizontal gate error of one run (mean over runs)
+    double averagedMean = 0.0;  // m, of the averaged gates
+    double averagedMax = 0.0;   // m
+};
+Expected<GateAverageScore> evaluateGateAveraging(AnchorEvalOptions options, int runs, std::uint64_t seed0);
+
 }  // namespace athlos::positioning

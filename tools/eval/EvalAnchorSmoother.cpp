@@ -86,5 +86,17 @@ int main(int argc, char** argv) {
         if (ok > 0)
             std::printf("%-10s mean %8.3f %9.3f %9.3f\n", c.name, p / ok, m / ok, s / ok);
     }
+    // GNSS-free gates (thesis ch. 10): 5 runs per course, one course per seed.
+    std::printf("\ngnss-free gates (5 runs per course): horizontal gate error after aligning first/last gate\n");
+    std::printf("%4s %12s %14s %13s\n", "seed", "single_mean", "averaged_mean", "averaged_max");
+    for (int seed = 1; seed <= seeds; ++seed) {
+        const auto g = evaluateGateAveraging(base, 5, std::uint64_t(100 * seed));
+        if (!g) {
+            std::printf("%4d failed: %s\n", seed, qUtf8Printable(g.error().message));
+            ++failures;
+            continue;
+        }
+        std::printf("%4d %12.3f %14.3f %13.3f\n", seed, g->singleMean, g->averagedMean, g->averagedMax);
+    }
     return failures > 0 ? 1 : 0;
 }

@@ -3,12 +3,15 @@
 // 0.238 m, speed −0.004 ± 0.204 m/s vs dGNSS; judged: RMSE ≤ 0.25 m, speed SD ≤ 0.2 m/s).
 #include "plugins/positioning/AnchorSmoother.h"
 #include "core/math/Angles.h"
+#include "plugins/positioning/GateAveraging.h"
 #include "plugins/positioning/GateDetector.h"
 #include "plugins/positioning/RestAlignedStrapdown.h"
 #include "tools/eval/AnchorEvaluation.h"
 
 #include <cmath>
+#include <complex>
 #include <gtest/gtest.h>
+#include <random>
 
 using namespace athlos;
 using namespace athlos::positioning;
@@ -133,4 +136,52 @@ TEST(AnchorSmootherValidation, FewerAnchorsGiveLargerErrorsButStillWork) {
     ASSERT_TRUE(all.ok() && third.ok());
     EXPECT_LT(third->positionRmse, 0.5);
     EXPECT_GT(third->positionRmse, all->positionRmse);
+}
+
+TEST(GateAveraging, RunToRunDriftPartlyCancels) {
+    // 20 true gates; 6 runs whose estimates drift by independent random walks (σ 0.5 m per gate) in
+    // frames rotated, scaled and shifted: the averaged gates (aligned on first/last) beat one run.
+    std::vector<Vec3> truth;
+    for (int m = 0; m < 20; ++m) truth.push_back(Vec3(27.0 * m, m % 2 ? 5.0 : -5.0, -8.0 * m));
+    std::mt19937_64 rng(7);
+    std::normal_distribution<double> normal(0.0, 0.5);
+    std::vector<std::vector<Vec3>> runs;
+    double single = 0.0;
+    auto errorAligned = [&](const std::vector<Vec3>& est) {
+        // Horizontal error after mapping the first/last estimate onto the truth's (as the averaging does).
+        using C = std::complex<double>;
+        const C f(est.front().x(), est.front().y()), l(est.back().x(), est.back().y());
+        const C F(truth.front().x(), truth.front().y()), L(truth.back().x(), truth.back().y());
+        const C a = (L - F) / (l - f);
+        double sum = 0.0;
+        for (std::size_t m = 0; m < est.size(); ++m)
+            sum += std::abs(F + a * (C(est[m].x(), est[m].y()) - f) - C(truth[m].x(), truth[m].y()));
+        return sum / double(est.size());
+    };
+    for (int r = 0; r < 6; ++r) {
+        const double angle = 0.05 * (r - 2), scale = 1.0 + 0.01 * (r - 3);
+        const Eigen::Matrix3d R = Eigen::AngleAxisd(angle, Vec3::UnitZ()).toRotationMatrix();
+        Vec3 drift = Vec3::Zero();
+        std::vector<Vec3> est;
+        for (const Vec3& g : truth) {
+            drift += Vec3(normal(rng), normal(rng), 0.2 * normal(rng));
+            est.push_back(scale * (R * (g + drift)) + Vec3(3.0 * r, -2.0 * r, 1.0));
+        }
+        single += errorAligned(est) / 6.0;
+        runs.push_back(est);
+    }
+    const auto mean = GateAveraging::average(runs);
+    ASSERT_TRUE(mean.ok()) << mean.message().toStdString();
+    ASSERT_EQ(mean->size(), truth.size());
+    EXPECT_LT(errorAligned(*mean), 0.6 * single);
+    // Runs of different lengths cannot be paired.
+    runs[2].pop_back();
+    EXPECT_FALSE(GateAveraging::average(runs).ok());
+}
+
+TEST(AnchorSmootherValidation, GnssFreeGatesFromFiveRuns) {
+    AnchorEvalOptions o;
+    const auto score = evaluateGateAveraging(o, 5, 100);
+    ASSERT_TRUE(score.ok()) << score.message().toStdString();
+    EXPECT_LT(score->averagedMean, score->singleMean);
 }
