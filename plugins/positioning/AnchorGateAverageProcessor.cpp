@@ -24,7 +24,10 @@ QString AnchorGateAverageProcessor::description() const {
 QList<InputSpec> AnchorGateAverageProcessor::inputs() const {
     QList<InputSpec> specs;
     for (int r = 1; r <= kRuns; ++r)
-        specs.append(InputSpec{QStringLiteral("run%1").arg(r), {QStringLiteral("gate-crossings")}, true, r > 2,
+        specs.append(InputSpec{QStringLiteral("run%1").arg(r),
+                               {QStringLiteral("gate-crossings")},
+                               true,
+                               r > 2,
                                tr("Crossings table of an anchor-smoother run.")});
     return specs;
 }
@@ -38,16 +41,19 @@ Expected<std::vector<ProcessorOutput>> AnchorGateAverageProcessor::run(const Run
     for (int r = 0; r < c.inputCount(); ++r) {
         const Table* table = c.table(r);
         if (!table) continue;
-        const TableColumn* cols[3] = {table->column(QStringLiteral("est_east")), table->column(QStringLiteral("est_north")),
+        const TableColumn* cols[3] = {table->column(QStringLiteral("est_east")),
+                                      table->column(QStringLiteral("est_north")),
                                       table->column(QStringLiteral("est_up"))};
         if (!cols[0] || !cols[1] || !cols[2] || cols[0]->isText || cols[1]->isText || cols[2]->isText)
-            return c.inputError(r, QStringLiteral("needs numeric columns est_east, est_north, est_up (an anchor-smoother "
-                                                  "crossings table)"));
+            return c.inputError(r,
+                                QStringLiteral("needs numeric columns est_east, est_north, est_up (an anchor-smoother "
+                                               "crossings table)"));
         std::vector<math::Vec3> gates;
         for (long long m = 0; m < table->rows(); ++m) {
             const math::Vec3 g(cols[0]->numbers[std::size_t(m)], cols[1]->numbers[std::size_t(m)],
                                cols[2]->numbers[std::size_t(m)]);
-            if (!g.allFinite()) return c.inputError(r, QStringLiteral("row %1: the gate estimate is not finite").arg(m + 1));
+            if (!g.allFinite())
+                return c.inputError(r, QStringLiteral("row %1: the gate estimate is not finite").arg(m + 1));
             gates.push_back(g);
         }
         runs.push_back(std::move(gates));

@@ -30,7 +30,7 @@ struct AnchorPipelineInput {
 
 struct AnchorPipelineResult {
     std::vector<GateCrossing> crossings;
-    std::vector<double> anomaly;  // e(t) per input sample (ambient units)
+    std::vector<double> anomaly;          // e(t) per input sample (ambient units)
     std::vector<math::Quat> orientation;  // the orientation used (after RestAlignedStrapdown)
     AnchorSmoother::Result smoothed;
 };

@@ -34,8 +34,8 @@ struct AnchorModel : estimation::ModelDefaults<16, 3> {
     Mode mode = Mode::Acceleration;
     Mat3 R = Mat3::Identity();
     double delta = 0.0;
-    double jerkPsd = 1.0;        // m²/s⁵
-    double offsetWalk = 0.0;     // (m/s²)²/s
+    double jerkPsd = 1.0;     // m²/s⁵
+    double offsetWalk = 0.0;  // (m/s²)²/s
     double anchorOffsetWalk = 1e-8, azimuthWalk = 1e-10;
 
     StateVector predict(const StateVector& x, double T, double, StateMatrix* jacobian) const {
@@ -65,8 +65,10 @@ struct AnchorModel : estimation::ModelDefaults<16, 3> {
     }
     Measurement measure(const StateVector& x, double) const {
         switch (mode) {
-            case Mode::Acceleration: return x.segment<3>(kA) + x.segment<3>(kB);
-            case Mode::Zupt: return x.segment<3>(kV);
+            case Mode::Acceleration:
+                return x.segment<3>(kA) + x.segment<3>(kB);
+            case Mode::Zupt:
+                return x.segment<3>(kV);
             case Mode::Anchor:
                 return rotZ(x(kPsi)) * (x.segment<3>(kP) + delta * x.segment<3>(kV)) + x.segment<3>(kO);
         }
@@ -79,7 +81,9 @@ struct AnchorModel : estimation::ModelDefaults<16, 3> {
                 H.block<3, 3>(0, kA) = Mat3::Identity();
                 H.block<3, 3>(0, kB) = Mat3::Identity();
                 break;
-            case Mode::Zupt: H.block<3, 3>(0, kV) = Mat3::Identity(); break;
+            case Mode::Zupt:
+                H.block<3, 3>(0, kV) = Mat3::Identity();
+                break;
             case Mode::Anchor: {
                 const Mat3 Rz = rotZ(x(kPsi));
                 H.block<3, 3>(0, kP) = Rz;
@@ -168,8 +172,8 @@ std::vector<unsigned char> AnchorSmoother::startFinishStill(const std::vector<do
     return still;
 }
 
-std::vector<int> AnchorSmoother::matchGates(const std::vector<Vec3>& est, const std::vector<Gate>& gates,
-                                            double radius, bool relative) {
+std::vector<int> AnchorSmoother::matchGates(const std::vector<Vec3>& est, const std::vector<Gate>& gates, double radius,
+                                            bool relative) {
     const int M = int(est.size()), N = int(gates.size());
     constexpr int kLookAhead = 4;
     std::vector<int> best(M, -1);
@@ -217,7 +221,8 @@ std::vector<int> AnchorSmoother::matchGates(const std::vector<Vec3>& est, const 
     return best;
 }
 
-Expected<AnchorSmoother::Result> AnchorSmoother::run(const Input& in, const std::function<bool(double)>& keepGoing) const {
+Expected<AnchorSmoother::Result> AnchorSmoother::run(const Input& in,
+                                                     const std::function<bool(double)>& keepGoing) const {
     const Params& P = params_;
     if (in.t.size() < 10 || in.acc.size() != in.t.size() || in.still.size() != in.t.size())
         return makeError(QStringLiteral("too few samples for the anchor smoother"));
@@ -322,7 +327,8 @@ Expected<AnchorSmoother::Result> AnchorSmoother::run(const Input& in, const std:
             a.gate = matched[m];
             anchors.push_back(a);
         }
-        std::stable_sort(anchors.begin(), anchors.end(), [](const Anchor& a, const Anchor& b) { return a.node < b.node; });
+        std::stable_sort(anchors.begin(), anchors.end(),
+                         [](const Anchor& a, const Anchor& b) { return a.node < b.node; });
     };
 
     if (!smooth(1.0, estimation::kNoGate, 0)) return cancelledError();

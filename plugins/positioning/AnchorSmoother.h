@@ -31,25 +31,25 @@ namespace athlos::positioning {
 class AnchorSmoother {
 public:
     struct Params {
-        double rate = 100.0;             // Hz, smoother grid (the IMU is block-averaged onto it)
-        double accSigma = 1.5;           // m/s², acceleration accuracy (thesis §9.2.2: 1.5 m/s²)
-        double jerkBase = 20.0;          // m/s³, jerk noise floor of the constant-acceleration model
-        double accOffsetSigma = 0.3;     // m/s², prior of b
-        double accOffsetWalk = 0.15;     // m/s² per √s, random walk of b
-        double azimuthSigma = 0.2;       // rad, prior of ψ (the orientation stream's heading error)
-        double zuptSigma = 0.01;         // m/s
-        double anchorSigma1 = 1.0;       // m, pass 1 (thesis)
-        double anchorSigma2 = 0.2;       // m, pass 2 (thesis)
-        double sacrumHeight = 0.5;       // m, |d_m|: sacrum above the snow at a gate
-        double matchRadius = 8.0;        // m, largest distance of a crossing from its expected gate
-        double lowPass = 5.0;            // Hz (thesis: 2nd-order Butterworth, 5 Hz); 0 = none
-        int passes = 2;                  // anchor passes (0: ZUPT-only integration, for comparison)
-        double startSigma = 0.05;        // m, when the start position is given
+        double rate = 100.0;          // Hz, smoother grid (the IMU is block-averaged onto it)
+        double accSigma = 1.5;        // m/s², acceleration accuracy (thesis §9.2.2: 1.5 m/s²)
+        double jerkBase = 20.0;       // m/s³, jerk noise floor of the constant-acceleration model
+        double accOffsetSigma = 0.3;  // m/s², prior of b
+        double accOffsetWalk = 0.15;  // m/s² per √s, random walk of b
+        double azimuthSigma = 0.2;    // rad, prior of ψ (the orientation stream's heading error)
+        double zuptSigma = 0.01;      // m/s
+        double anchorSigma1 = 1.0;    // m, pass 1 (thesis)
+        double anchorSigma2 = 0.2;    // m, pass 2 (thesis)
+        double sacrumHeight = 0.5;    // m, |d_m|: sacrum above the snow at a gate
+        double matchRadius = 8.0;     // m, largest distance of a crossing from its expected gate
+        double lowPass = 5.0;         // Hz (thesis: 2nd-order Butterworth, 5 Hz); 0 = none
+        int passes = 2;               // anchor passes (0: ZUPT-only integration, for comparison)
+        double startSigma = 0.05;     // m, when the start position is given
     };
 
     struct Input {
-        std::vector<double> t;           // s
-        std::vector<math::Vec3> acc;     // gravity-free acceleration, earth frame of the orientation (m/s²)
+        std::vector<double> t;             // s
+        std::vector<math::Vec3> acc;       // gravity-free acceleration, earth frame of the orientation (m/s²)
         std::vector<unsigned char> still;  // 1 = standing (ZUPT)
         std::vector<GateCrossing> crossings;
         std::vector<Gate> gates;
@@ -58,7 +58,7 @@ public:
 
     struct Match {
         int crossing = -1, gate = -1;
-        math::Vec3 anchor;   // g_n − r_m (G frame)
+        math::Vec3 anchor;      // g_n − r_m (G frame)
         double residual = 0.0;  // m, |anchor − smoothed position| after the last pass
     };
 

@@ -17,7 +17,8 @@ const double kInf = std::numeric_limits<double>::infinity();
 
 int triple(const StreamInfo& info, const QString& prefix) {
     for (int i = 0; i + 2 < int(info.columns.size()); ++i)
-        if (info.columns[i].name == prefix + QLatin1Char('x') && info.columns[i + 1].name == prefix + QLatin1Char('y') &&
+        if (info.columns[i].name == prefix + QLatin1Char('x') &&
+            info.columns[i + 1].name == prefix + QLatin1Char('y') &&
             info.columns[i + 2].name == prefix + QLatin1Char('z'))
             return i;
     return -1;
@@ -43,8 +44,9 @@ Expected<Plan> makePlan(const RunContext& c) {
               mag = triple(imu->info(), QStringLiteral("mag_"));
     if (acc < 0 || gyr < 0) return imu->error(QStringLiteral("needs columns acc_x..acc_z and gyr_x..gyr_z"));
     if (mag < 0)
-        return imu->error(QStringLiteral("no magnetometer columns mag_x..mag_z: the gates are found from the field of "
-                                         "their magnets"));
+        return imu->error(
+            QStringLiteral("no magnetometer columns mag_x..mag_z: the gates are found from the field of "
+                           "their magnets"));
     const auto& info = orientation->info();
     int qw = -1;
     for (int i = 0; i + 3 < int(info.columns.size()); ++i)
@@ -79,7 +81,8 @@ Expected<Plan> makePlan(const RunContext& c) {
         if (!in.acc[k].allFinite() || !in.gyr[k].allFinite() || !in.mag[k].allFinite())
             return imu->error(QStringLiteral("sample %1 (t = %2 s) is not finite").arg(k + 1).arg(d.t[k]));
         if (!in.orientation[k].coeffs().allFinite() || in.orientation[k].norm() < 0.5)
-            return orientation->error(QStringLiteral("sample %1 (t = %2 s) is not a unit quaternion").arg(k + 1).arg(q.t[k]));
+            return orientation->error(
+                QStringLiteral("sample %1 (t = %2 s) is not a unit quaternion").arg(k + 1).arg(q.t[k]));
     }
     in.gates = std::move(*gates);
 
@@ -181,11 +184,16 @@ ParameterSpecs AnchorSmootherProcessor::parameters() const {
 }
 
 QList<InputSpec> AnchorSmootherProcessor::inputs() const {
-    return {InputSpec{QStringLiteral("imu"), {QStringLiteral("imu")}, false, false,
-                      tr("Sacrum IMU with acc, gyr and mag.")},
-            InputSpec{QStringLiteral("orientation"), {QStringLiteral("orientation")}, false, false,
-                      tr("Its orientation (processor orientation), one row per IMU sample.")},
-            InputSpec{QStringLiteral("gates"), {}, true, false, tr("Gates table: id, east, north, up (m), in course order.")}};
+    return {
+        InputSpec{
+            QStringLiteral("imu"), {QStringLiteral("imu")}, false, false, tr("Sacrum IMU with acc, gyr and mag.")},
+        InputSpec{QStringLiteral("orientation"),
+                  {QStringLiteral("orientation")},
+                  false,
+                  false,
+                  tr("Its orientation (processor orientation), one row per IMU sample.")},
+        InputSpec{
+            QStringLiteral("gates"), {}, true, false, tr("Gates table: id, east, north, up (m), in course order.")}};
 }
 
 QList<OutputSpec> AnchorSmootherProcessor::outputs() const {
@@ -221,15 +229,16 @@ Expected<std::vector<ProcessorOutput>> AnchorSmootherProcessor::run(const RunCon
     }
     for (double v : data.values)
         if (!std::isfinite(v))
-            return makeError(QStringLiteral("recording '%1': the smoother diverged (non-finite trajectory)").arg(plan->recording));
+            return makeError(
+                QStringLiteral("recording '%1': the smoother diverged (non-finite trajectory)").arg(plan->recording));
     const QJsonObject attributes{{QStringLiteral("gates_detected"), int(result->crossings.size())},
                                  {QStringLiteral("gates_matched"), int(r.matches.size())},
                                  {QStringLiteral("gates_surveyed"), int(plan->input.gates.size())},
                                  {QStringLiteral("azimuth_offset"), r.azimuthOffset}};
-    Stream trajectory = outputStream(QStringLiteral("trajectory"), QStringLiteral("ENU"),
-                                     columnsOf({"x", "y", "z", "vx", "vy", "vz", "speed"},
-                                               {"m", "m", "m", "m/s", "m/s", "m/s", "m/s"}),
-                                     std::move(data), attributes);
+    Stream trajectory =
+        outputStream(QStringLiteral("trajectory"), QStringLiteral("ENU"),
+                     columnsOf({"x", "y", "z", "vx", "vy", "vz", "speed"}, {"m", "m", "m", "m/s", "m/s", "m/s", "m/s"}),
+                     std::move(data), attributes);
 
     Table crossings;
     crossings.kind = QStringLiteral("gate-crossings");
@@ -255,8 +264,9 @@ Expected<std::vector<ProcessorOutput>> AnchorSmootherProcessor::run(const RunCon
             }
         gate.texts << id;
         residual.numbers.push_back(res);
-        const math::Vec3 g = m < r.inertialGates.size() ? r.inertialGates[m]
-                                                          : math::Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+        const math::Vec3 g = m < r.inertialGates.size()
+                                 ? r.inertialGates[m]
+                                 : math::Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
         ge.numbers.push_back(g.x());
         gn.numbers.push_back(g.y());
         gu.numbers.push_back(g.z());

@@ -27,7 +27,8 @@ struct Course {
         return std::numbers::pi * s + jitter * std::sin(2.0 * std::numbers::pi * s / 5.3);
     }
     double ramp(double u) const {
-        return smoothstep(rampInEnd - spacing, rampInEnd, u) * (1.0 - smoothstep(rampOutBegin, rampOutBegin + spacing, u));
+        return smoothstep(rampInEnd - spacing, rampInEnd, u) *
+               (1.0 - smoothstep(rampOutBegin, rampOutBegin + spacing, u));
     }
     Vec3 position(double u) const {
         const double phi = phase(u), r = ramp(u);
@@ -96,7 +97,8 @@ GateRunSimulator::Result GateRunSimulator::simulate(const Params& p) {
     auto speedRate = [&](double uu, double vv, double tt) {
         if (tt < p.restStart || stopTime >= 0.0) return 0.0;
         if (uu >= finishU) return vv > 0.0 ? -p.brake : 0.0;
-        const double target = p.meanSpeed + p.speedAmplitude * std::sin(2.0 * std::numbers::pi * uu / 300.0 + speedPhase);
+        const double target =
+            p.meanSpeed + p.speedAmplitude * std::sin(2.0 * std::numbers::pi * uu / 300.0 + speedPhase);
         return std::min((target - vv) / p.accelTime, 5.0);
     };
     for (int k = 0;; ++k) {
@@ -158,8 +160,8 @@ GateRunSimulator::Result GateRunSimulator::simulate(const Params& p) {
         inward = (inward - inward.dot(snowNormal) * snowNormal).normalized();
         const double lateral = p.lateralMin + (p.lateralMax - p.lateralMin) * uniform(courseRng);
         const double height = p.heightMin + (p.heightMax - p.heightMin) * uniform(courseRng);
-        r.gates.push_back({QStringLiteral("G%1").arg(gi + 1, 2, 10, QLatin1Char('0')),
-                           pos + lateral * inward - height * snowNormal});
+        r.gates.push_back(
+            {QStringLiteral("G%1").arg(gi + 1, 2, 10, QLatin1Char('0')), pos + lateral * inward - height * snowNormal});
         // Truth crossing: the IMU sample of closest approach, refined on the path.
         double best = 1e300, bestT = 0.0;
         for (std::size_t k = 0; k < n; ++k) {

@@ -8,26 +8,30 @@ namespace athlos::positioning {
 Expected<std::vector<Gate>> gatesFromTable(const Table& table, const QString& path) {
     const TableColumn* id = table.column(QStringLiteral("id"));
     if (!id || !id->isText)
-        return makeError(QStringLiteral("gates table '%1': needs a text column 'id' and numeric columns east, north, up (m)")
-                             .arg(path));
+        return makeError(
+            QStringLiteral("gates table '%1': needs a text column 'id' and numeric columns east, north, up (m)")
+                .arg(path));
     const TableColumn* axes[3] = {table.column(QStringLiteral("east")), table.column(QStringLiteral("north")),
                                   table.column(QStringLiteral("up"))};
     const char* names[3] = {"east", "north", "up"};
     for (int i = 0; i < 3; ++i) {
-        if (!axes[i]) return makeError(QStringLiteral("gates table '%1': no column '%2'").arg(path, QLatin1String(names[i])));
+        if (!axes[i])
+            return makeError(QStringLiteral("gates table '%1': no column '%2'").arg(path, QLatin1String(names[i])));
         if (axes[i]->isText)
             return makeError(
                 QStringLiteral("gates table '%1': column '%2' must be numeric (m)").arg(path, QLatin1String(names[i])));
     }
     const long long rows = table.rows();
-    if (rows < 2) return makeError(QStringLiteral("gates table '%1': needs at least two gates, has %2").arg(path).arg(rows));
+    if (rows < 2)
+        return makeError(QStringLiteral("gates table '%1': needs at least two gates, has %2").arg(path).arg(rows));
     std::vector<Gate> gates;
     QSet<QString> seen;
     for (long long r = 0; r < rows; ++r) {
         const QString gid = id->texts.value(int(r)).trimmed();
         if (gid.isEmpty()) return makeError(QStringLiteral("gates table '%1': row %2: empty id").arg(path).arg(r + 1));
         if (seen.contains(gid))
-            return makeError(QStringLiteral("gates table '%1': row %2: id '%3' appears twice").arg(path).arg(r + 1).arg(gid));
+            return makeError(
+                QStringLiteral("gates table '%1': row %2: id '%3' appears twice").arg(path).arg(r + 1).arg(gid));
         seen.insert(gid);
         math::Vec3 p;
         for (int i = 0; i < 3; ++i) {

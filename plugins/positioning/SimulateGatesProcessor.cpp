@@ -92,18 +92,19 @@ Expected<std::vector<ProcessorOutput>> SimulateGatesProcessor::run(const RunCont
         truth.at(k, 6) = sim.velocity[k].norm();
     }
     const QJsonObject simulated{{QStringLiteral("simulated"), true}, {QStringLiteral("sampling_rate"), p.imuRate}};
-    Stream imuStream = outputStream(
-        QStringLiteral("imu"), QStringLiteral("sensor"),
-        columnsOf({"acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z", "mag_x", "mag_y", "mag_z"},
-                  {"m/s^2", "m/s^2", "m/s^2", "rad/s", "rad/s", "rad/s", "uT", "uT", "uT"}),
-        std::move(imu), simulated);
-    Stream truthStream = outputStream(QStringLiteral("trajectory"), QStringLiteral("ENU"),
-                                      columnsOf({"x", "y", "z", "vx", "vy", "vz", "speed"},
-                                                {"m", "m", "m", "m/s", "m/s", "m/s", "m/s"}),
-                                      std::move(truth), simulated);
+    Stream imuStream =
+        outputStream(QStringLiteral("imu"), QStringLiteral("sensor"),
+                     columnsOf({"acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z", "mag_x", "mag_y", "mag_z"},
+                               {"m/s^2", "m/s^2", "m/s^2", "rad/s", "rad/s", "rad/s", "uT", "uT", "uT"}),
+                     std::move(imu), simulated);
+    Stream truthStream =
+        outputStream(QStringLiteral("trajectory"), QStringLiteral("ENU"),
+                     columnsOf({"x", "y", "z", "vx", "vy", "vz", "speed"}, {"m", "m", "m", "m/s", "m/s", "m/s", "m/s"}),
+                     std::move(truth), simulated);
 
     Table gates = gatesTable(sim.gates);
-    gates.attributes = QJsonObject{{QStringLiteral("simulated"), true}, {QStringLiteral("frame"), QStringLiteral("ENU")}};
+    gates.attributes =
+        QJsonObject{{QStringLiteral("simulated"), true}, {QStringLiteral("frame"), QStringLiteral("ENU")}};
 
     std::vector<ProcessorOutput> outputs;
     outputs.push_back({QString(), std::move(imuStream)});

@@ -42,7 +42,8 @@ std::vector<double> alignedErrors(const std::vector<Vec3>& est, const std::vecto
     const C a = (L - F) / (l - f);
     std::vector<double> e;
     for (std::size_t m = 0; m < est.size(); ++m)
-        e.push_back(std::abs(F + a * (C(est[m].x(), est[m].y()) - f) - C(truth[m].position.x(), truth[m].position.y())));
+        e.push_back(
+            std::abs(F + a * (C(est[m].x(), est[m].y()) - f) - C(truth[m].position.x(), truth[m].position.y())));
     return e;
 }
 
@@ -67,7 +68,10 @@ Expected<GateAverageScore> evaluateGateAveraging(AnchorEvalOptions o, int runs, 
         auto run = runAnchorPipeline(in, o.pipeline);
         if (!run) return run.error();
         if (run->smoothed.inertialGates.size() != sim.gates.size())
-            return makeError(QStringLiteral("run %1: %2 crossings for %3 gates").arg(r + 1).arg(run->smoothed.inertialGates.size()).arg(sim.gates.size()));
+            return makeError(QStringLiteral("run %1: %2 crossings for %3 gates")
+                                 .arg(r + 1)
+                                 .arg(run->smoothed.inertialGates.size())
+                                 .arg(sim.gates.size()));
         estimates.push_back(run->smoothed.inertialGates);
         truth = sim.gates;
         double sum = 0.0;

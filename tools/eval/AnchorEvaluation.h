@@ -12,12 +12,12 @@ namespace athlos::positioning {
 struct AnchorEvalOptions {
     GateRunSimulator::Params simulation;
     AnchorPipelineParams pipeline;
-    bool useMagnetometer = true;  // orientation in 9D (false: 6D, heading from the gyroscope only)
+    bool useMagnetometer = true;      // orientation in 9D (false: 6D, heading from the gyroscope only)
     bool offlineOrientation = false;  // vqf forward–backward over the whole run
     bool truthOrientation = false;    // the simulator's orientation (isolates the smoother)
     double tauAcc = 3.0;              // s, vqf inclination time constant
-    bool giveStart = true;        // pass the start position to the smoother
-    int keepEveryGate = 1;        // 2, 3: keep every 2nd/3rd gate (thesis's simulated super-G / downhill)
+    bool giveStart = true;            // pass the start position to the smoother
+    int keepEveryGate = 1;            // 2, 3: keep every 2nd/3rd gate (thesis's simulated super-G / downhill)
 };
 
 struct AnchorScore {

@@ -31,19 +31,29 @@ int main(int argc, char** argv) {
         }
         const std::string key = a.substr(0, eq), value = a.substr(eq + 1);
         const double x = std::atof(value.c_str());
-        if (key == "mode") base.useMagnetometer = value != "6d";
+        if (key == "mode")
+            base.useMagnetometer = value != "6d";
         else if (key == "orientation") {
             base.truthOrientation = value == "truth";
             base.offlineOrientation = value == "offline";
-        } else if (key == "tau_acc") base.tauAcc = x;
-        else if (key == "restaligned") base.pipeline.restAligned = x != 0.0;
-        else if (key == "start") base.giveStart = x != 0.0;
-        else if (key == "passes") base.pipeline.smoother.passes = int(x);
-        else if (key == "anchor_sigma2") base.pipeline.smoother.anchorSigma2 = x;
-        else if (key == "acc_sigma") base.pipeline.smoother.accSigma = x;
-        else if (key == "jerk") base.pipeline.smoother.jerkBase = x;
-        else if (key == "walk") base.pipeline.smoother.accOffsetWalk = x;
-        else if (key == "height") base.pipeline.smoother.sacrumHeight = x;
+        } else if (key == "tau_acc")
+            base.tauAcc = x;
+        else if (key == "restaligned")
+            base.pipeline.restAligned = x != 0.0;
+        else if (key == "start")
+            base.giveStart = x != 0.0;
+        else if (key == "passes")
+            base.pipeline.smoother.passes = int(x);
+        else if (key == "anchor_sigma2")
+            base.pipeline.smoother.anchorSigma2 = x;
+        else if (key == "acc_sigma")
+            base.pipeline.smoother.accSigma = x;
+        else if (key == "jerk")
+            base.pipeline.smoother.jerkBase = x;
+        else if (key == "walk")
+            base.pipeline.smoother.accOffsetWalk = x;
+        else if (key == "height")
+            base.pipeline.smoother.sacrumHeight = x;
         else {
             std::fprintf(stderr, "unknown key %s\n", key.c_str());
             return 2;
@@ -59,8 +69,8 @@ int main(int argc, char** argv) {
                                     {"every-3rd", 3, base.pipeline.smoother.passes},
                                     {"no-anchors", 1, 0}};
     int failures = 0;
-    std::printf("%-10s %4s %8s %9s %9s %8s %8s %5s %5s %8s\n", "condition", "seed", "pos_rmse", "speed_mu",
-                "speed_sd", "tilt_deg", "head_deg", "gates", "match", "psi_deg");
+    std::printf("%-10s %4s %8s %9s %9s %8s %8s %5s %5s %8s\n", "condition", "seed", "pos_rmse", "speed_mu", "speed_sd",
+                "tilt_deg", "head_deg", "gates", "match", "psi_deg");
     for (const auto& c : conditions) {
         double p = 0.0, m = 0.0, s = 0.0;
         int ok = 0;
@@ -83,8 +93,7 @@ int main(int argc, char** argv) {
             s += score->speedSd;
             ++ok;
         }
-        if (ok > 0)
-            std::printf("%-10s mean %8.3f %9.3f %9.3f\n", c.name, p / ok, m / ok, s / ok);
+        if (ok > 0) std::printf("%-10s mean %8.3f %9.3f %9.3f\n", c.name, p / ok, m / ok, s / ok);
     }
     // GNSS-free gates (thesis ch. 10): 5 runs per course, one course per seed.
     std::printf("\ngnss-free gates (5 runs per course): horizontal gate error after aligning first/last gate\n");

@@ -17,11 +17,12 @@ namespace {
 
 std::unique_ptr<Project> simulatedRun(int seed) {
     auto project = Project::create(QDir::temp().filePath(QStringLiteral("athlos-anchor-smoother-test.athlos")));
-    auto out = runProcessor(*project, SimulateGatesProcessor(),
-                            {QStringLiteral("simulate-gates"),
-                             {},
-                             QStringLiteral("gs/imu"),
-                             {{QStringLiteral("seed"), QString::number(seed)}, {QStringLiteral("gates"), QStringLiteral("10")}}});
+    auto out = runProcessor(
+        *project, SimulateGatesProcessor(),
+        {QStringLiteral("simulate-gates"),
+         {},
+         QStringLiteral("gs/imu"),
+         {{QStringLiteral("seed"), QString::number(seed)}, {QStringLiteral("gates"), QStringLiteral("10")}}});
     EXPECT_TRUE(out.ok()) << out.message().toStdString();
     out = runProcessor(*project, inertial::OrientationProcessor(),
                        {QStringLiteral("orientation"), {QStringLiteral("gs/imu")}, QStringLiteral("gs/q"), {}});
@@ -29,9 +30,11 @@ std::unique_ptr<Project> simulatedRun(int seed) {
     return project;
 }
 
-RunRequest smootherRequest(const QString& imu = QStringLiteral("gs/imu"), const QString& gates = QStringLiteral("gs/imu-gates"),
-                           QVariantMap parameters = {}) {
-    return {QStringLiteral("anchor-smoother"), {imu, QStringLiteral("gs/q"), gates}, QStringLiteral("gs/anchored"),
+RunRequest smootherRequest(const QString& imu = QStringLiteral("gs/imu"),
+                           const QString& gates = QStringLiteral("gs/imu-gates"), QVariantMap parameters = {}) {
+    return {QStringLiteral("anchor-smoother"),
+            {imu, QStringLiteral("gs/q"), gates},
+            QStringLiteral("gs/anchored"),
             std::move(parameters)};
 }
 
@@ -51,7 +54,8 @@ TEST(AnchorSmootherProcessor, WritesTrajectoryAndCrossings) {
     // Every crossing was matched to the gate of its order.
     const auto* gate = crossings->column(QStringLiteral("gate"));
     ASSERT_TRUE(gate);
-    for (int m = 0; m < 10; ++m) EXPECT_EQ(gate->texts.value(m), QStringLiteral("G%1").arg(m + 1, 2, 10, QLatin1Char('0')));
+    for (int m = 0; m < 10; ++m)
+        EXPECT_EQ(gate->texts.value(m), QStringLiteral("G%1").arg(m + 1, 2, 10, QLatin1Char('0')));
     // The smoothed track ends where the truth ends (within the judged accuracy).
     const auto est = *trajectory->data();
     const auto truth = *project->stream(QStringLiteral("gs/imu-truth"))->data();
@@ -81,7 +85,8 @@ TEST(AnchorSmootherProcessor, RefusesMalformedGatesTables) {
     Table noUp = *project->table(QStringLiteral("gs/imu-gates"));
     noUp.columns.pop_back();
     project->putTable(QStringLiteral("gs/no-up"), noUp);
-    auto out = runProcessor(*project, AnchorSmootherProcessor(), smootherRequest(QStringLiteral("gs/imu"), QStringLiteral("gs/no-up")));
+    auto out = runProcessor(*project, AnchorSmootherProcessor(),
+                            smootherRequest(QStringLiteral("gs/imu"), QStringLiteral("gs/no-up")));
     ASSERT_FALSE(out.ok());
     EXPECT_TRUE(out.message().contains(QStringLiteral("gs/no-up"))) << out.message().toStdString();
     EXPECT_TRUE(out.message().contains(QStringLiteral("'up'"))) << out.message().toStdString();
@@ -89,7 +94,8 @@ TEST(AnchorSmootherProcessor, RefusesMalformedGatesTables) {
     Table duplicate = *project->table(QStringLiteral("gs/imu-gates"));
     duplicate.columns[0].texts[3] = duplicate.columns[0].texts[2];
     project->putTable(QStringLiteral("gs/dup"), duplicate);
-    out = runProcessor(*project, AnchorSmootherProcessor(), smootherRequest(QStringLiteral("gs/imu"), QStringLiteral("gs/dup")));
+    out = runProcessor(*project, AnchorSmootherProcessor(),
+                       smootherRequest(QStringLiteral("gs/imu"), QStringLiteral("gs/dup")));
     ASSERT_FALSE(out.ok());
     EXPECT_TRUE(out.message().contains(QStringLiteral("twice"))) << out.message().toStdString();
 

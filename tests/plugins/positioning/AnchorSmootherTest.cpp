@@ -18,8 +18,8 @@ using namespace athlos::positioning;
 using math::Vec3;
 
 TEST(GateDetector, DistanceFromFieldIsEquation91) {
-    EXPECT_NEAR(GateDetector::distanceFromField(0.0), 1.0, 1e-12);    // magnet field vanishes: 1 m
-    EXPECT_NEAR(GateDetector::distanceFromField(0.5), 0.8, 1e-12);    // the thesis's ≈ 0.8 m detection limit
+    EXPECT_NEAR(GateDetector::distanceFromField(0.0), 1.0, 1e-12);  // magnet field vanishes: 1 m
+    EXPECT_NEAR(GateDetector::distanceFromField(0.5), 0.8, 1e-12);  // the thesis's ≈ 0.8 m detection limit
     EXPECT_NEAR(GateDetector::distanceFromField(1.0), 0.6, 1e-12);
     EXPECT_NEAR(GateDetector::distanceFromField(1.61), 1.0 - 0.4 * 1.61, 1e-12);
     EXPECT_NEAR(GateDetector::distanceFromField(3.0), 0.452 - 0.062 * 3.0, 1e-12);  // second branch
@@ -34,7 +34,8 @@ TEST(GateDetector, FindsPeaksWithInterpolatedTimeAndSide) {
     for (int k = 0; k < 500; ++k) {
         const double tk = 0.01 * k;
         t.push_back(tk);
-        e.push_back(1.1 * std::exp(-std::pow((tk - 1.2345) / 0.02, 2)) + 0.7 * std::exp(-std::pow((tk - 3.0) / 0.02, 2)));
+        e.push_back(1.1 * std::exp(-std::pow((tk - 1.2345) / 0.02, 2)) +
+                    0.7 * std::exp(-std::pow((tk - 3.0) / 0.02, 2)));
         yaw.push_back(tk < 2.0 ? 0.8 : -0.8);
     }
     const auto crossings = GateDetector({0.3, 0.4}).detect(t, e, yaw);
@@ -100,9 +101,11 @@ TEST(RestAlignedStrapdown, RemovesTiltDriftBetweenRests) {
     EXPECT_LT(math::inclinationAngle(q->back()) / math::kDeg, 0.01);
     EXPECT_NEAR(math::headingAngle(q->back()), 1.0, 0.05);
     // Without the finish rest the drift (≈ 2.7° after 10 s) stays.
-    const auto raw = RestAlignedStrapdown::compute(t, gyr, acc, stream, startStill, std::vector<unsigned char>(t.size(), 0));
+    const auto raw =
+        RestAlignedStrapdown::compute(t, gyr, acc, stream, startStill, std::vector<unsigned char>(t.size(), 0));
     EXPECT_GT(math::inclinationAngle(raw->back()) / math::kDeg, 1.0);
-    EXPECT_FALSE(RestAlignedStrapdown::compute(t, gyr, acc, stream, std::vector<unsigned char>(t.size(), 0), finishStill).ok());
+    EXPECT_FALSE(
+        RestAlignedStrapdown::compute(t, gyr, acc, stream, std::vector<unsigned char>(t.size(), 0), finishStill).ok());
 }
 
 // The judged figures on simulated GS runs: IMU → vqf orientation → rest-aligned strapdown → gates →
