@@ -358,8 +358,7 @@ Expected<AnchorSmoother::Result> AnchorSmoother::run(const Input& in,
             offsetSigma0 = 20.0;
         }
         const double sigma = pass == 1 ? P.anchorSigma1 : P.anchorSigma2;
-        // χ²(3) at 0.9999 rejects a wrongly matched gate in the refined passes.
-        const double gate = pass == 1 ? estimation::kNoGate : 21.1;
+        const double gate = pass == 1 ? estimation::kNoGate : P.anchorGate;
         if (!smooth(sigma, gate, pass)) return cancelledError();
     }
 

@@ -42,9 +42,12 @@ public:
         double anchorSigma2 = 0.2;    // m, pass 2 (thesis)
         double sacrumHeight = 0.5;    // m, |d_m|: sacrum above the snow at a gate
         double matchRadius = 8.0;     // m, largest distance of a crossing from its expected gate
-        double lowPass = 5.0;         // Hz (thesis: 2nd-order Butterworth, 5 Hz); 0 = none
-        int passes = 2;               // anchor passes (0: ZUPT-only integration, for comparison)
-        double startSigma = 0.05;     // m, when the start position is given
+        // Mahalanobis gate (d²) of the anchors after the first pass: χ²(3) at 0.9999, so that a wrongly
+        // matched gate is rejected (innovation gating, thesis eq. 4.1).
+        double anchorGate = 21.1;
+        double lowPass = 5.0;      // Hz (thesis: 2nd-order Butterworth, 5 Hz); 0 = none
+        int passes = 2;            // anchor passes (0: ZUPT-only integration, for comparison)
+        double startSigma = 0.05;  // m, when the start position is given
     };
 
     struct Input {
