@@ -63,6 +63,14 @@
         <source>Processing</source>
         <translation>Verarbeitung</translation>
     </message>
+    <message>
+        <source>Cycle-normalised curves…</source>
+        <translation>Zyklusnormierte Kurven…</translation>
+    </message>
+    <message>
+        <source>Stick figure (centre of mass)…</source>
+        <translation>Strichfigur (Körperschwerpunkt)…</translation>
+    </message>
 </context>
 <context>
     <name>athlos::ui</name>
@@ -381,6 +389,56 @@
     <message>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::CycleNormalisedView</name>
+    <message>
+        <source>Recording</source>
+        <translation>Aufnahme</translation>
+    </message>
+    <message>
+        <source>Signal</source>
+        <translation>Signal</translation>
+    </message>
+    <message>
+        <source>Cycles</source>
+        <translation>Zyklen</translation>
+    </message>
+    <message>
+        <source>recording &apos;%1&apos; has no cycle annotations</source>
+        <translation>Aufnahme „%1“ hat keine Zyklus-Annotationen</translation>
+    </message>
+    <message>
+        <source>no stream &apos;%1&apos; in recording &apos;%2&apos;</source>
+        <translation>kein Datenstrom „%1“ in Aufnahme „%2“</translation>
+    </message>
+    <message>
+        <source>stream &apos;%1&apos; has no column &apos;%2&apos;</source>
+        <translation>Datenstrom „%1“ hat keine Spalte „%2“</translation>
+    </message>
+    <message>
+        <source>no cycles labelled &apos;%1&apos; in recording &apos;%2&apos;</source>
+        <translation>keine Zyklen mit der Bezeichnung „%1“ in Aufnahme „%2“</translation>
+    </message>
+    <message>
+        <source>Choose a recording with cycle annotations (e.g. from xc-skiing-cycles, alpine-turns or gait-events), a signal and the cycles.</source>
+        <translation>Wählen Sie eine Aufnahme mit Zyklus-Annotationen (z. B. aus xc-skiing-cycles, alpine-turns oder gait-events), ein Signal und die Zyklen.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n cycle(s), mean ± SD</source>
+        <translation>
+            <numerusform>%n Zyklus, Mittel ± SD</numerusform>
+            <numerusform>%n Zyklen, Mittel ± SD</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>double turn (%): left 0–100, right 100–200</source>
+        <translation>Doppelschwung (%): links 0–100, rechts 100–200</translation>
+    </message>
+    <message>
+        <source>cycle (%)</source>
+        <translation>Zyklus (%)</translation>
     </message>
 </context>
 <context>
@@ -1870,6 +1928,37 @@
     <message>
         <source>Actions: %1</source>
         <translation>Aktionen: %1</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::StickFigureView</name>
+    <message>
+        <source>No body-com result in this project; run body-com first.</source>
+        <translation>Kein body-com-Ergebnis in diesem Projekt; führen Sie zuerst body-com aus.</translation>
+    </message>
+    <message>
+        <source>Follow the pelvis heading</source>
+        <translation>Der Beckenausrichtung folgen</translation>
+    </message>
+    <message>
+        <source>Joints:</source>
+        <translation>Gelenke:</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a body-com joint stream (joint-centres relative to the lumbar joint)</source>
+        <translation>„%1“ ist kein body-com-Gelenkdatenstrom (Gelenkzentren relativ zum Lumbalgelenk)</translation>
+    </message>
+    <message>
+        <source>No body-com joint stream.</source>
+        <translation>Kein body-com-Gelenkdatenstrom.</translation>
+    </message>
+    <message>
+        <source>t = %1 s: CoM %2, %3, %4 mm from the lumbar joint (E, N, up); fore-aft %5 mm</source>
+        <translation>t = %1 s: KSP %2, %3, %4 mm vom Lumbalgelenk (O, N, oben); vorn–hinten %5 mm</translation>
+    </message>
+    <message>
+        <source>t = %1 s (no centre-of-mass stream beside the joints)</source>
+        <translation>t = %1 s (kein Schwerpunkt-Datenstrom neben den Gelenken)</translation>
     </message>
 </context>
 <context>
