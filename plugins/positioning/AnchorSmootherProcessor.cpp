@@ -197,11 +197,14 @@ QList<InputSpec> AnchorSmootherProcessor::inputs() const {
 }
 
 QList<OutputSpec> AnchorSmootherProcessor::outputs() const {
-    return {OutputSpec{QStringLiteral("trajectory"), false, QString(),
-                       tr("Sacrum x, y, z (m), vx, vy, vz, speed (m/s) in the gates' frame.")},
-            OutputSpec{QStringLiteral("gate-crossings"), true, QStringLiteral("crossings"),
-                       tr("Detected gate crossings: t, gate, distance, excess, side, residual, pass-0 gate "
-                          "estimate.")}};
+    return {
+        OutputSpec{QStringLiteral("trajectory"), false, QString(),
+                   tr("Sacrum x, y, z (m), vx, vy, vz, speed (m/s) in the gates' frame.")},
+        OutputSpec{QStringLiteral("gate-crossings"), true, QStringLiteral("crossings"),
+                   tr("Detected gate crossings: t, gate, gate_to_gate (s since the previous crossing: the "
+                      "coach's gate-to-gate time), distance, excess, side, residual, pass-0 gate estimate.")},
+        OutputSpec{QString(), false, QStringLiteral("gates"),
+                   tr("Gate passages as predicted instants labelled \"gate\" (a lane in the action timeline)."), true}};
 }
 
 Status AnchorSmootherProcessor::prepare(const RunContext& context) const { return statusOf(makePlan(context)); }
@@ -245,13 +248,19 @@ Expected<std::vector<ProcessorOutput>> AnchorSmootherProcessor::run(const RunCon
     auto numeric = [](const char* name, const char* unit) {
         return TableColumn{QString::fromLatin1(name), QString::fromLatin1(unit), false, {}, {}};
     };
-    TableColumn t = numeric("t", "s"), distance = numeric("distance", "m"), excess = numeric("excess", "1"),
-                side = numeric("side", "1"), residual = numeric("residual", "m"), ge = numeric("est_east", "m"),
-                gn = numeric("est_north", "m"), gu = numeric("est_up", "m");
+    TableColumn t = numeric("t", "s"), split = numeric("gate_to_gate", "s"), distance = numeric("distance", "m"),
+                excess = numeric("excess", "1"), side = numeric("side", "1"), residual = numeric("residual", "m"),
+                ge = numeric("est_east", "m"), gn = numeric("est_north", "m"), gu = numeric("est_up", "m");
     TableColumn gate{QStringLiteral("gate"), QString(), true, {}, {}};
+    Annotations passages;
     for (std::size_t m = 0; m < result->crossings.size(); ++m) {
         const auto& x = result->crossings[m];
         t.numbers.push_back(x.t);
+        split.numbers.push_back(m == 0 ? std::numeric_limits<double>::quiet_NaN() : x.t - result->crossings[m - 1].t);
+        Annotation passage;
+        passage.label = QStringLiteral("gate");
+        passage.tStart = passage.tEnd = x.t;
+        passages.push_back(passage);
         distance.numbers.push_back(x.distance);
         excess.numbers.push_back(x.excess);
         side.numbers.push_back(x.side);
@@ -271,11 +280,12 @@ Expected<std::vector<ProcessorOutput>> AnchorSmootherProcessor::run(const RunCon
         gn.numbers.push_back(g.y());
         gu.numbers.push_back(g.z());
     }
-    crossings.columns = {t, gate, distance, excess, side, residual, ge, gn, gu};
+    crossings.columns = {t, gate, split, distance, excess, side, residual, ge, gn, gu};
 
     std::vector<ProcessorOutput> outputs;
     outputs.push_back({QString(), std::move(trajectory)});
     outputs.push_back({QStringLiteral("crossings"), std::move(crossings)});
+    outputs.push_back({QStringLiteral("gates"), std::move(passages)});
     c.report(1.0);
     return outputs;
 }

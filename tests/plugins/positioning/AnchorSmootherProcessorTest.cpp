@@ -9,6 +9,7 @@
 
 #include <QDir>
 #include <gtest/gtest.h>
+#include <cmath>
 
 using namespace athlos;
 using namespace athlos::positioning;
@@ -56,6 +57,37 @@ TEST(AnchorSmootherProcessor, WritesTrajectoryAndCrossings) {
     ASSERT_TRUE(gate);
     for (int m = 0; m < 10; ++m)
         EXPECT_EQ(gate->texts.value(m), QStringLiteral("G%1").arg(m + 1, 2, 10, QLatin1Char('0')));
+    // Gate-to-gate times against the truth: the passage is the instant of closest horizontal approach of
+    // the true track to the gate.
+    const auto* split = crossings->column(QStringLiteral("gate_to_gate"));
+    const auto* t = crossings->column(QStringLiteral("t"));
+    ASSERT_TRUE(split && t);
+    EXPECT_TRUE(std::isnan(split->numbers[0]));
+    const Table* gates = project->table(QStringLiteral("gs/imu-gates"));
+    ASSERT_TRUE(gates);
+    const auto trueTrack = *project->stream(QStringLiteral("gs/imu-truth"))->data();
+    auto passage = [&](int g) {
+        const double ge = gates->column(QStringLiteral("east"))->numbers[std::size_t(g)],
+                     gn = gates->column(QStringLiteral("north"))->numbers[std::size_t(g)];
+        double best = 1e9, when = 0.0;
+        for (std::size_t k = 0; k < trueTrack->rows(); ++k) {
+            const double d = std::hypot(trueTrack->at(k, 0) - ge, trueTrack->at(k, 1) - gn);
+            if (d < best) {
+                best = d;
+                when = trueTrack->t[k];
+            }
+        }
+        return when;
+    };
+    for (int m = 1; m < 10; ++m) {
+        EXPECT_NEAR(split->numbers[std::size_t(m)], t->numbers[std::size_t(m)] - t->numbers[std::size_t(m - 1)], 1e-12);
+        EXPECT_NEAR(split->numbers[std::size_t(m)], passage(m) - passage(m - 1), 0.05) << "gate " << m;
+    }
+    // The passages as instants in the recording's annotations.
+    int gateAnnotations = 0;
+    for (const Annotation& a : project->recording(QStringLiteral("gs"))->annotations)
+        if (a.label == QLatin1String("gate") && a.source == QLatin1String("anchor-smoother")) ++gateAnnotations;
+    EXPECT_EQ(gateAnnotations, 10);
     // The smoothed track ends where the truth ends (within the judged accuracy).
     const auto est = *trajectory->data();
     const auto truth = *project->stream(QStringLiteral("gs/imu-truth"))->data();
