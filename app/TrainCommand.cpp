@@ -170,6 +170,11 @@ int cmdTrain(const QStringList& args) {
                  QStringLiteral("acc,gyr,mag"), QStringLiteral("acc,gyr")});
     p.addOption({QStringLiteral("trees"), QStringLiteral("Trees of the random forest (default 100)."),
                  QStringLiteral("N"), QStringLiteral("100")});
+    p.addOption({QStringLiteral("balance"),
+                 QStringLiteral("Class balancing of the training windows: oversample (default: smaller classes drawn "
+                                "with replacement), smote (their missing windows synthesised by SMOTE, Chawla et al. "
+                                "2002, k = 5) or none."),
+                 QStringLiteral("METHOD"), QStringLiteral("oversample")});
     p.addOption({QStringLiteral("min-label-fraction"),
                  QStringLiteral("Share of a window its label must cover to be trained on (default 0.5)."),
                  QStringLiteral("F"), QStringLiteral("0.5")});
@@ -250,6 +255,11 @@ int cmdTrain(const QStringList& args) {
     options.rawLength = cl.value(QStringLiteral("window-samples")).toInt(&ok);
     if (!ok || options.rawLength < 0 || options.rawLength > 100000)
         return fail(QStringLiteral("--window-samples: an integer from 0 to 100000"), Usage);
+    const QString balance = cl.value(QStringLiteral("balance"));
+    if (balance != u"oversample" && balance != u"smote" && balance != u"none")
+        return fail(QStringLiteral("--balance '%1': use oversample, smote or none").arg(balance), Usage);
+    options.classifier.balance = balance != u"none";
+    options.classifier.smote = balance == u"smote";
     options.classifier.trees = cl.value(QStringLiteral("trees")).toInt(&ok);
     if (!ok || options.classifier.trees < 1 || options.classifier.trees > 2000)
         return fail(QStringLiteral("--trees: an integer from 1 to 2000"), Usage);
@@ -342,6 +352,10 @@ int cmdTrain(const QStringList& args) {
                            {QStringLiteral("max_depth"), options.classifier.maxDepth},
                            {QStringLiteral("neighbours"), options.classifier.neighbours},
                            {QStringLiteral("balanced"), options.classifier.balance},
+                           {QStringLiteral("balancing"),
+                            options.classifier.balance
+                                ? (options.classifier.smote ? QStringLiteral("smote") : QStringLiteral("oversample"))
+                                : QStringLiteral("none")},
                            {QStringLiteral("min_label_fraction"), options.minLabelFraction},
                            {QStringLiteral("seed"), double(options.classifier.seed)}};
     if (options.classifier.kind == u"vote") parameters[QStringLiteral("vote")] = members;

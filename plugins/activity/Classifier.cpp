@@ -1,5 +1,7 @@
 #include "plugins/activity/Classifier.h"
 
+#include <opencv2/flann.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -41,6 +43,70 @@ cv::Mat selectRows(const cv::Mat& samples, const std::vector<int>& rows) {
     cv::Mat out(int(rows.size()), samples.cols, samples.type());
     for (std::size_t i = 0; i < rows.size(); ++i) samples.row(rows[i]).copyTo(out.row(int(i)));
     return out;
+}
+
+}  // namespace
+
+cv::Mat smoteSamples(const cv::Mat& samples, const std::vector<int>& members, int count, int neighbours,
+                     unsigned seed) {
+    cv::Mat out(std::max(count, 0), samples.cols, CV_32F);
+    if (count <= 0 || members.empty()) return out;
+    const cv::Mat own = selectRows(samples, members);
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<std::size_t> pickMember(0, members.size() - 1);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    const int k = std::min(neighbours, int(members.size()) - 1);
+    if (k < 1) {
+        for (int i = 0; i < count; ++i) own.row(0).copyTo(out.row(i));
+        return out;
+    }
+    cv::flann::Index index(own, cv::flann::KDTreeIndexParams(4));
+    cv::Mat indices, distances;
+    index.knnSearch(own, indices, distances, k + 1, cv::flann::SearchParams(64));  // k + 1: itself first
+    std::uniform_int_distribution<int> pickNeighbour(1, k);
+    for (int i = 0; i < count; ++i) {
+        const int a = int(pickMember(rng));
+        int b = indices.at<int>(a, pickNeighbour(rng));
+        if (b < 0 || b >= own.rows || b == a) b = indices.at<int>(a, 1) >= 0 ? indices.at<int>(a, 1) : a;
+        const float t = u(rng);
+        cv::Mat row = out.row(i);
+        cv::addWeighted(own.row(a), 1.0 - t, own.row(b), t, 0.0, row);
+    }
+    return out;
+}
+
+namespace {
+
+// Class-balanced training set like balancedRows, with the missing rows of each smaller class made by SMOTE.
+void smoteBalanced(const cv::Mat& samples, const std::vector<int>& labels, int classCount,
+                   const ClassifierOptions& options, cv::Mat& x, cv::Mat& y) {
+    std::vector<std::vector<int>> byClass(std::size_t(std::max(classCount, 1)));
+    for (std::size_t i = 0; i < labels.size(); ++i) byClass[std::size_t(labels[i])].push_back(int(i));
+    std::size_t largest = 0, present = 0;
+    for (const auto& rows : byClass) {
+        largest = std::max(largest, rows.size());
+        present += !rows.empty();
+    }
+    largest = std::min(largest, std::max<std::size_t>(1, 2 * labels.size() / std::max<std::size_t>(present, 1)));
+    std::mt19937 rng(options.seed);
+    std::vector<cv::Mat> parts;
+    std::vector<int> classOf;
+    for (std::size_t c = 0; c < byClass.size(); ++c) {
+        auto members = byClass[c];
+        if (members.empty()) continue;
+        if (members.size() > largest) {
+            std::shuffle(members.begin(), members.end(), rng);
+            members.resize(largest);
+        }
+        parts.push_back(selectRows(samples, members));
+        if (members.size() < largest)
+            parts.push_back(smoteSamples(samples, members, int(largest - members.size()), options.smoteNeighbours,
+                                         options.seed + unsigned(c)));
+        classOf.insert(classOf.end(), largest, int(c));
+    }
+    cv::vconcat(parts, x);
+    y = cv::Mat(int(classOf.size()), 1, CV_32S);
+    for (std::size_t i = 0; i < classOf.size(); ++i) y.at<int>(int(i)) = classOf[i];
 }
 
 cv::Mat labelColumn(const std::vector<int>& labels, const std::vector<int>& rows) {
@@ -175,8 +241,13 @@ Expected<Classifier> Classifier::train(const cv::Mat& samples, const std::vector
         std::vector<int> rows(labels.size());
         std::iota(rows.begin(), rows.end(), 0);
         if (options.balance) rows = balancedRows(labels, classCount, options.seed);
-        cv::Mat x = selectRows(samples, rows);
-        cv::Mat y = labelColumn(labels, rows);
+        cv::Mat x, y;
+        if (options.balance && options.smote) {
+            smoteBalanced(samples, labels, classCount, options, x, y);
+        } else {
+            x = selectRows(samples, rows);
+            y = labelColumn(labels, rows);
+        }
         cv::theRNG().state = options.seed;
         if (options.kind == QLatin1String("boosted-trees")) {
             for (int k = 0; k < classCount; ++k) {

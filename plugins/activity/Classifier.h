@@ -22,10 +22,21 @@ struct ClassifierOptions {
     int maxDepth = 20;    // tree depth limit
     int neighbours = 7;   // kNN
     bool balance = true;  // oversample minority classes to the size of the largest (class-balanced training)
+    // With balance: the added minority rows are SMOTE samples (Chawla et al. 2002: a random point on the
+    // segment from a minority window to one of its `smoteNeighbours` nearest windows of the same class,
+    // in the scaled feature space) instead of repeated windows.
+    bool smote = false;
+    int smoteNeighbours = 5;  // k of SMOTE (Chawla et al. 2002 use 5)
     QStringList voteMembers{QStringLiteral("random-forest"), QStringLiteral("svm"), QStringLiteral("knn")};
     std::vector<double> voteWeights;  // empty: equal weights
     unsigned seed = 1;
 };
+
+// SMOTE (Chawla, Bowyer, Hall & Kegelmeyer, JAIR 16:321, 2002): `count` synthetic rows of the class
+// whose rows in `samples` are `members`, each x_i + u (x_nn − x_i) with x_i a random member, x_nn one
+// of its k nearest members (cv::flann k-d tree, Euclidean) and u ~ U(0, 1). A class with one member
+// gets copies of it.
+cv::Mat smoteSamples(const cv::Mat& samples, const std::vector<int>& members, int count, int neighbours, unsigned seed);
 
 class Classifier {
 public:

@@ -86,7 +86,8 @@ done
 expect_ok "classify again" "$ATHLOS" run "$P" classify-actions --input test101/imu --output test101/actions --param model=m
 expect_ok "export again" "$ATHLOS" export "$P" test101/annotations --to "$WORK/again.csv"
 cmp -s "$WORK/x101.csv" "$WORK/again.csv" || fail "a re-run changed the predictions"
-expect_ok "retrain" "$ATHLOS" train "$P" --model m2 --input imu --window 3 --step 1.5 --cv none --trees 20
+expect_ok "retrain" "$ATHLOS" train "$P" --model m2 --input imu --window 3 --step 1.5 --cv none --trees 20 \
+  --balance smote
 grep -q "from 5 recordings" "$WORK/out" || fail "predictions became training data: $(head -1 "$WORK/out")"
 
 # Refusals name what is wrong; a refused run leaves the project byte-identical.
@@ -94,6 +95,7 @@ cp "$P" "$WORK/before.athlos"
 expect_fail "unknown model" "model: the project has no model 'nope' \(models: m, m2" \
   "$ATHLOS" run "$P" classify-actions --input test101/imu --output test101/actions --param model=nope
 expect_fail "no model name" "train needs --model NAME" "$ATHLOS" train "$P" --input imu
+expect_fail "bad balance" "--balance 'magic'" "$ATHLOS" train "$P" --model x --input imu --balance magic
 expect_fail "no such stream" "no recording has both a stream 'gps' and annotations" "$ATHLOS" train "$P" --model x --input gps
 expect_fail "bad classifier" "--classifier 'forest': use one of random-forest" "$ATHLOS" train "$P" --model x --input imu --classifier forest
 cmp -s "$P" "$WORK/before.athlos" || fail "a refused command changed the project"
