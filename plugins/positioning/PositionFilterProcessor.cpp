@@ -26,6 +26,14 @@ ParameterSpec optionalNumber(const QString& name, double min, double max, const 
     return spec;
 }
 
+// Noise profiles are estimated on position fixes; raw ranges have another measurement model.
+Status refuseProfileForRanges(const RunContext& context) {
+    if (!context.text(QStringLiteral("noise")).startsWith(QLatin1String("profile:"))) return {};
+    return makeError(
+        QStringLiteral("parameter 'noise': noise profiles hold the noise of position fixes; raw "
+                       "ranges take noise=auto or manual (r_range)"));
+}
+
 bool rawRanges(const RunContext& context) {
     const Stream* stream = context.stream(0);
     return stream && stream->info().kind == QLatin1String("lps-range");
@@ -157,10 +165,7 @@ std::vector<ProcessorOutput> trajectoryOutputs(const RunContext& context, const 
 
 // Tightly coupled: every range updates the filter (RangeFilter.h).
 Expected<std::vector<ProcessorOutput>> runRanges(const RunContext& context, const PositionFilter::Params& base) {
-    if (context.text(QStringLiteral("noise")).startsWith(QLatin1String("profile:")))
-        return makeError(
-            QStringLiteral("parameter 'noise': noise profiles hold the noise of position fixes; raw "
-                           "ranges take noise=auto or manual (r_range)"));
+    if (auto refused = refuseProfileForRanges(context); !refused) return refused.error();
     auto rangesOr = loadRanges(context);
     if (!rangesOr) return rangesOr.error();
     const RangeMeasurements& in = *rangesOr;
@@ -458,8 +463,11 @@ Expected<PositionFilter::Params> PositionFilterProcessor::readParams(const RunCo
 Status PositionFilterProcessor::prepare(const RunContext& context) const {
     auto params = readParams(context);
     if (!params) return params.error();
+    if (rawRanges(context)) {
+        if (auto refused = refuseProfileForRanges(context); !refused) return refused;
+        return statusOf(loadRanges(context));
+    }
     if (auto profile = noiseProfile(context, params->model); !profile) return profile.error();
-    if (rawRanges(context)) return statusOf(loadRanges(context));
     auto samples = positionSamples(context, 0);
     if (!samples) return samples.error();
     return {};

@@ -25,6 +25,8 @@ for spec in LOS_Trajectory_A_Case_1:A NLOS_Trajectory_B_Case_3:B; do
     --output case/track --param model=pseudo
   expect_fail "ukf" "EKF only" "$ATHLOS" run "$P" position-filter --input case/ranges,case/beacons \
     --output case/track --param filter=ukf
+  expect_fail "profile" "noise of position fixes" "$ATHLOS" run "$P" position-filter \
+    --input case/ranges,case/beacons --output case/track --param noise=profile:case/beacons
   cmp -s "$P" "$WORK/before.athlos" || fail "$name: a refused run changed the project"
   expect_ok "filter" "$ATHLOS" run "$P" position-filter --input case/ranges,case/beacons --output case/track \
     --param noise=auto --param output_rate=10 --param tag_height=1.0
