@@ -73,6 +73,2317 @@
     </message>
 </context>
 <context>
+    <name>athlos::activity::ClassifyActionsProcessor</name>
+    <message>
+        <source>Classify actions (trained model)</source>
+        <translation>Aktionen klassifizieren (trainiertes Modell)</translation>
+    </message>
+    <message>
+        <source>Classifies sliding windows of an IMU stream with a model trained in this project (athlos train) and writes the activities as predicted annotations with confidence: consecutive windows of one class merge into one interval and the intervals cover the whole stream. A model trained on detected events (--segmentation events:impact or events:tackle) runs its detector and writes one annotation per event that is not classified as null.</source>
+        <translation>Klassifiziert gleitende Fenster eines IMU-Datenstroms mit einem in diesem Projekt trainierten Modell (athlos train) und schreibt die Aktivitäten als vorhergesagte Annotationen mit Konfidenz: aufeinanderfolgende Fenster einer Klasse werden zu einem Intervall zusammengefasst, und die Intervalle decken den ganzen Datenstrom ab. Ein auf erkannten Ereignissen trainiertes Modell (--segmentation events:impact oder events:tackle) führt seinen Detektor aus und schreibt je Ereignis, das nicht als null klassifiziert wird, eine Annotation.</translation>
+    </message>
+    <message>
+        <source>Name of the trained model in the project (athlos train --model).</source>
+        <translation>Name des trainierten Modells im Projekt (athlos train --model).</translation>
+    </message>
+    <message>
+        <source>Windows on each side whose class probabilities are averaged with a window&apos;s own before deciding (0: none); activities last longer than a window.</source>
+        <translation>Fenster auf jeder Seite, deren Klassenwahrscheinlichkeiten vor der Entscheidung mit denen des Fensters gemittelt werden (0: keine); Aktivitäten dauern länger als ein Fenster.</translation>
+    </message>
+    <message>
+        <source>IMU stream with the columns the model was trained on (acc_x..z, gyr_x..z, ...).</source>
+        <translation>IMU-Datenstrom mit den Spalten, auf denen das Modell trainiert wurde (acc_x..z, gyr_x..z, ...).</translation>
+    </message>
+    <message>
+        <source>Activities as predicted annotations with confidence.</source>
+        <translation>Aktivitäten als vorhergesagte Annotationen mit Konfidenz.</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::body::BodyComProcessor</name>
+    <message>
+        <source>Centre of mass (body model)</source>
+        <translation>Körperschwerpunkt (Körpermodell)</translation>
+    </message>
+    <message>
+        <source>Joint centres and centre of mass relative to the lumbar joint centre (ENU axes) through the kinematic chain p_hip = R_pelvis v_hip, p_knee = p_hip + R_thigh v_knee, … (Fasel 2017 ch. 7) with the body model&apos;s anthropometric table; segment orientations = sensor orientation × mount. Sensor-to-joint vectors from a table or drift-reduction&apos;s attributes replace the table&apos;s thigh/shank/pelvis lengths. Head and arms without sensors ride on the thorax (arms in a fixed posture). Also the fore-aft CoM against the feet and, with an antenna in the model, the absolute CoM = antenna + chain offset and its speed (ch. 8).</source>
+        <translation>Gelenkzentren und Körperschwerpunkt relativ zum Lumbalgelenkzentrum (ENU-Achsen) über die kinematische Kette p_hip = R_pelvis v_hip, p_knee = p_hip + R_thigh v_knee, … (Fasel 2017 Kap. 7) mit der anthropometrischen Tabelle des Körpermodells; Segmentorientierung = Sensororientierung × Montage. Sensor-Gelenk-Vektoren aus einer Tabelle oder den Attributen von drift-reduction ersetzen die Oberschenkel-, Unterschenkel- und Beckenlängen der Tabelle. Kopf und Arme ohne Sensor sitzen auf dem Thorax (Arme in fester Haltung). Außerdem der Schwerpunkt in Längsrichtung gegenüber den Füßen und, mit einer Antenne im Modell, der absolute Schwerpunkt = Antenne + Kettenversatz und seine Geschwindigkeit (Kap. 8).</translation>
+    </message>
+    <message>
+        <source>Joint vectors: the joint-vectors table, drift-reduction&apos;s sensor_to_joint attributes of the sensor streams, or the anthropometric table only (auto: the first present).</source>
+        <translation>Gelenkvektoren: die Gelenkvektor-Tabelle, die sensor_to_joint-Attribute von drift-reduction an den Sensordatenströmen oder nur die anthropometrische Tabelle (auto: das erste Vorhandene).</translation>
+    </message>
+    <message>
+        <source>Fixed arm posture on the thorax: shoulder flexion (a skier holding the poles; an assumption, arms carry no sensor).</source>
+        <translation>Feste Armhaltung am Thorax: Schulterflexion (ein Skifahrer hält die Stöcke; eine Annahme, die Arme tragen keinen Sensor).</translation>
+    </message>
+    <message>
+        <source>Fixed arm posture: elbow flexion.</source>
+        <translation>Feste Armhaltung: Ellbogenflexion.</translation>
+    </message>
+    <message>
+        <source>none: the orientations share one heading (drift-reduction outputs, 9D); align-start: 6D orientations with unrelated headings, each segment turned about the vertical so its anterior axis matches the pelvis&apos; over the first 2 s (standing upright).</source>
+        <translation>none: die Orientierungen teilen eine Richtung (Ausgaben von drift-reduction, 9D); align-start: 6D-Orientierungen mit voneinander unabhängigen Richtungen, jedes Segment wird um die Vertikale gedreht, bis seine anteriore Achse über die ersten 2 s (aufrechtes Stehen) der des Beckens entspricht.</translation>
+    </message>
+    <message>
+        <source>Absolute CoM speed: central difference over this span (antenna noise).</source>
+        <translation>Geschwindigkeit des absoluten Schwerpunkts: zentrale Differenz über diese Spanne (Antennenrauschen).</translation>
+    </message>
+    <message>
+        <source>Body model (body-model).</source>
+        <translation>Körpermodell (body-model).</translation>
+    </message>
+    <message>
+        <source>Sensor mounts (segment-calibration): pelvis, thorax, right leg (or full segment names); absent = sensors aligned with their segments.</source>
+        <translation>Sensormontagen (segment-calibration): Becken, Thorax, rechtes Bein (oder vollständige Segmentnamen); fehlt sie, sind die Sensoren an ihren Segmenten ausgerichtet.</translation>
+    </message>
+    <message>
+        <source>Mounts of the left leg (thigh, shank, foot).</source>
+        <translation>Montagen des linken Beins (Oberschenkel, Unterschenkel, Fuß).</translation>
+    </message>
+    <message>
+        <source>Sensor-to-joint vectors (joint, rp_x..z, rd_x..z in the sensors&apos; frames).</source>
+        <translation>Sensor-Gelenk-Vektoren (joint, rp_x..z, rd_x..z in den Koordinaten der Sensoren).</translation>
+    </message>
+    <message>
+        <source>com_x, com_y, com_z (m, relative to the lumbar joint centre, ENU axes), fore_aft and above_ankles (m, against the mid-ankle point along the feet&apos;s heading / vertical).</source>
+        <translation>com_x, com_y, com_z (m, relativ zum Lumbalgelenkzentrum, ENU-Achsen), fore_aft und above_ankles (m, gegenüber dem Punkt zwischen den Knöcheln entlang der Fußrichtung / vertikal).</translation>
+    </message>
+    <message>
+        <source>&lt;joint&gt;_x..z of the 15 joints (m, relative to the lumbar joint centre, ENU axes).</source>
+        <translation>&lt;joint&gt;_x..z der 15 Gelenke (m, relativ zum Lumbalgelenkzentrum, ENU-Achsen).</translation>
+    </message>
+    <message>
+        <source>Only with an antenna: the absolute CoM x, y, z (m, the antenna stream&apos;s frame), vx, vy, vz and speed (m/s) on the antenna&apos;s time axis (a trajectory: drawn on the venue).</source>
+        <translation>Nur mit Antenne: absoluter Schwerpunkt x, y, z (m, im Bezugssystem des Antennendatenstroms), vx, vy, vz und Geschwindigkeit (m/s) auf der Zeitachse der Antenne (eine Trajektorie: wird auf dem Gelände gezeichnet).</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::body::BodyModelProcessor</name>
+    <message>
+        <source>Body model</source>
+        <translation>Körpermodell</translation>
+    </message>
+    <message>
+        <source>The athlete&apos;s body model (Fasel 2017 ch. 7): 15 segments (pelvis, thorax, head, upper arms, forearms, hands, thighs, shanks, feet) with the anthropometric table scaled to height and mass (Dumas et al. 2007 Table 2 or de Leva 1996 Table 4), which orientation stream (sensor) sits on which segment, equipment masses and an optional GNSS/LPS antenna. A table of kind body-model, read by body-com.</source>
+        <translation>Das Körpermodell des Athleten (Fasel 2017 Kap. 7): 15 Segmente (Becken, Thorax, Kopf, Oberarme, Unterarme, Hände, Oberschenkel, Unterschenkel, Füße) mit der auf Größe und Masse skalierten anthropometrischen Tabelle (Dumas et al. 2007 Tabelle 2 oder de Leva 1996 Tabelle 4), welcher Orientierungsdatenstrom (Sensor) auf welchem Segment sitzt, Ausrüstungsmassen und eine optionale GNSS/LPS-Antenne. Eine Tabelle der Art body-model, gelesen von body-com.</translation>
+    </message>
+    <message>
+        <source>Athlete&apos;s height (scales the segment lengths).</source>
+        <translation>Körpergröße des Athleten (skaliert die Segmentlängen).</translation>
+    </message>
+    <message>
+        <source>Athlete&apos;s body mass without equipment.</source>
+        <translation>Körpermasse des Athleten ohne Ausrüstung.</translation>
+    </message>
+    <message>
+        <source>Selects the table&apos;s male or female column.</source>
+        <translation>Wählt die männliche oder weibliche Spalte der Tabelle.</translation>
+    </message>
+    <message>
+        <source>Anthropometric table: Dumas, Chèze &amp; Verriest 2007 (J Biomech 40:543, Table 2) or de Leva 1996 (J Biomech 29:1223, Table 4).</source>
+        <translation>Anthropometrische Tabelle: Dumas, Chèze &amp; Verriest 2007 (J Biomech 40:543, Tabelle 2) oder de Leva 1996 (J Biomech 29:1223, Tabelle 4).</translation>
+    </message>
+    <message>
+        <source>segment:rec/stream,… — the orientation stream of the sensor on each segment (e.g. the outputs of drift-reduction). Segments without one ride on their parent.</source>
+        <translation>segment:rec/stream,… — der Orientierungsdatenstrom des Sensors auf jedem Segment (z. B. die Ausgaben von drift-reduction). Segmente ohne einen solchen sitzen auf ihrem Elternsegment.</translation>
+    </message>
+    <message>
+        <source>segment:kg,… — equipment masses (boots, helmet, skis), added at the segment&apos;s CoM.</source>
+        <translation>segment:kg,… — Ausrüstungsmassen (Schuhe, Helm, Ski), im Schwerpunkt des Segments hinzugefügt.</translation>
+    </message>
+    <message>
+        <source>segment:rec/stream — a GNSS (local x, y, z) or LPS position stream of an antenna on that segment (helmet: head; back: thorax), for the absolute CoM (Fasel 2017 ch. 8).</source>
+        <translation>segment:rec/stream — ein GNSS- (lokal x, y, z) oder LPS-Positionsdatenstrom einer Antenne auf diesem Segment (Helm: Kopf; Rücken: Thorax), für den absoluten Schwerpunkt (Fasel 2017 Kap. 8).</translation>
+    </message>
+    <message>
+        <source>x,y,z (m): the antenna in the segment&apos;s coordinates from its proximal joint (default: 3 cm above the head vertex, or the segment&apos;s distal end).</source>
+        <translation>x,y,z (m): die Antenne in den Koordinaten des Segments ab seinem proximalen Gelenk (Vorgabe: 3 cm über dem Scheitel bzw. das distale Ende des Segments).</translation>
+    </message>
+    <message>
+        <source>One row per segment: segment, parent, joints, sensor, position, equipment, mass, length.</source>
+        <translation>Eine Zeile je Segment: segment, parent, joints, sensor, position, equipment, mass, length.</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::events</name>
+    <message>
+        <source>The walker&apos;s height (feature x4 of eq. 12.6); required, 0 = not given.</source>
+        <translation>Körpergröße der gehenden Person (Merkmal x4 aus Gl. 12.6); erforderlich, 0 = nicht angegeben.</translation>
+    </message>
+    <message>
+        <source>Sensor axis pointing forward along the ski.</source>
+        <translation>Sensorachse, die entlang des Skis nach vorn zeigt.</translation>
+    </message>
+    <message>
+        <source>Sensor axis pointing to the skier&apos;s left (medio-lateral); the ski inclination is integrated from this gyroscope axis.</source>
+        <translation>Sensorachse, die zur linken Seite des Skifahrers zeigt (medio-lateral); die Skineigung wird aus dieser Gyroskopachse integriert.</translation>
+    </message>
+    <message>
+        <source>Speed below which the ski is motionless (refined phases; Fasel 2017 ch. 4: 0.1 m/s).</source>
+        <translation>Geschwindigkeit, unter der der Ski ruht (verfeinerte Phasen; Fasel 2017 Kap. 4: 0,1 m/s).</translation>
+    </message>
+    <message>
+        <source>Shortest cycle; closer motionless phases are not separate cycles.</source>
+        <translation>Kürzester Zyklus; näher beieinanderliegende Ruhephasen sind keine eigenen Zyklen.</translation>
+    </message>
+    <message>
+        <source>Longest cycle; longer gaps between motionless phases are not cycles.</source>
+        <translation>Längster Zyklus; längere Lücken zwischen Ruhephasen sind keine Zyklen.</translation>
+    </message>
+    <message>
+        <source>Longest motionless phase that starts a cycle; longer ones are rests (used for the drift correction only).</source>
+        <translation>Längste Ruhephase, die einen Zyklus beginnt; längere sind Pausen (nur für die Driftkorrektur verwendet).</translation>
+    </message>
+    <message>
+        <source>Gyroscope norm below which the ski may be still (candidate thrust phases; Fasel 2017 ch. 3).</source>
+        <translation>Gyroskopnorm, unter der der Ski ruhen kann (Kandidaten für Abstoßphasen; Fasel 2017 Kap. 3).</translation>
+    </message>
+    <message>
+        <source>|‖a‖ − g| below which the ski may be still (candidate thrust phases).</source>
+        <translation>|‖a‖ − g|, unter dem der Ski ruhen kann (Kandidaten für Abstoßphasen).</translation>
+    </message>
+    <message>
+        <source>Shortest candidate thrust phase.</source>
+        <translation>Kürzeste Kandidaten-Abstoßphase.</translation>
+    </message>
+    <message>
+        <source>Inertial acceleration below which the ski is motionless (thrust start and end, Fasel 2017 Table 3.1).</source>
+        <translation>Inertiale Beschleunigung, unter der der Ski ruht (Beginn und Ende des Abstoßes, Fasel 2017 Tabelle 3.1).</translation>
+    </message>
+    <message>
+        <source>Pole: vibration maximum (second difference of the acceleration norm) of a pole plant.</source>
+        <translation>Stock: Vibrationsmaximum (zweite Differenz der Beschleunigungsnorm) eines Stockeinsatzes.</translation>
+    </message>
+    <message>
+        <source>Pole: vibration at the start of the plant shock, searched up to 100 ms before the maximum (Fasel 2017 ch. 3).</source>
+        <translation>Stock: Vibration zu Beginn des Einsatzstoßes, gesucht bis 100 ms vor dem Maximum (Fasel 2017 Kap. 3).</translation>
+    </message>
+    <message>
+        <source>The ski stands still for this long at the start of the recording (first inclination and gyroscope bias).</source>
+        <translation>So lange steht der Ski zu Beginn der Aufnahme still (erste Neigung und Gyroskop-Bias).</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::events::AlpineTurnsProcessor</name>
+    <message>
+        <source>Alpine turn switches</source>
+        <translation>Schwungwechsel im alpinen Skilauf</translation>
+    </message>
+    <message>
+        <source>Turn switches of alpine skiing from a trunk or sacrum IMU (Fasel 2017 ch. 2 and 11): the angular velocity about the trunk&apos;s longitudinal axis changes sign at each switch; positive is a left turn. Writes the turns (switch to switch) as predicted annotations &quot;turn left&quot; / &quot;turn right&quot; and a per-turn table.</source>
+        <translation>Schwungwechsel im alpinen Skilauf aus einer IMU an Rumpf oder Kreuzbein (Fasel 2017 Kap. 2 und 11): die Winkelgeschwindigkeit um die Längsachse des Rumpfes wechselt bei jedem Wechsel das Vorzeichen; positiv ist ein Linksschwung. Schreibt die Schwünge (von Wechsel zu Wechsel) als vorhergesagte Annotationen „turn left“ / „turn right“ und eine Tabelle je Schwung.</translation>
+    </message>
+    <message>
+        <source>Sensor axis along the trunk pointing up; auto: the axis nearest the mean acceleration.</source>
+        <translation>Sensorachse entlang des Rumpfes nach oben; auto: die Achse, die der mittleren Beschleunigung am nächsten liegt.</translation>
+    </message>
+    <message>
+        <source>Moving-average window (applied twice) on the yaw rate.</source>
+        <translation>Fenster des gleitenden Mittelwerts (zweimal angewandt) auf die Gierrate.</translation>
+    </message>
+    <message>
+        <source>Yaw rate a turn must exceed; smaller sign changes are not switches.</source>
+        <translation>Gierrate, die ein Schwung überschreiten muss; kleinere Vorzeichenwechsel sind keine Wechsel.</translation>
+    </message>
+    <message>
+        <source>Shortest turn.</source>
+        <translation>Kürzester Schwung.</translation>
+    </message>
+    <message>
+        <source>Longest turn; longer intervals (straight running, stops) are not turns.</source>
+        <translation>Längster Schwung; längere Intervalle (Schussfahrt, Halte) sind keine Schwünge.</translation>
+    </message>
+    <message>
+        <source>Sacrum or trunk IMU: acc_x..z (m/s^2), gyr_x..z (rad/s).</source>
+        <translation>IMU an Kreuzbein oder Rumpf: acc_x..z (m/s^2), gyr_x..z (rad/s).</translation>
+    </message>
+    <message>
+        <source>Per turn: start, end, duration (s), side (left/right), peak_rate (rad/s).</source>
+        <translation>Je Schwung: start, end, duration (s), side (left/right), peak_rate (rad/s).</translation>
+    </message>
+    <message>
+        <source>Turns as predicted annotations &quot;turn left&quot; / &quot;turn right&quot;.</source>
+        <translation>Schwünge als vorhergesagte Annotationen „turn left“ / „turn right“.</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::events::GaitEventsProcessor</name>
+    <message>
+        <source>Gait events (foot IMU)</source>
+        <translation>Gangereignisse (Fuß-IMU)</translation>
+    </message>
+    <message>
+        <source>Initial contact, toe-off and mid-stance from the medio-lateral gyroscope of a foot-mounted IMU (negative peaks of the swing-positive signal after and before each mid-swing peak; minimum of the gyroscope norm in stance). Writes the strides (IC to next IC) as predicted annotations with a confidence, and a table of the events.</source>
+        <translation>Initialkontakt, Zehenablösung und Mittelstand aus dem medio-lateralen Gyroskop einer am Fuß getragenen IMU (negative Spitzen des in der Schwungphase positiven Signals nach und vor jeder Schwungspitze; Minimum der Gyroskopnorm im Stand). Schreibt die Doppelschritte (IC bis zum nächsten IC) als vorhergesagte Annotationen mit Konfidenz und eine Tabelle der Ereignisse.</translation>
+    </message>
+    <message>
+        <source>Sensor axis along the medio-lateral direction (y when x points forward and z up).</source>
+        <translation>Sensorachse in medio-lateraler Richtung (y, wenn x nach vorn und z nach oben zeigt).</translation>
+    </message>
+    <message>
+        <source>Sign of the medio-lateral angular velocity during swing; auto: the sign of the longest sustained rotation.</source>
+        <translation>Vorzeichen der medio-lateralen Winkelgeschwindigkeit im Schwung; auto: das Vorzeichen der längsten anhaltenden Drehung.</translation>
+    </message>
+    <message>
+        <source>Minimum mid-swing angular velocity of a stride.</source>
+        <translation>Minimale Winkelgeschwindigkeit eines Doppelschritts in der Schwungmitte.</translation>
+    </message>
+    <message>
+        <source>Shortest stride; closer swing peaks count as one.</source>
+        <translation>Kürzester Doppelschritt; näher beieinanderliegende Schwungspitzen zählen als eine.</translation>
+    </message>
+    <message>
+        <source>Longest stride; longer intervals between contacts are gaps.</source>
+        <translation>Längster Doppelschritt; längere Intervalle zwischen Kontakten sind Lücken.</translation>
+    </message>
+    <message>
+        <source>Search window for toe-off before the swing peak.</source>
+        <translation>Suchfenster für die Zehenablösung vor der Schwungspitze.</translation>
+    </message>
+    <message>
+        <source>Search window for initial contact after the swing peak.</source>
+        <translation>Suchfenster für den Initialkontakt nach der Schwungspitze.</translation>
+    </message>
+    <message>
+        <source>Annotation label of the strides; empty: &quot;stride left&quot; / &quot;stride right&quot; from the stream name.</source>
+        <translation>Annotationsbezeichnung der Doppelschritte; leer: „stride left“ / „stride right“ aus dem Namen des Datenstroms.</translation>
+    </message>
+    <message>
+        <source>Foot-mounted IMU: gyr_x..z (rad/s) in the sensor frame.</source>
+        <translation>Am Fuß getragene IMU: gyr_x..z (rad/s) im Sensorkoordinatensystem.</translation>
+    </message>
+    <message>
+        <source>Events: t (s), type (ic, tc, min_vel), foot.</source>
+        <translation>Ereignisse: t (s), type (ic, tc, min_vel), foot.</translation>
+    </message>
+    <message>
+        <source>Strides (IC to next IC) as predicted annotations with confidence.</source>
+        <translation>Doppelschritte (IC bis zum nächsten IC) als vorhergesagte Annotationen mit Konfidenz.</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::events::GaitParametersProcessor</name>
+    <message>
+        <source>Gait parameters (foot IMU)</source>
+        <translation>Gangparameter (Fuß-IMU)</translation>
+    </message>
+    <message>
+        <source>Strides between consecutive mid-stance (minimum-velocity) instants of a foot-mounted IMU and, per stride, zero-velocity-aided integration (orientation levelled from gravity at each mid-stance, inclination and velocity drift removed linearly): stride length (horizontal) and height, stride, stance and swing time, cadence, gait speed, toe clearance and turning angle; plus the foot trajectory.</source>
+        <translation>Doppelschritte zwischen aufeinanderfolgenden Mittelstand-Zeitpunkten (minimale Geschwindigkeit) einer am Fuß getragenen IMU und je Doppelschritt eine durch Nullgeschwindigkeit gestützte Integration (Orientierung bei jedem Mittelstand an der Schwerkraft ausgerichtet, Neigungs- und Geschwindigkeitsdrift linear entfernt): Schrittlänge (horizontal) und -höhe, Doppelschritt-, Stand- und Schwungzeit, Kadenz, Ganggeschwindigkeit, Bodenfreiheit der Zehen und Drehwinkel; dazu die Fußtrajektorie.</translation>
+    </message>
+    <message>
+        <source>Sensor axis along the medio-lateral direction (y when x points forward and z up).</source>
+        <translation>Sensorachse in medio-lateraler Richtung (y, wenn x nach vorn und z nach oben zeigt).</translation>
+    </message>
+    <message>
+        <source>Sign of the medio-lateral angular velocity during swing; auto: the sign of the longest sustained rotation.</source>
+        <translation>Vorzeichen der medio-lateralen Winkelgeschwindigkeit im Schwung; auto: das Vorzeichen der längsten anhaltenden Drehung.</translation>
+    </message>
+    <message>
+        <source>Minimum mid-swing angular velocity of a stride (gait-events&apos; default; walking peaks are 4–7 rad/s, Rampp et al. 2015).</source>
+        <translation>Minimale Winkelgeschwindigkeit eines Doppelschritts in der Schwungmitte (Vorgabe von gait-events; Spitzen beim Gehen liegen bei 4–7 rad/s, Rampp et al. 2015).</translation>
+    </message>
+    <message>
+        <source>Shortest stride; closer swing peaks count as one.</source>
+        <translation>Kürzester Doppelschritt; näher beieinanderliegende Schwungspitzen zählen als eine.</translation>
+    </message>
+    <message>
+        <source>Swings further apart have the foot standing between them: the strides end and start next to the standing phase.</source>
+        <translation>Weiter auseinanderliegende Schwünge haben einen stehenden Fuß dazwischen: die Doppelschritte enden und beginnen neben der Standphase.</translation>
+    </message>
+    <message>
+        <source>Moving average of the gyroscope norm whose minimum is the mid-stance (gaitmap NormZuptDetector: 0.15 s).</source>
+        <translation>Gleitender Mittelwert der Gyroskopnorm, dessen Minimum der Mittelstand ist (gaitmap NormZuptDetector: 0,15 s).</translation>
+    </message>
+    <message>
+        <source>Largest averaged gyroscope norm accepted as a zero-velocity mid-stance. gaitmap&apos;s static threshold is 15 deg/s (0.26 rad/s), but the quietest 0.15 s of a stance reaches only 0.2–1.3 rad/s in gaitmap&apos;s own walk (and more in running), so the default is 2 rad/s; it rejects a mid-stance cut off by the start or end of the data.</source>
+        <translation>Größte gemittelte Gyroskopnorm, die als Mittelstand mit Nullgeschwindigkeit akzeptiert wird. Die statische Schwelle von gaitmap ist 15 deg/s (0,26 rad/s), doch die ruhigsten 0,15 s eines Stands erreichen in gaitmaps eigenem Gang nur 0,2–1,3 rad/s (und beim Laufen mehr), daher ist die Vorgabe 2 rad/s; sie verwirft einen Mittelstand, der vom Anfang oder Ende der Daten abgeschnitten ist.</translation>
+    </message>
+    <message>
+        <source>Standing: gyroscope norm averaged over rest_window below this (gaitmap NormZuptDetector: 15 deg/s); pauses end strides, and the mean rate while standing is the gyroscope bias, removed before integration.</source>
+        <translation>Stehen: über rest_window gemittelte Gyroskopnorm unter diesem Wert (gaitmap NormZuptDetector: 15 deg/s); Pausen beenden Doppelschritte, und die mittlere Drehrate im Stehen ist der Gyroskop-Bias, der vor der Integration entfernt wird.</translation>
+    </message>
+    <message>
+        <source>A pause between two swings (below static_threshold at least this long) ends the stride before where the foot comes to rest and starts the next where it leaves, so that no stride contains the pause. Shorter than a stride, longer than the foot-flat phase of slow walking.</source>
+        <translation>Eine Pause zwischen zwei Schwüngen (mindestens so lange unter static_threshold) beendet den Doppelschritt vor der Stelle, an der der Fuß zur Ruhe kommt, und beginnt den nächsten dort, wo er sie verlässt, sodass kein Doppelschritt die Pause enthält. Kürzer als ein Doppelschritt, länger als die Fußflachphase langsamen Gehens.</translation>
+    </message>
+    <message>
+        <source>Shortest standing phase used for the gyroscope bias; 0: no bias removal.</source>
+        <translation>Kürzeste Standphase, die für den Gyroskop-Bias verwendet wird; 0: keine Bias-Entfernung.</translation>
+    </message>
+    <message>
+        <source>Next to a standing phase, the mid-stance is searched this long after the last swing and before the next one.</source>
+        <translation>Neben einer Standphase wird der Mittelstand so lange nach dem letzten Schwung und vor dem nächsten gesucht.</translation>
+    </message>
+    <message>
+        <source>Search window for toe-off before the swing peak (as gait-events).</source>
+        <translation>Suchfenster für die Zehenablösung vor der Schwungspitze (wie gait-events).</translation>
+    </message>
+    <message>
+        <source>Search window for initial contact after the swing peak (as gait-events).</source>
+        <translation>Suchfenster für den Initialkontakt nach der Schwungspitze (wie gait-events).</translation>
+    </message>
+    <message>
+        <source>Accelerometer average at a mid-stance that gives the up direction.</source>
+        <translation>Mittelung des Beschleunigungsmessers bei einem Mittelstand, die die Aufwärtsrichtung liefert.</translation>
+    </message>
+    <message>
+        <source>Foot-mounted IMU: acc_x..z (m/s^2), gyr_x..z (rad/s), x forward along the foot, z up through the sole.</source>
+        <translation>Am Fuß getragene IMU: acc_x..z (m/s^2), gyr_x..z (rad/s), x nach vorn entlang des Fußes, z nach oben durch die Sohle.</translation>
+    </message>
+    <message>
+        <source>One row per stride: start, end, stride_length, stride_height, stride_time, stance_time, swing_time, cadence, gait_speed, max_toe_clearance, turning_angle.</source>
+        <translation>Eine Zeile je Doppelschritt: start, end, stride_length, stride_height, stride_time, stance_time, swing_time, cadence, gait_speed, max_toe_clearance, turning_angle.</translation>
+    </message>
+    <message>
+        <source>Foot (sensor) positions x, y, z (m): z up, x the heading at the first mid-stance.</source>
+        <translation>Positionen von Fuß (Sensor) x, y, z (m): z nach oben, x die Richtung beim ersten Mittelstand.</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::events::SimulateSkiingProcessor</name>
+    <message>
+        <source>Simulate skiing IMUs</source>
+        <translation>Ski-IMUs simulieren</translation>
+    </message>
+    <message>
+        <source>Skiing IMU recordings with ground truth: cross-country diagonal stride (ski IMU at &lt;output&gt;, pole IMU at &lt;output&gt;-pole; motionless thrusts, hilly track), a ski-mountaineering ascent (ski IMU, 18° track) or an alpine run (sacrum IMU, turns 22–32 m apart at 20 m/s on a 26° slope). The true cycles or turns are at &lt;output&gt;-truth.</source>
+        <translation>Ski-IMU-Aufnahmen mit Referenz: Diagonalschritt im Langlauf (Ski-IMU unter &lt;output&gt;, Stock-IMU unter &lt;output&gt;-pole; ruhende Abstöße, hügelige Strecke), ein Skitouren-Aufstieg (Ski-IMU, 18°-Spur) oder eine Alpinfahrt (Kreuzbein-IMU, Schwünge 22–32 m auseinander bei 20 m/s auf einem 26°-Hang). Die wahren Zyklen oder Schwünge liegen unter &lt;output&gt;-truth.</translation>
+    </message>
+    <message>
+        <source>Discipline.</source>
+        <translation>Disziplin.</translation>
+    </message>
+    <message>
+        <source>Random seed.</source>
+        <translation>Zufallsstartwert.</translation>
+    </message>
+    <message>
+        <source>Number of cycles (xc, skimo) or turns.</source>
+        <translation>Anzahl der Zyklen (xc, skimo) oder Schwünge.</translation>
+    </message>
+    <message>
+        <source>Ski IMU (xc, skimo) or sacrum IMU (alpine).</source>
+        <translation>Ski-IMU (xc, skimo) oder Kreuzbein-IMU (alpine).</translation>
+    </message>
+    <message>
+        <source>Pole IMU (xc only).</source>
+        <translation>Stock-IMU (nur xc).</translation>
+    </message>
+    <message>
+        <source>True cycles (thrust_start … pole_lift) or turns (start, end, side).</source>
+        <translation>Wahre Zyklen (thrust_start … pole_lift) oder Schwünge (start, end, side).</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::events::SimulateWristWalkProcessor</name>
+    <message>
+        <source>Simulate wrist walking</source>
+        <translation>Gehen mit Handgelenksensor simulieren</translation>
+    </message>
+    <message>
+        <source>Simulates a wrist-worn IMU and barometer during outdoor walking bouts (cadence changing over time, uphill, downhill and flat paths, arm swing, some bouts with the hand held still) and pauses (standing, arm gestures), with the truth: cadence, speed, grade, altitude and walking per 0.1 s.</source>
+        <translation>Simuliert eine am Handgelenk getragene IMU und ein Barometer bei Gehabschnitten im Freien (Kadenz ändert sich mit der Zeit, bergauf, bergab und eben, Armschwung, einige Abschnitte mit ruhig gehaltener Hand) und Pausen (Stehen, Armgesten), mit der Referenz: Kadenz, Geschwindigkeit, Steigung, Höhe und Gehen je 0,1 s.</translation>
+    </message>
+    <message>
+        <source>Random seed (deterministic).</source>
+        <translation>Zufallsstartwert (deterministisch).</translation>
+    </message>
+    <message>
+        <source>Length of the recording.</source>
+        <translation>Länge der Aufnahme.</translation>
+    </message>
+    <message>
+        <source>IMU sampling rate.</source>
+        <translation>Abtastrate der IMU.</translation>
+    </message>
+    <message>
+        <source>The walker&apos;s height (step length scales with it).</source>
+        <translation>Körpergröße der gehenden Person (die Schrittlänge skaliert damit).</translation>
+    </message>
+    <message>
+        <source>Lowest walking cadence.</source>
+        <translation>Niedrigste Gehkadenz.</translation>
+    </message>
+    <message>
+        <source>Highest walking cadence.</source>
+        <translation>Höchste Gehkadenz.</translation>
+    </message>
+    <message>
+        <source>Steepest path (rise over run) of a walking bout.</source>
+        <translation>Steilster Weg (Steigung) eines Gehabschnitts.</translation>
+    </message>
+    <message>
+        <source>Fraction of the time spent walking.</source>
+        <translation>Zeitanteil des Gehens.</translation>
+    </message>
+    <message>
+        <source>Accelerometer white noise (1 SD).</source>
+        <translation>Weißes Rauschen des Beschleunigungsmessers (1 SD).</translation>
+    </message>
+    <message>
+        <source>Barometer white noise (1 SD).</source>
+        <translation>Weißes Rauschen des Barometers (1 SD).</translation>
+    </message>
+    <message>
+        <source>Weather drift of the pressure (sign random).</source>
+        <translation>Wetterbedingte Drift des Luftdrucks (Vorzeichen zufällig).</translation>
+    </message>
+    <message>
+        <source>Wrist IMU: acc_x..z (m/s^2), gyr_x..z (rad/s).</source>
+        <translation>Handgelenk-IMU: acc_x..z (m/s^2), gyr_x..z (rad/s).</translation>
+    </message>
+    <message>
+        <source>Pressure (Pa) at 25 Hz.</source>
+        <translation>Luftdruck (Pa) mit 25 Hz.</translation>
+    </message>
+    <message>
+        <source>Truth: cadence (steps/min), speed (m/s), grade, altitude (m), walking (1/0).</source>
+        <translation>Referenz: Kadenz (Schritte/min), Geschwindigkeit (m/s), Steigung, Höhe (m), Gehen (1/0).</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::events::SkimoPhasesProcessor</name>
+    <message>
+        <source>Ski-mountaineering phases</source>
+        <translation>Phasen im Skitourengehen</translation>
+    </message>
+    <message>
+        <source>Ski-mountaineering ascent from a ski IMU (Fasel 2017 ch. 4): motionless phases at the minima of the speed integrated without resets, speed with the drift on the central 50 % of each phase removed, phases refined where the speed is below zero_speed; per cycle duration, speed, length, elevation gain and slope angle. The recording must start with the ski still.</source>
+        <translation>Skitouren-Aufstieg aus einer Ski-IMU (Fasel 2017 Kap. 4): Ruhephasen an den Minima der ohne Rücksetzen integrierten Geschwindigkeit, Geschwindigkeit mit der über die mittleren 50 % jeder Phase entfernten Drift, Phasen verfeinert, wo die Geschwindigkeit unter zero_speed liegt; je Zyklus Dauer, Geschwindigkeit, Länge, Höhengewinn und Hangwinkel. Die Aufnahme muss mit ruhendem Ski beginnen.</translation>
+    </message>
+    <message>
+        <source>Ski-mounted IMU: acc_x..z (m/s^2), gyr_x..z (rad/s).</source>
+        <translation>Am Ski montierte IMU: acc_x..z (m/s^2), gyr_x..z (rad/s).</translation>
+    </message>
+    <message>
+        <source>Per cycle: still_start, still_end, end (s), duration (s), speed (m/s), length (m), elevation (m), slope (rad); attribute elevation_gain (m).</source>
+        <translation>Je Zyklus: still_start, still_end, end (s), duration (s), speed (m/s), length (m), elevation (m), slope (rad); Attribut elevation_gain (m).</translation>
+    </message>
+    <message>
+        <source>Cycles and motionless phases as predicted annotations.</source>
+        <translation>Zyklen und Ruhephasen als vorhergesagte Annotationen.</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::events::WristCadenceProcessor</name>
+    <message>
+        <source>Wrist walking cadence</source>
+        <translation>Gehkadenz vom Handgelenk</translation>
+    </message>
+    <message>
+        <source>Walking cadence from a wrist-worn accelerometer (Fasel et al. 2017): comb filter on the log spectrum of 6 s windows of the acceleration norm (harmonics +1, half harmonics -1, stride frequency 0.4-2 Hz), tracked over time; walking detected from the comb likelihood and the norm&apos;s variability. One row per second.</source>
+        <translation>Gehkadenz aus einem am Handgelenk getragenen Beschleunigungsmesser (Fasel et al. 2017): Kammfilter auf dem logarithmischen Spektrum von 6-s-Fenstern der Beschleunigungsnorm (Harmonische +1, halbe Harmonische −1, Doppelschrittfrequenz 0,4–2 Hz), über die Zeit verfolgt; Gehen erkannt aus der Kamm-Likelihood und der Variabilität der Norm. Eine Zeile je Sekunde.</translation>
+    </message>
+    <message>
+        <source>Window length (thesis eq. 12.1: 6 s, 120 samples at 20 Hz; at most 12.8 s, the FFT of 256).</source>
+        <translation>Fensterlänge (Arbeit Gl. 12.1: 6 s, 120 Abtastwerte bei 20 Hz; höchstens 12,8 s, die FFT mit 256).</translation>
+    </message>
+    <message>
+        <source>Window shift (thesis: 1 s).</source>
+        <translation>Fensterversatz (Arbeit: 1 s).</translation>
+    </message>
+    <message>
+        <source>Walking needs the harmonics of the comb&apos;s stride frequency to exceed their neighbouring half harmonics by this much on average (natural log of the amplitude ratio; ours, not in the thesis, which segmented walking by hand: see docs/validation/wrist-walking.md).</source>
+        <translation>Gehen erfordert, dass die Harmonischen der Doppelschrittfrequenz des Kamms ihre benachbarten halben Harmonischen im Mittel um so viel übertreffen (natürlicher Logarithmus des Amplitudenverhältnisses; eigene Wahl, nicht aus der Arbeit, die das Gehen von Hand segmentierte: siehe docs/validation/wrist-walking.md).</translation>
+    </message>
+    <message>
+        <source>Walking needs this SD of the acceleration norm in the window (ours: standing is below 0.1 m/s^2).</source>
+        <translation>Gehen erfordert diese SD der Beschleunigungsnorm im Fenster (eigene Wahl: Stehen liegt unter 0,1 m/s^2).</translation>
+    </message>
+    <message>
+        <source>Tracking: a stride frequency further than this from the previous one triggers the search in ranges A and B (thesis eq. 12.4: 0.07 Hz).</source>
+        <translation>Verfolgung: eine Doppelschrittfrequenz, die weiter als dies von der vorigen entfernt ist, löst die Suche in den Bereichen A und B aus (Arbeit Gl. 12.4: 0,07 Hz).</translation>
+    </message>
+    <message>
+        <source>Tracking: half-width of range B around the previous step frequency (eq. 12.4: 0.14 Hz).</source>
+        <translation>Verfolgung: halbe Breite von Bereich B um die vorige Schrittfrequenz (Gl. 12.4: 0,14 Hz).</translation>
+    </message>
+    <message>
+        <source>Weight of the previous cadence in the low-pass c[n] = a c[n-1] + (1-a) c[n] (thesis: 0.33).</source>
+        <translation>Gewicht der vorigen Kadenz im Tiefpass c[n] = a c[n-1] + (1-a) c[n] (Arbeit: 0,33).</translation>
+    </message>
+    <message>
+        <source>Windows in a row whose comb maximum lies near neither the tracked stride nor step frequency before the track restarts from the maximum (ours, not in the thesis; 1000: never).</source>
+        <translation>Fenster in Folge, deren Kamm-Maximum weder nahe der verfolgten Doppelschritt- noch der Schrittfrequenz liegt, bevor die Verfolgung beim Maximum neu beginnt (eigene Wahl, nicht aus der Arbeit; 1000: nie).</translation>
+    </message>
+    <message>
+        <source>Wrist IMU with acc_x..z (m/s^2) sampled at 20 Hz or faster; any orientation.</source>
+        <translation>Handgelenk-IMU mit acc_x..z (m/s^2), abgetastet mit 20 Hz oder schneller; beliebige Orientierung.</translation>
+    </message>
+    <message>
+        <source>Per window centre: cadence (steps/min, NaN when not walking), walking (1/0), likelihood, norm_max and norm_std (m/s^2).</source>
+        <translation>Je Fenstermitte: cadence (Schritte/min, NaN, wenn nicht gegangen wird), walking (1/0), likelihood, norm_max und norm_std (m/s^2).</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::events::WristSpeedProcessor</name>
+    <message>
+        <source>Wrist walking speed</source>
+        <translation>Gehgeschwindigkeit vom Handgelenk</translation>
+    </message>
+    <message>
+        <source>Walking speed per cadence window from a trained wrist-speed model (Fasel et al. 2017): the nearest of the k-means centroids picks the linear model of the features max*std of the acceleration norm, cadence, barometric pressure change over 9 s and height.</source>
+        <translation>Gehgeschwindigkeit je Kadenzfenster aus einem trainierten wrist-speed-Modell (Fasel et al. 2017): der nächste der k-means-Zentroide wählt das lineare Modell der Merkmale max*std der Beschleunigungsnorm, Kadenz, Luftdruckänderung über 9 s und Körpergröße.</translation>
+    </message>
+    <message>
+        <source>Output of wrist-cadence.</source>
+        <translation>Ausgabe von wrist-cadence.</translation>
+    </message>
+    <message>
+        <source>Barometric pressure (Pa) of the same wrist sensor.</source>
+        <translation>Luftdruck (Pa) desselben Handgelenksensors.</translation>
+    </message>
+    <message>
+        <source>A model from wrist-speed-train.</source>
+        <translation>Ein Modell aus wrist-speed-train.</translation>
+    </message>
+    <message>
+        <source>speed (m/s, NaN when not walking) and the cluster used, per cadence window.</source>
+        <translation>Geschwindigkeit (m/s, NaN, wenn nicht gegangen wird) und der verwendete Cluster, je Kadenzfenster.</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::events::WristSpeedTrainProcessor</name>
+    <message>
+        <source>Train wrist walking speed</source>
+        <translation>Gehgeschwindigkeit vom Handgelenk trainieren</translation>
+    </message>
+    <message>
+        <source>Trains the wrist walking-speed model (Fasel et al. 2017): features max*std of the acceleration norm, cadence, barometric pressure change over 9 s and height per walking window; 16 k-means clusters, each with its own linear model fitted to a reference speed. Give an earlier model to add this walker&apos;s windows to its training rows.</source>
+        <translation>Trainiert das Gehgeschwindigkeitsmodell für das Handgelenk (Fasel et al. 2017): Merkmale max*std der Beschleunigungsnorm, Kadenz, Luftdruckänderung über 9 s und Körpergröße je Gehfenster; 16 k-means-Cluster, jeder mit eigenem linearem Modell, angepasst an eine Referenzgeschwindigkeit. Geben Sie ein früheres Modell an, um die Fenster dieser gehenden Person zu dessen Trainingszeilen hinzuzufügen.</translation>
+    </message>
+    <message>
+        <source>k-means clusters, each with a linear model (thesis: 16).</source>
+        <translation>k-means-Cluster, jeder mit einem linearen Modell (Arbeit: 16).</translation>
+    </message>
+    <message>
+        <source>A cluster with fewer training windows uses the global linear model.</source>
+        <translation>Ein Cluster mit weniger Trainingsfenstern verwendet das globale lineare Modell.</translation>
+    </message>
+    <message>
+        <source>Seed of the k-means++ initialisation (deterministic training).</source>
+        <translation>Startwert der k-means++-Initialisierung (deterministisches Training).</translation>
+    </message>
+    <message>
+        <source>Windows whose mean reference speed is below this are not used.</source>
+        <translation>Fenster, deren mittlere Referenzgeschwindigkeit darunter liegt, werden nicht verwendet.</translation>
+    </message>
+    <message>
+        <source>Output of wrist-cadence.</source>
+        <translation>Ausgabe von wrist-cadence.</translation>
+    </message>
+    <message>
+        <source>Barometric pressure (Pa) of the same wrist sensor.</source>
+        <translation>Luftdruck (Pa) desselben Handgelenksensors.</translation>
+    </message>
+    <message>
+        <source>Reference walking speed: a stream with a column &apos;speed&apos; (m/s), e.g. from GNSS.</source>
+        <translation>Referenz-Gehgeschwindigkeit: ein Datenstrom mit einer Spalte „speed“ (m/s), z. B. aus GNSS.</translation>
+    </message>
+    <message>
+        <source>An earlier model whose training windows are kept.</source>
+        <translation>Ein früheres Modell, dessen Trainingsfenster erhalten bleiben.</translation>
+    </message>
+    <message>
+        <source>Training windows (t, max_x_std, cadence, pressure_change, height, speed) with the model in the attributes.</source>
+        <translation>Trainingsfenster (t, max_x_std, cadence, pressure_change, height, speed) mit dem Modell in den Attributen.</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::events::XcSkiingCyclesProcessor</name>
+    <message>
+        <source>Cross-country skiing cycles</source>
+        <translation>Zyklen im Skilanglauf</translation>
+    </message>
+    <message>
+        <source>Diagonal-stride cycles from a ski IMU (Fasel 2017 ch. 3): motionless thrust phases, ski inclination from the medio-lateral gyroscope re-anchored in each thrust, speed from the forward acceleration with zero-velocity updates, thrust start and end, gliding start (maximum speed), cycle duration, speed, length, elevation and slope; with a pole IMU also pole plant (start of the shock) and pole lift (acceleration peak). Writes a per-cycle table and predicted annotations.</source>
+        <translation>Diagonalschritt-Zyklen aus einer Ski-IMU (Fasel 2017 Kap. 3): ruhende Abstoßphasen, Skineigung aus dem medio-lateralen Gyroskop, in jedem Abstoß neu verankert, Geschwindigkeit aus der Vorwärtsbeschleunigung mit Nullgeschwindigkeits-Updates, Beginn und Ende des Abstoßes, Beginn des Gleitens (maximale Geschwindigkeit), Zyklusdauer, Geschwindigkeit, Länge, Höhe und Neigung; mit einer Stock-IMU auch Stockeinsatz (Beginn des Stoßes) und Stockabheben (Beschleunigungsspitze). Schreibt eine Tabelle je Zyklus und vorhergesagte Annotationen.</translation>
+    </message>
+    <message>
+        <source>Ski-mounted IMU: acc_x..z (m/s^2), gyr_x..z (rad/s).</source>
+        <translation>Am Ski montierte IMU: acc_x..z (m/s^2), gyr_x..z (rad/s).</translation>
+    </message>
+    <message>
+        <source>Pole-mounted IMU of the same side (optional): pole plant and lift.</source>
+        <translation>Am Stock montierte IMU derselben Seite (optional): Stockeinsatz und -abheben.</translation>
+    </message>
+    <message>
+        <source>Per cycle: thrust_start, thrust_end, glide_start, end (s), duration (s), speed (m/s), length (m), elevation (m), slope (rad), pole_plant, pole_lift (s).</source>
+        <translation>Je Zyklus: thrust_start, thrust_end, glide_start, end (s), duration (s), speed (m/s), length (m), elevation (m), slope (rad), pole_plant, pole_lift (s).</translation>
+    </message>
+    <message>
+        <source>Cycles, thrust phases, gliding starts and pole pushes as predicted annotations.</source>
+        <translation>Zyklen, Abstoßphasen, Gleitbeginne und Stockschübe als vorhergesagte Annotationen.</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::inertial::DriftReductionProcessor</name>
+    <message>
+        <source>Drift reduction (joints)</source>
+        <translation>Driftreduktion (Gelenke)</translation>
+    </message>
+    <message>
+        <source>Reduces the orientation drift of body-worn sensors after the recording (Fasel 2017 ch. 2, 5, 6): inclination at rest instants spread by SLERP between them, then joint drift reduction — two segments linked by a joint must see the same joint-centre acceleration; sensor-to-joint vectors by Nelder–Mead, the drift between the two virtual accelerations estimated over ±1.25 s windows, corrected from the sacrum to the thighs, shanks and feet and to the sternum, then a second pass on horizontal components for the azimuth. Inputs: (orientation, imu) per segment in the order of `segments`. Velocity resets for foot/ski sensors are not done.</source>
+        <translation>Reduziert die Orientierungsdrift am Körper getragener Sensoren nach der Aufnahme (Fasel 2017 Kap. 2, 5, 6): Neigung an Ruhezeitpunkten, dazwischen per SLERP verteilt, dann Gelenk-Driftreduktion — zwei durch ein Gelenk verbundene Segmente müssen dieselbe Gelenkzentrumsbeschleunigung sehen; Sensor-Gelenk-Vektoren per Nelder–Mead, die Drift zwischen den beiden virtuellen Beschleunigungen über Fenster von ±1,25 s geschätzt, korrigiert vom Kreuzbein zu Oberschenkeln, Unterschenkeln und Füßen und zum Brustbein, dann ein zweiter Durchgang auf den horizontalen Komponenten für das Azimut. Eingaben: (orientation, imu) je Segment in der Reihenfolge von `segments`. Geschwindigkeitsrücksetzungen für Fuß-/Skisensoren werden nicht durchgeführt.</translation>
+    </message>
+    <message>
+        <source>Segment of each input pair, in order; the first must be sacrum. Links: sacrum → sternum, sacrum → &lt;side&gt;-thigh → &lt;side&gt;-shank → &lt;side&gt;-foot.</source>
+        <translation>Segment jedes Eingabepaars, der Reihe nach; das erste muss sacrum sein. Verbindungen: sacrum → sternum, sacrum → &lt;side&gt;-thigh → &lt;side&gt;-shank → &lt;side&gt;-foot.</translation>
+    </message>
+    <message>
+        <source>Valid-sample thresholds: on-snow (|ã| &gt; 8 m/s², ||ã_d| − |ã_p|| &lt; 2.5 m/s², Fasel 2017 Eqs. 5.6–5.8) or indoor (|ã| &gt; 6 m/s², relative difference &lt; 0.2, Eqs. 6.9–6.11). The parameters below override the preset.</source>
+        <translation>Schwellen für gültige Abtastwerte: on-snow (|ã| &gt; 8 m/s², ||ã_d| − |ã_p|| &lt; 2,5 m/s², Fasel 2017 Gl. 5.6–5.8) oder indoor (|ã| &gt; 6 m/s², relative Differenz &lt; 0,2, Gl. 6.9–6.11). Die folgenden Parameter überschreiben die Voreinstellung.</translation>
+    </message>
+    <message>
+        <source>Minimum |ã_d|, |ã_p| (Eqs. 5.7–5.8; preset).</source>
+        <translation>Minimum von |ã_d|, |ã_p| (Gl. 5.7–5.8; Voreinstellung).</translation>
+    </message>
+    <message>
+        <source>Maximum ||ã_d| − |ã_p|| (Eq. 5.6; preset).</source>
+        <translation>Maximum von ||ã_d| − |ã_p|| (Gl. 5.6; Voreinstellung).</translation>
+    </message>
+    <message>
+        <source>Maximum ||ã_d| − |ã_p|| / mean norm, 0 = not used (Eq. 6.11; preset).</source>
+        <translation>Maximum von ||ã_d| − |ã_p|| / mittlere Norm, 0 = nicht verwendet (Gl. 6.11; Voreinstellung).</translation>
+    </message>
+    <message>
+        <source>Cut-off of the zero-phase 2nd-order Butterworth low-pass of ω (Eqs. 5.3–5.4).</source>
+        <translation>Grenzfrequenz des nullphasigen Butterworth-Tiefpasses 2. Ordnung für ω (Gl. 5.3–5.4).</translation>
+    </message>
+    <message>
+        <source>Samples with |ω_proximal| above this fit the sensor-to-joint vectors (Eq. 5.5, 40°/s).</source>
+        <translation>Abtastwerte mit |ω_proximal| über diesem Wert passen die Sensor-Gelenk-Vektoren an (Gl. 5.5, 40°/s).</translation>
+    </message>
+    <message>
+        <source>Half width of the Markley mean of the drift (1.25 s, Fasel 2017 ch. 5).</source>
+        <translation>Halbe Breite des Markley-Mittelwerts der Drift (1,25 s, Fasel 2017 Kap. 5).</translation>
+    </message>
+    <message>
+        <source>Drift of a window: wahba — the rotation that best maps all its valid ã_d onto ã_p (least squares); markley — per-sample smallest rotation (Fasel 2017 Eqs. 5.9–5.11) averaged with the Markley quaternion mean, as in the thesis (biased here: docs/validation/drift-reduction.md).</source>
+        <translation>Drift eines Fensters: wahba — die Rotation, die alle gültigen ã_d am besten auf ã_p abbildet (kleinste Quadrate); markley — je Abtastwert die kleinste Rotation (Fasel 2017 Gl. 5.9–5.11), gemittelt mit dem Markley-Quaternionenmittel wie in der Arbeit (hier verzerrt: docs/validation/drift-reduction.md).</translation>
+    </message>
+    <message>
+        <source>Second pass on horizontal components (Eqs. 6.12–6.13).</source>
+        <translation>Zweiter Durchgang auf den horizontalen Komponenten (Gl. 6.12–6.13).</translation>
+    </message>
+    <message>
+        <source>Minimum horizontal norm in the azimuth pass (0.6 m/s²).</source>
+        <translation>Minimale horizontale Norm im Azimut-Durchgang (0,6 m/s²).</translation>
+    </message>
+    <message>
+        <source>Remove a constant heading offset per joint first (needed for 6D orientations, whose headings are independent).</source>
+        <translation>Zuerst einen konstanten Richtungsversatz je Gelenk entfernen (nötig für 6D-Orientierungen, deren Richtungen unabhängig sind).</translation>
+    </message>
+    <message>
+        <source>Correct the inclination at rest instants, spread by SLERP (Fasel 2017 Eq. 2.7).</source>
+        <translation>Die Neigung an Ruhezeitpunkten korrigieren, per SLERP verteilt (Fasel 2017 Gl. 2.7).</translation>
+    </message>
+    <message>
+        <source>Joint drift reduction (Fasel 2017 ch. 5–6).</source>
+        <translation>Gelenk-Driftreduktion (Fasel 2017 Kap. 5–6).</translation>
+    </message>
+    <message>
+        <source>Rest detection: gyroscope deviation threshold (as in orientation).</source>
+        <translation>Ruheerkennung: Schwelle für die Gyroskopabweichung (wie in orientation).</translation>
+    </message>
+    <message>
+        <source>Rest detection: accelerometer deviation threshold.</source>
+        <translation>Ruheerkennung: Schwelle für die Beschleunigungsabweichung.</translation>
+    </message>
+    <message>
+        <source>Orientation (qw..qz) of the segment named at this place of `segments`.</source>
+        <translation>Orientierung (qw..qz) des Segments, das an dieser Stelle von `segments` genannt ist.</translation>
+    </message>
+    <message>
+        <source>IMU stream (acc_x..z, gyr_x..z) of the same sensor.</source>
+        <translation>IMU-Datenstrom (acc_x..z, gyr_x..z) desselben Sensors.</translation>
+    </message>
+    <message>
+        <source>Corrected sacrum orientation, same columns as its input.</source>
+        <translation>Korrigierte Orientierung des Kreuzbeins, dieselben Spalten wie ihre Eingabe.</translation>
+    </message>
+    <message>
+        <source>Corrected orientation of this segment.</source>
+        <translation>Korrigierte Orientierung dieses Segments.</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::inertial::GnssImuProcessor</name>
+    <message>
+        <source>GNSS/IMU fusion</source>
+        <translation>GNSS/IMU-Fusion</translation>
+    </message>
+    <message>
+        <source>Loosely-coupled GNSS/IMU extended Kalman filter (Kim et al., Sensors 2023): position, velocity and attitude in a local ENU frame from the first fix, driven by the IMU at its rate and corrected by GNSS position (and velocity) at theirs; output at the IMU rate with horizontal speed and distance.</source>
+        <translation>Lose gekoppelter erweiterter GNSS/IMU-Kalman-Filter (Kim et al., Sensors 2023): Position, Geschwindigkeit und Lage in einem lokalen ENU-System ab der ersten Position, angetrieben von der IMU mit deren Rate und korrigiert durch GNSS-Position (und -Geschwindigkeit) mit deren Rate; Ausgabe mit der IMU-Rate mit horizontaler Geschwindigkeit und Distanz.</translation>
+    </message>
+    <message>
+        <source>Inclination source: ekf (the EKF&apos;s own quaternion, corrected through the GNSS velocity; best on sprints), orientation (the VQF-class filter) or kalman (the seed&apos;s quaternion Kalman filter). Heading always comes from the EKF.</source>
+        <translation>Quelle der Neigung: ekf (das eigene Quaternion des EKF, über die GNSS-Geschwindigkeit korrigiert; am besten bei Sprints), orientation (der Filter der VQF-Klasse) oder kalman (der Quaternionen-Kalman-Filter der Quelle). Die Richtung kommt immer aus dem EKF.</translation>
+    </message>
+    <message>
+        <source>Process noise of the specific force (includes attitude errors).</source>
+        <translation>Prozessrauschen der spezifischen Kraft (schließt Lagefehler ein).</translation>
+    </message>
+    <message>
+        <source>GNSS horizontal position noise per axis.</source>
+        <translation>Rauschen der horizontalen GNSS-Position je Achse.</translation>
+    </message>
+    <message>
+        <source>GNSS vertical position noise.</source>
+        <translation>Rauschen der vertikalen GNSS-Position.</translation>
+    </message>
+    <message>
+        <source>GNSS velocity noise per axis.</source>
+        <translation>Rauschen der GNSS-Geschwindigkeit je Achse.</translation>
+    </message>
+    <message>
+        <source>Use GNSS velocity columns when present.</source>
+        <translation>GNSS-Geschwindigkeitsspalten verwenden, wenn vorhanden.</translation>
+    </message>
+    <message>
+        <source>Local gravity.</source>
+        <translation>Lokale Schwerebeschleunigung.</translation>
+    </message>
+    <message>
+        <source>IMU: acc_x..z (m/s^2), gyr_x..z (rad/s).</source>
+        <translation>IMU: acc_x..z (m/s^2), gyr_x..z (rad/s).</translation>
+    </message>
+    <message>
+        <source>GNSS: lat, lon, alt[, vn, ve, vd] or x, y, z[, vx, vy, vz] (ENU), same clock as the IMU.</source>
+        <translation>GNSS: lat, lon, alt[, vn, ve, vd] oder x, y, z[, vx, vy, vz] (ENU), dieselbe Uhr wie die IMU.</translation>
+    </message>
+    <message>
+        <source>x, y, z, vx, vy, vz (ENU from the first fix), qw..qz, speed (m/s, horizontal), distance (m).</source>
+        <translation>x, y, z, vx, vy, vz (ENU ab der ersten Position), qw..qz, speed (m/s, horizontal), distance (m).</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::inertial::ImuCalibrationProcessor</name>
+    <message>
+        <source>IMU calibration</source>
+        <translation>IMU-Kalibrierung</translation>
+    </message>
+    <message>
+        <source>Gyroscope offset from rest periods, accelerometer offset and scale from at least six static positions (each axis up and down), magnetometer hard/soft iron from an ellipsoid fit, and a saturation check. Writes the calibrated stream and the calibration table (&lt;output&gt;-calibration); given a calibration table as second input it applies that instead of estimating.</source>
+        <translation>Gyroskop-Offset aus Ruhephasen, Beschleunigungs-Offset und -Skalierung aus mindestens sechs statischen Lagen (jede Achse nach oben und nach unten), Hard/Soft-Iron des Magnetometers aus einer Ellipsoidanpassung und eine Sättigungsprüfung. Schreibt den kalibrierten Datenstrom und die Kalibriertabelle (&lt;output&gt;-calibration); mit einer Kalibriertabelle als zweiter Eingabe wird diese angewandt statt geschätzt.</translation>
+    </message>
+    <message>
+        <source>Estimate the gyroscope offset from rest periods (auto: when there is rest).</source>
+        <translation>Gyroskop-Offset aus Ruhephasen schätzen (auto: wenn es Ruhe gibt).</translation>
+    </message>
+    <message>
+        <source>Estimate accelerometer offset/scale (auto: when ≥ 6 static positions cover ±g on each axis).</source>
+        <translation>Beschleunigungs-Offset/-Skalierung schätzen (auto: wenn ≥ 6 statische Lagen ±g auf jeder Achse abdecken).</translation>
+    </message>
+    <message>
+        <source>Fit magnetometer hard/soft iron (auto: when mag columns exist and the fit succeeds).</source>
+        <translation>Hard/Soft-Iron des Magnetometers anpassen (auto: wenn Magnetometerspalten existieren und die Anpassung gelingt).</translation>
+    </message>
+    <message>
+        <source>Shortest static position.</source>
+        <translation>Kürzeste statische Lage.</translation>
+    </message>
+    <message>
+        <source>Local gravity.</source>
+        <translation>Lokale Schwerebeschleunigung.</translation>
+    </message>
+    <message>
+        <source>Accelerometer range for the saturation check (0: detect clipping).</source>
+        <translation>Messbereich des Beschleunigungsmessers für die Sättigungsprüfung (0: Abschneiden erkennen).</translation>
+    </message>
+    <message>
+        <source>Gyroscope range for the saturation check (0: detect clipping).</source>
+        <translation>Messbereich des Gyroskops für die Sättigungsprüfung (0: Abschneiden erkennen).</translation>
+    </message>
+    <message>
+        <source>Smallest plausible magnetic field after calibration (median |m|); default: the minimum geomagnetic total intensity at the Earth&apos;s surface (World Magnetic Model).</source>
+        <translation>Kleinstes plausibles Magnetfeld nach der Kalibrierung (Median von |m|); Vorgabe: die minimale geomagnetische Totalintensität an der Erdoberfläche (World Magnetic Model).</translation>
+    </message>
+    <message>
+        <source>Largest plausible magnetic field after calibration; default: the maximum geomagnetic total intensity at the Earth&apos;s surface (World Magnetic Model).</source>
+        <translation>Größtes plausibles Magnetfeld nach der Kalibrierung; Vorgabe: die maximale geomagnetische Totalintensität an der Erdoberfläche (World Magnetic Model).</translation>
+    </message>
+    <message>
+        <source>Largest plausible deviation of |a| at rest from gravity after calibration, as a fraction of gravity; default: the ±3 % factory tolerance of MEMS accelerometers.</source>
+        <translation>Größte plausible Abweichung von |a| in Ruhe von der Schwerebeschleunigung nach der Kalibrierung, als Anteil der Schwerebeschleunigung; Vorgabe: die Werkstoleranz von ±3 % bei MEMS-Beschleunigungsmessern.</translation>
+    </message>
+    <message>
+        <source>Largest plausible |scale − 1| of a fitted accelerometer axis (datasheet tolerances, rounded up).</source>
+        <translation>Größtes plausibles |scale − 1| einer angepassten Achse des Beschleunigungsmessers (Datenblatttoleranzen, aufgerundet).</translation>
+    </message>
+    <message>
+        <source>Store a calibration that fails the plausibility checks, flagged in the attribute &apos;implausible&apos; of both outputs, instead of refusing it.</source>
+        <translation>Eine Kalibrierung, die die Plausibilitätsprüfungen nicht besteht, speichern (im Attribut „implausible“ beider Ausgaben markiert), statt sie abzulehnen.</translation>
+    </message>
+    <message>
+        <source>IMU stream to calibrate.</source>
+        <translation>Zu kalibrierender IMU-Datenstrom.</translation>
+    </message>
+    <message>
+        <source>Optional calibration table to apply instead of estimating one.</source>
+        <translation>Optionale Kalibriertabelle, die angewandt wird, statt eine zu schätzen.</translation>
+    </message>
+    <message>
+        <source>Calibrated IMU stream.</source>
+        <translation>Kalibrierter IMU-Datenstrom.</translation>
+    </message>
+    <message>
+        <source>Calibration parameters: rows gyr_offset, acc_offset, acc_scale, mag_hard_iron, mag_soft_iron_0..2.</source>
+        <translation>Kalibrierparameter: Zeilen gyr_offset, acc_offset, acc_scale, mag_hard_iron, mag_soft_iron_0..2.</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::inertial::JointAnglesProcessor</name>
+    <message>
+        <source>Joint angles</source>
+        <translation>Gelenkwinkel</translation>
+    </message>
+    <message>
+        <source>Knee, hip, ankle or trunk angles from the orientations of a proximal and a distal sensor (ISB recommendations, Grood &amp; Suntay joint coordinate system = Z-X-Y Cardan angles of the relative segment rotation): flexion, abduction and internal rotation, positive on both sides (the left side is mirrored). The sensors&apos; mounts (segment to sensor rotations) come from parameters or a segment-calibration table. Independent 6D headings are aligned over the first seconds, where the segments must face the same way (e.g. standing).</source>
+        <translation>Knie-, Hüft-, Sprung- oder Rumpfwinkel aus den Orientierungen eines proximalen und eines distalen Sensors (ISB-Empfehlungen, Gelenkkoordinatensystem nach Grood &amp; Suntay = Z-X-Y-Cardanwinkel der relativen Segmentrotation): Flexion, Abduktion und Innenrotation, auf beiden Seiten positiv (die linke Seite wird gespiegelt). Die Montagen der Sensoren (Rotationen Segment → Sensor) kommen aus Parametern oder einer segment-calibration-Tabelle. Unabhängige 6D-Richtungen werden über die ersten Sekunden ausgerichtet, in denen die Segmente in dieselbe Richtung zeigen müssen (z. B. im Stehen).</translation>
+    </message>
+    <message>
+        <source>knee (thigh → shank), hip (pelvis → thigh), ankle (shank → foot) or trunk (pelvis → thorax).</source>
+        <translation>knee (Oberschenkel → Unterschenkel), hip (Becken → Oberschenkel), ankle (Unterschenkel → Fuß) oder trunk (Becken → Thorax).</translation>
+    </message>
+    <message>
+        <source>Body side; the left side is mirrored so that positive abduction and internal rotation mean the same on both sides.</source>
+        <translation>Körperseite; die linke Seite wird gespiegelt, damit positive Abduktion und Innenrotation auf beiden Seiten dasselbe bedeuten.</translation>
+    </message>
+    <message>
+        <source>Proximal segment frame in the sensor frame as a quaternion w,x,y,z (maps segment to sensor coordinates; ISB segment axes X anterior, Y superior, Z right).</source>
+        <translation>Proximales Segmentsystem im Sensorsystem als Quaternion w,x,y,z (bildet Segment- auf Sensorkoordinaten ab; ISB-Segmentachsen X anterior, Y superior, Z rechts).</translation>
+    </message>
+    <message>
+        <source>Distal segment frame in the sensor frame (w,x,y,z).</source>
+        <translation>Distales Segmentsystem im Sensorsystem (w,x,y,z).</translation>
+    </message>
+    <message>
+        <source>align-start: rotate the distal sensor&apos;s earth frame about the vertical so that both segments face the same way at the start (needed for 6D orientations); none: use the headings as they are (9D or optical).</source>
+        <translation>align-start: das Erdsystem des distalen Sensors um die Vertikale drehen, sodass beide Segmente zu Beginn in dieselbe Richtung zeigen (nötig für 6D-Orientierungen); none: die Richtungen unverändert verwenden (9D oder optisch).</translation>
+    </message>
+    <message>
+        <source>Length of the start window for heading alignment.</source>
+        <translation>Länge des Startfensters für die Richtungsausrichtung.</translation>
+    </message>
+    <message>
+        <source>Orientation of the proximal segment&apos;s sensor (qw, qx, qy, qz).</source>
+        <translation>Orientierung des Sensors des proximalen Segments (qw, qx, qy, qz).</translation>
+    </message>
+    <message>
+        <source>Orientation of the distal segment&apos;s sensor (qw, qx, qy, qz).</source>
+        <translation>Orientierung des Sensors des distalen Segments (qw, qx, qy, qz).</translation>
+    </message>
+    <message>
+        <source>Segment-calibration table (segment, qw..qz) with rows for both segments of the joint.</source>
+        <translation>Segment-calibration-Tabelle (segment, qw..qz) mit Zeilen für beide Segmente des Gelenks.</translation>
+    </message>
+    <message>
+        <source>flexion, abduction, rotation (rad), long_axis_angle, proximal_inclination, distal_inclination (rad).</source>
+        <translation>flexion, abduction, rotation (rad), long_axis_angle, proximal_inclination, distal_inclination (rad).</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::inertial::OrientationProcessor</name>
+    <message>
+        <source>Orientation (IMU)</source>
+        <translation>Orientierung (IMU)</translation>
+    </message>
+    <message>
+        <source>Sensor-to-earth orientation (ENU, scalar-first quaternions) from gyroscope + accelerometer (6D) or + magnetometer (9D), one row per input sample, with gyroscope bias estimate and rest / magnetic disturbance flags. Default: a VQF-class filter (Laidig &amp; Seel 2023) with bias estimation at rest and in motion, accelerometer correction in an almost inertial frame and heading-only magnetometer correction with disturbance rejection. Baselines: strapdown, madgwick, mahony, kalman (Kim et al. 2023).</source>
+        <translation>Orientierung Sensor → Erde (ENU, Quaternionen mit Skalar zuerst) aus Gyroskop + Beschleunigungsmesser (6D) oder + Magnetometer (9D), eine Zeile je Eingabe-Abtastwert, mit geschätztem Gyroskop-Bias sowie Ruhe- und Magnetstörungs-Flags. Vorgabe: ein Filter der VQF-Klasse (Laidig &amp; Seel 2023) mit Bias-Schätzung in Ruhe und in Bewegung, Beschleunigungskorrektur in einem nahezu inertialen System und reiner Richtungskorrektur durch das Magnetometer mit Störungsunterdrückung. Vergleichsverfahren: strapdown, madgwick, mahony, kalman (Kim et al. 2023).</translation>
+    </message>
+    <message>
+        <source>6d: gyroscope + accelerometer (heading drifts freely); 9d: also magnetometer; auto: 9d when the stream has mag_x..z.</source>
+        <translation>6d: Gyroskop + Beschleunigungsmesser (die Richtung driftet frei); 9d: zusätzlich Magnetometer; auto: 9d, wenn der Datenstrom mag_x..z hat.</translation>
+    </message>
+    <message>
+        <source>vqf (default, recommended), or a baseline for comparison: strapdown, madgwick, mahony, kalman.</source>
+        <translation>vqf (Vorgabe, empfohlen) oder ein Vergleichsverfahren: strapdown, madgwick, mahony, kalman.</translation>
+    </message>
+    <message>
+        <source>vqf: time constant of the accelerometer (inclination) correction.</source>
+        <translation>vqf: Zeitkonstante der Beschleunigungskorrektur (Neigung).</translation>
+    </message>
+    <message>
+        <source>vqf: time constant of the magnetometer (heading) correction.</source>
+        <translation>vqf: Zeitkonstante der Magnetometerkorrektur (Richtung).</translation>
+    </message>
+    <message>
+        <source>vqf: estimate the gyroscope bias (at rest and in motion).</source>
+        <translation>vqf: den Gyroskop-Bias schätzen (in Ruhe und in Bewegung).</translation>
+    </message>
+    <message>
+        <source>vqf: detect and ride out magnetic disturbances.</source>
+        <translation>vqf: magnetische Störungen erkennen und überbrücken.</translation>
+    </message>
+    <message>
+        <source>vqf: rest detection threshold on the gyroscope deviation.</source>
+        <translation>vqf: Schwelle der Ruheerkennung für die Gyroskopabweichung.</translation>
+    </message>
+    <message>
+        <source>vqf: rest detection threshold on the accelerometer deviation.</source>
+        <translation>vqf: Schwelle der Ruheerkennung für die Beschleunigungsabweichung.</translation>
+    </message>
+    <message>
+        <source>vqf: accelerometer measuring range; samples clipped at it do not correct the inclination (0 = unknown).</source>
+        <translation>vqf: Messbereich des Beschleunigungsmessers; daran abgeschnittene Abtastwerte korrigieren die Neigung nicht (0 = unbekannt).</translation>
+    </message>
+    <message>
+        <source>vqf: estimate from the whole recording (forward-backward bias smoothing, zero-phase inclination, heading of both passes; offline VQF, Laidig &amp; Seel 2023) instead of sample by sample. Same outputs.</source>
+        <translation>vqf: aus der ganzen Aufnahme schätzen (Vorwärts-Rückwärts-Glättung des Bias, nullphasige Neigung, Richtung aus beiden Durchgängen; Offline-VQF, Laidig &amp; Seel 2023) statt Abtastwert für Abtastwert. Dieselben Ausgaben.</translation>
+    </message>
+    <message>
+        <source>madgwick: gain.</source>
+        <translation>madgwick: Verstärkung.</translation>
+    </message>
+    <message>
+        <source>mahony: proportional gain.</source>
+        <translation>mahony: Proportionalverstärkung.</translation>
+    </message>
+    <message>
+        <source>mahony: integral gain.</source>
+        <translation>mahony: Integralverstärkung.</translation>
+    </message>
+    <message>
+        <source>IMU stream: acc_x..z (m/s^2), gyr_x..z (rad/s)[, mag_x..z (uT)] in the sensor frame.</source>
+        <translation>IMU-Datenstrom: acc_x..z (m/s^2), gyr_x..z (rad/s)[, mag_x..z (uT)] im Sensorsystem.</translation>
+    </message>
+    <message>
+        <source>qw, qx, qy, qz (sensor to ENU), bias_x..z (rad/s), rest and mag_disturbed flags (0/1).</source>
+        <translation>qw, qx, qy, qz (Sensor → ENU), bias_x..z (rad/s), Flags rest und mag_disturbed (0/1).</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::inertial::SegmentCalibrationProcessor</name>
+    <message>
+        <source>Segment calibration (functional)</source>
+        <translation>Segmentkalibrierung (funktionell)</translation>
+    </message>
+    <message>
+        <source>Sensor-to-segment mounts from a functional calibration: standing upright still (gravity gives the superior axis) and slow squats (the principal axis of the angular velocity gives the medio-lateral axis), combined by cross products. Writes a segment-calibration table (segment, qw..qz) for joint-angles.</source>
+        <translation>Sensor-Segment-Montagen aus einer funktionellen Kalibrierung: ruhiges aufrechtes Stehen (die Schwerkraft liefert die superiore Achse) und langsame Kniebeugen (die Hauptachse der Winkelgeschwindigkeit liefert die medio-laterale Achse), über Kreuzprodukte kombiniert. Schreibt eine segment-calibration-Tabelle (segment, qw..qz) für joint-angles.</translation>
+    </message>
+    <message>
+        <source>Segment of each input IMU, in input order (thigh, shank, pelvis or thorax).</source>
+        <translation>Segment jeder Eingabe-IMU in der Reihenfolge der Eingaben (thigh, shank, pelvis oder thorax).</translation>
+    </message>
+    <message>
+        <source>Start of the upright standing window.</source>
+        <translation>Beginn des Fensters für aufrechtes Stehen.</translation>
+    </message>
+    <message>
+        <source>End of the upright standing window.</source>
+        <translation>Ende des Fensters für aufrechtes Stehen.</translation>
+    </message>
+    <message>
+        <source>Start of the squats.</source>
+        <translation>Beginn der Kniebeugen.</translation>
+    </message>
+    <message>
+        <source>End of the squats.</source>
+        <translation>Ende der Kniebeugen.</translation>
+    </message>
+    <message>
+        <source>IMU of the first segment (acc, gyr).</source>
+        <translation>IMU des ersten Segments (acc, gyr).</translation>
+    </message>
+    <message>
+        <source>IMU of the second segment.</source>
+        <translation>IMU des zweiten Segments.</translation>
+    </message>
+    <message>
+        <source>IMU of the third segment.</source>
+        <translation>IMU des dritten Segments.</translation>
+    </message>
+    <message>
+        <source>segment, qw, qx, qy, qz (segment to sensor), axis_share, orthogonality (rad).</source>
+        <translation>segment, qw, qx, qy, qz (Segment → Sensor), axis_share, orthogonality (rad).</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::inertial::SimulateBodyProcessor</name>
+    <message>
+        <source>Simulate body IMUs</source>
+        <translation>Körper-IMUs simulieren</translation>
+    </message>
+    <message>
+        <source>Eight IMUs (sacrum, sternum, thighs, shanks, feet) with known, misaligned mounts off the joint axes: upright standing and squats for calibration, then walking or an alpine skiing run (turns 27 m apart at 20 m/s on a 26° slope), with gyroscope bias, slow drift, noise, scale, g-sensitivity, vibration and impacts. The sacrum IMU is at &lt;output&gt;, the others at &lt;output&gt;-&lt;segment&gt;; truth: segment orientations at &lt;output&gt;-segments, joint-centre positions at &lt;output&gt;-joint-centres, reference angles at &lt;output&gt;-&lt;joint&gt;-reference, the true mounts per side at &lt;output&gt;-right-mounts / &lt;output&gt;-left-mounts and sensor-to-joint vectors at &lt;output&gt;-joint-vectors.</source>
+        <translation>Acht IMUs (Kreuzbein, Brustbein, Oberschenkel, Unterschenkel, Füße) mit bekannten, verdrehten Montagen abseits der Gelenkachsen: aufrechtes Stehen und Kniebeugen zur Kalibrierung, dann Gehen oder eine Alpinfahrt (Schwünge 27 m auseinander bei 20 m/s auf einem 26°-Hang), mit Gyroskop-Bias, langsamer Drift, Rauschen, Skalierung, g-Empfindlichkeit, Vibration und Stößen. Die Kreuzbein-IMU liegt unter &lt;output&gt;, die anderen unter &lt;output&gt;-&lt;segment&gt;; Referenz: Segmentorientierungen unter &lt;output&gt;-segments, Gelenkzentrumspositionen unter &lt;output&gt;-joint-centres, Referenzwinkel unter &lt;output&gt;-&lt;joint&gt;-reference, die wahren Montagen je Seite unter &lt;output&gt;-right-mounts / &lt;output&gt;-left-mounts und Sensor-Gelenk-Vektoren unter &lt;output&gt;-joint-vectors.</translation>
+    </message>
+    <message>
+        <source>Random seed.</source>
+        <translation>Zufallsstartwert.</translation>
+    </message>
+    <message>
+        <source>Movement after the calibration block.</source>
+        <translation>Bewegung nach dem Kalibrierblock.</translation>
+    </message>
+    <message>
+        <source>IMU sampling rate.</source>
+        <translation>Abtastrate der IMU.</translation>
+    </message>
+    <message>
+        <source>Length of the walking or skiing phase (including the speed ramps).</source>
+        <translation>Länge der Geh- oder Skiphase (einschließlich der Geschwindigkeitsrampen).</translation>
+    </message>
+    <message>
+        <source>Number of calibration squats.</source>
+        <translation>Anzahl der Kalibrier-Kniebeugen.</translation>
+    </message>
+    <message>
+        <source>Largest constant gyroscope bias per axis (drawn uniformly).</source>
+        <translation>Größter konstanter Gyroskop-Bias je Achse (gleichverteilt gezogen).</translation>
+    </message>
+    <message>
+        <source>Slow gyroscope bias change during the motion (norm; ≈ 0.15°/s on snow, Fasel 2017 ch. 5).</source>
+        <translation>Langsame Änderung des Gyroskop-Bias während der Bewegung (Norm; ≈ 0,15°/s auf Schnee, Fasel 2017 Kap. 5).</translation>
+    </message>
+    <message>
+        <source>Gyroscope white noise per sample (standard deviation).</source>
+        <translation>Weißes Rauschen des Gyroskops je Abtastwert (Standardabweichung).</translation>
+    </message>
+    <message>
+        <source>Accelerometer white noise per sample (standard deviation).</source>
+        <translation>Weißes Rauschen des Beschleunigungsmessers je Abtastwert (Standardabweichung).</translation>
+    </message>
+    <message>
+        <source>Skiing: 15–30 Hz vibration amplitude at the feet (damped up the body).</source>
+        <translation>Skifahren: Amplitude der 15–30-Hz-Vibration an den Füßen (den Körper hinauf gedämpft).</translation>
+    </message>
+    <message>
+        <source>Skiing: mean rate of 10 ms impacts.</source>
+        <translation>Skifahren: mittlere Rate von 10-ms-Stößen.</translation>
+    </message>
+    <message>
+        <source>Sacrum IMU: acc_x..z, gyr_x..z.</source>
+        <translation>Kreuzbein-IMU: acc_x..z, gyr_x..z.</translation>
+    </message>
+    <message>
+        <source>IMU of this segment.</source>
+        <translation>IMU dieses Segments.</translation>
+    </message>
+    <message>
+        <source>True segment orientations &lt;segment&gt;_qw..qz (segment to ENU).</source>
+        <translation>Wahre Segmentorientierungen &lt;segment&gt;_qw..qz (Segment → ENU).</translation>
+    </message>
+    <message>
+        <source>True joint-centre positions &lt;joint&gt;_x..z (m, ENU).</source>
+        <translation>Wahre Gelenkzentrumspositionen &lt;joint&gt;_x..z (m, ENU).</translation>
+    </message>
+    <message>
+        <source>True joint angles (rad).</source>
+        <translation>Wahre Gelenkwinkel (rad).</translation>
+    </message>
+    <message>
+        <source>True mounts of pelvis, thorax and the right leg (segment, qw..qz).</source>
+        <translation>Wahre Montagen von Becken, Thorax und rechtem Bein (segment, qw..qz).</translation>
+    </message>
+    <message>
+        <source>True mounts of pelvis, thorax and the left leg.</source>
+        <translation>Wahre Montagen von Becken, Thorax und linkem Bein.</translation>
+    </message>
+    <message>
+        <source>True sensor-to-joint vectors (joint, proximal, distal, rp_x..z, rd_x..z in m).</source>
+        <translation>Wahre Sensor-Gelenk-Vektoren (joint, proximal, distal, rp_x..z, rd_x..z in m).</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::inertial::SimulateImuGnssProcessor</name>
+    <message>
+        <source>Simulate IMU and GNSS</source>
+        <translation>IMU und GNSS simulieren</translation>
+    </message>
+    <message>
+        <source>Simulated football session with known truth: sprints from standstill, decelerations, turns and jogging. IMU (acc, gyr, mag) with bias, noise, scale errors and saturation at &lt;output&gt;; GNSS (local ENU x, y, z, vx, vy, vz) with white and slowly correlated errors at &lt;output&gt;-gnss; the truth at &lt;output&gt;-truth.</source>
+        <translation>Simulierte Fußballeinheit mit bekannter Referenz: Sprints aus dem Stand, Abbremsungen, Richtungswechsel und Traben. IMU (acc, gyr, mag) mit Bias, Rauschen, Skalierungsfehlern und Sättigung unter &lt;output&gt;; GNSS (lokal ENU x, y, z, vx, vy, vz) mit weißen und langsam korrelierten Fehlern unter &lt;output&gt;-gnss; die Referenz unter &lt;output&gt;-truth.</translation>
+    </message>
+    <message>
+        <source>Random seed.</source>
+        <translation>Zufallsstartwert.</translation>
+    </message>
+    <message>
+        <source>Length of the session.</source>
+        <translation>Länge der Einheit.</translation>
+    </message>
+    <message>
+        <source>IMU sampling rate.</source>
+        <translation>Abtastrate der IMU.</translation>
+    </message>
+    <message>
+        <source>GNSS rate (the IMU rate must be a multiple of it).</source>
+        <translation>GNSS-Rate (die IMU-Rate muss ein Vielfaches davon sein).</translation>
+    </message>
+    <message>
+        <source>Horizontal RMS of the white GNSS position error.</source>
+        <translation>Horizontaler RMS-Wert des weißen GNSS-Positionsfehlers.</translation>
+    </message>
+    <message>
+        <source>Largest gyroscope bias per axis (drawn uniformly).</source>
+        <translation>Größter Gyroskop-Bias je Achse (gleichverteilt gezogen).</translation>
+    </message>
+    <message>
+        <source>acc_x..z, gyr_x..z, mag_x..z.</source>
+        <translation>acc_x..z, gyr_x..z, mag_x..z.</translation>
+    </message>
+    <message>
+        <source>x, y, z, vx, vy, vz (ENU).</source>
+        <translation>x, y, z, vx, vy, vz (ENU).</translation>
+    </message>
+    <message>
+        <source>True x, y, z, vx, vy, vz, qw..qz, speed, distance.</source>
+        <translation>Wahre x, y, z, vx, vy, vz, qw..qz, speed, distance.</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::inertial::SimulateLimbProcessor</name>
+    <message>
+        <source>Simulate lower limb IMUs</source>
+        <translation>Untere Extremität: IMUs simulieren</translation>
+    </message>
+    <message>
+        <source>Pelvis, thigh and shank IMUs with known, non-trivial mounts during standing, walking along a curve and squats, with the true hip and knee angles (3 DOF). Thigh IMU at &lt;output&gt;, shank and pelvis IMUs at &lt;output&gt;-shank and &lt;output&gt;-pelvis, true segment orientations at &lt;output&gt;-segments, reference angles at &lt;output&gt;-knee-reference and &lt;output&gt;-hip-reference, the true mounts as a segment-calibration table at &lt;output&gt;-mounts.</source>
+        <translation>IMUs an Becken, Oberschenkel und Unterschenkel mit bekannten, nicht trivialen Montagen beim Stehen, beim Gehen entlang einer Kurve und bei Kniebeugen, mit den wahren Hüft- und Kniewinkeln (3 Freiheitsgrade). Oberschenkel-IMU unter &lt;output&gt;, Unterschenkel- und Becken-IMU unter &lt;output&gt;-shank und &lt;output&gt;-pelvis, wahre Segmentorientierungen unter &lt;output&gt;-segments, Referenzwinkel unter &lt;output&gt;-knee-reference und &lt;output&gt;-hip-reference, die wahren Montagen als segment-calibration-Tabelle unter &lt;output&gt;-mounts.</translation>
+    </message>
+    <message>
+        <source>Random seed.</source>
+        <translation>Zufallsstartwert.</translation>
+    </message>
+    <message>
+        <source>Which leg carries the thigh and shank sensors.</source>
+        <translation>Welches Bein die Oberschenkel- und Unterschenkelsensoren trägt.</translation>
+    </message>
+    <message>
+        <source>IMU sampling rate.</source>
+        <translation>Abtastrate der IMU.</translation>
+    </message>
+    <message>
+        <source>Length of the walking phase.</source>
+        <translation>Länge der Gehphase.</translation>
+    </message>
+    <message>
+        <source>Number of squats after walking.</source>
+        <translation>Anzahl der Kniebeugen nach dem Gehen.</translation>
+    </message>
+    <message>
+        <source>Largest gyroscope bias per axis (drawn uniformly).</source>
+        <translation>Größter Gyroskop-Bias je Achse (gleichverteilt gezogen).</translation>
+    </message>
+    <message>
+        <source>Gyroscope white noise per sample (standard deviation).</source>
+        <translation>Weißes Rauschen des Gyroskops je Abtastwert (Standardabweichung).</translation>
+    </message>
+    <message>
+        <source>Accelerometer white noise per sample (standard deviation).</source>
+        <translation>Weißes Rauschen des Beschleunigungsmessers je Abtastwert (Standardabweichung).</translation>
+    </message>
+    <message>
+        <source>Thigh IMU: acc_x..z, gyr_x..z.</source>
+        <translation>Oberschenkel-IMU: acc_x..z, gyr_x..z.</translation>
+    </message>
+    <message>
+        <source>Shank IMU.</source>
+        <translation>Unterschenkel-IMU.</translation>
+    </message>
+    <message>
+        <source>Pelvis IMU.</source>
+        <translation>Becken-IMU.</translation>
+    </message>
+    <message>
+        <source>True segment orientations pelvis_qw..qz, thigh_qw..qz, shank_qw..qz (segment to ENU).</source>
+        <translation>Wahre Segmentorientierungen pelvis_qw..qz, thigh_qw..qz, shank_qw..qz (Segment → ENU).</translation>
+    </message>
+    <message>
+        <source>True knee angles (rad).</source>
+        <translation>Wahre Kniewinkel (rad).</translation>
+    </message>
+    <message>
+        <source>True hip angles (rad).</source>
+        <translation>Wahre Hüftwinkel (rad).</translation>
+    </message>
+    <message>
+        <source>True mounts (segment, qw..qz).</source>
+        <translation>Wahre Montagen (segment, qw..qz).</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::lps::LpsAlignProcessor</name>
+    <message>
+        <source>LPS frame alignment</source>
+        <translation>LPS-Koordinatenausrichtung</translation>
+    </message>
+    <message>
+        <source>Rotates and translates a beacon table so that venue marks (e.g. the finish line and a point down the home straight) land at the given coordinates.</source>
+        <translation>Dreht und verschiebt eine Bakentabelle so, dass Geländemarken (z. B. die Ziellinie und ein Punkt auf der Zielgeraden) auf den angegebenen Koordinaten liegen.</translation>
+    </message>
+    <message>
+        <source>Marks &apos;x,y,z&gt;X,Y,Z; …&apos;: LPS coordinates &gt; desired coordinates (m); or give a marks table as second input.</source>
+        <translation>Marken „x,y,z&gt;X,Y,Z; …“: LPS-Koordinaten &gt; gewünschte Koordinaten (m); oder eine Markentabelle als zweite Eingabe angeben.</translation>
+    </message>
+    <message>
+        <source>yaw: rotation about the vertical only (≥ 2 marks); full: 3D rotation (≥ 3 marks).</source>
+        <translation>yaw: nur Drehung um die Vertikale (≥ 2 Marken); full: 3D-Rotation (≥ 3 Marken).</translation>
+    </message>
+    <message>
+        <source>Beacon table to move.</source>
+        <translation>Zu verschiebende Bakentabelle.</translation>
+    </message>
+    <message>
+        <source>Optional table x, y, z, target_x, target_y, target_z (m), one row per mark.</source>
+        <translation>Optionale Tabelle x, y, z, target_x, target_y, target_z (m), eine Zeile je Marke.</translation>
+    </message>
+    <message>
+        <source>Moved beacon table; a &apos;ref&apos; row holds the moved reference node.</source>
+        <translation>Verschobene Bakentabelle; eine Zeile „ref“ enthält den verschobenen Referenzknoten.</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::lps::LpsCalibrationProcessor</name>
+    <message>
+        <source>LPS beacon calibration</source>
+        <translation>LPS-Bakenkalibrierung</translation>
+    </message>
+    <message>
+        <source>Automatic calibration of a TDoA LPS from a walk at constant height and rough initial beacon positions: outlier removal, ~200 well-spread fixes, joint least squares over beacons, tag positions and offsets (minimising nRMSR), multi-start when residuals stay high. The rotation about the reference node&apos;s vertical axis is not observable from TDoA: it is taken from the running track when the walk follows it (gauge=auto|track, thesis step 6 &quot;rotate the frame to venue marks&quot;) or from the initial guess.</source>
+        <translation>Automatische Kalibrierung eines TDoA-LPS aus einem Gang in konstanter Höhe und groben Anfangspositionen der Baken: Ausreißerentfernung, ~200 gut verteilte Positionen, gemeinsame kleinste Quadrate über Baken, Tag-Positionen und Offsets (Minimierung von nRMSR), Mehrfachstart, wenn die Residuen hoch bleiben. Die Drehung um die Vertikalachse des Referenzknotens ist aus TDoA nicht beobachtbar: sie wird der Laufbahn entnommen, wenn der Gang ihr folgt (gauge=auto|track, Schritt 6 der Arbeit „das System an Geländemarken ausrichten“), oder der Anfangsschätzung.</translation>
+    </message>
+    <message>
+        <source>Height of the tag during the walk in the LPS frame; absent = estimated (one unknown for the whole walk).</source>
+        <translation>Höhe des Tags während des Gangs im LPS-System; fehlt sie, wird sie geschätzt (eine Unbekannte für den ganzen Gang).</translation>
+    </message>
+    <message>
+        <source>Prior mean of the estimated walk height (hand-held tag).</source>
+        <translation>A-priori-Mittelwert der geschätzten Ganghöhe (in der Hand gehaltener Tag).</translation>
+    </message>
+    <message>
+        <source>Prior standard deviation of the estimated walk height.</source>
+        <translation>A-priori-Standardabweichung der geschätzten Ganghöhe.</translation>
+    </message>
+    <message>
+        <source>Fixes spread over the area used for the calibration (thesis: 200); 0 = all.</source>
+        <translation>Über die Fläche verteilte Positionen für die Kalibrierung (Arbeit: 200); 0 = alle.</translation>
+    </message>
+    <message>
+        <source>Outlier test on the residuals.</source>
+        <translation>Ausreißertest auf den Residuen.</translation>
+    </message>
+    <message>
+        <source>Significance of the Grubbs test.</source>
+        <translation>Signifikanzniveau des Grubbs-Tests.</translation>
+    </message>
+    <message>
+        <source>Horizontal uncertainty of the initial beacon positions (weak prior).</source>
+        <translation>Horizontale Unsicherheit der Anfangspositionen der Baken (schwacher Prior).</translation>
+    </message>
+    <message>
+        <source>Vertical uncertainty of the initial beacon positions (weak prior).</source>
+        <translation>Vertikale Unsicherheit der Anfangspositionen der Baken (schwacher Prior).</translation>
+    </message>
+    <message>
+        <source>Stop when nRMSR improves by less than this fraction per iteration (thesis: 0.01 %).</source>
+        <translation>Anhalten, wenn sich nRMSR je Iteration um weniger als diesen Anteil verbessert (Arbeit: 0,01 %).</translation>
+    </message>
+    <message>
+        <source>Starts from re-perturbed initial positions while nRMSR stays above restart_nrmsr.</source>
+        <translation>Neustarts aus erneut gestörten Anfangspositionen, solange nRMSR über restart_nrmsr bleibt.</translation>
+    </message>
+    <message>
+        <source>nRMSR above which the calibration restarts (about 3× the ranging noise).</source>
+        <translation>nRMSR, über dem die Kalibrierung neu startet (etwa das 3-Fache des Entfernungsrauschens).</translation>
+    </message>
+    <message>
+        <source>Seed of the restart perturbations (reproducible).</source>
+        <translation>Startwert der Neustart-Störungen (reproduzierbar).</translation>
+    </message>
+    <message>
+        <source>Rotation about the reference node&apos;s vertical axis. auto: fit the walk to a line parallel to the track and use that rotation if the fit is tight, covers the lap and agrees with the guess, else the guess; guess: from the initial beacon table only; track: always from the track fit.</source>
+        <translation>Drehung um die Vertikalachse des Referenzknotens. auto: den Gang an eine zur Laufbahn parallele Linie anpassen und diese Drehung verwenden, wenn die Anpassung eng ist, die Runde abdeckt und mit der Schätzung übereinstimmt, sonst die Schätzung; guess: nur aus der anfänglichen Bakentabelle; track: immer aus der Bahnanpassung.</translation>
+    </message>
+    <message>
+        <source>Track geometry the walk follows: a name under the project&apos;s /geometry or a built-in (iaaf-400m, indoor-200m). Used by gauge=auto|track.</source>
+        <translation>Bahngeometrie, der der Gang folgt: ein Name unter /geometry des Projekts oder eine eingebaute (iaaf-400m, indoor-200m). Verwendet von gauge=auto|track.</translation>
+    </message>
+    <message>
+        <source>Track origin x in LPS coordinates (overrides the geometry&apos;s pose).</source>
+        <translation>Ursprung x der Bahn in LPS-Koordinaten (überschreibt die Lage der Geometrie).</translation>
+    </message>
+    <message>
+        <source>Track origin y in LPS coordinates.</source>
+        <translation>Ursprung y der Bahn in LPS-Koordinaten.</translation>
+    </message>
+    <message>
+        <source>Rotation of the track frame in LPS coordinates (counter-clockwise).</source>
+        <translation>Drehung des Bahnsystems in LPS-Koordinaten (gegen den Uhrzeigersinn).</translation>
+    </message>
+    <message>
+        <source>gauge=auto: largest RMS distance of the walk from its fitted track line.</source>
+        <translation>gauge=auto: größter RMS-Abstand des Gangs von seiner angepassten Bahnlinie.</translation>
+    </message>
+    <message>
+        <source>gauge=auto: horizontal error of the initial guess for the agreement test (the track rotation must agree with the guess within 3σ); absent = prior_sigma_xy.</source>
+        <translation>gauge=auto: horizontaler Fehler der Anfangsschätzung für den Übereinstimmungstest (die Bahndrehung muss innerhalb 3σ mit der Schätzung übereinstimmen); fehlt er, gilt prior_sigma_xy.</translation>
+    </message>
+    <message>
+        <source>Beacons too few, clustered or collinear for the walk&apos;s area (horizontal spread below 1 m or below 1/50 of the area&apos;s extent): refuse the calibration, or only report it (report attributes geometry, geometry_reason).</source>
+        <translation>Baken zu wenige, zu dicht beieinander oder auf einer Linie für die Fläche des Gangs (horizontale Streuung unter 1 m oder unter 1/50 der Ausdehnung der Fläche): die Kalibrierung ablehnen oder es nur melden (Attribute geometry, geometry_reason im Bericht).</translation>
+    </message>
+    <message>
+        <source>Widen the prior to the guess error the first start finds (σ̂ from the horizontal shifts) when it exceeds 1.5 × prior_sigma_xy, and restart around that solution; for guesses metres off (aerial image, GNSS).</source>
+        <translation>Den Prior auf den Schätzfehler erweitern, den der erste Start findet (σ̂ aus den horizontalen Verschiebungen), wenn er 1,5 × prior_sigma_xy übersteigt, und um diese Lösung neu starten; für Schätzungen, die Meter daneben liegen (Luftbild, GNSS).</translation>
+    </message>
+    <message>
+        <source>Height plausibility: beacons are mounted above the walking tag. A planar walk cannot tell a beacon from its reflection in the walk plane; reflections below are flipped back (else each reflection is tested on nRMSR).</source>
+        <translation>Plausibilität der Höhe: Baken sind über dem gehenden Tag montiert. Ein ebener Gang kann eine Bake nicht von ihrem Spiegelbild in der Gangebene unterscheiden; Spiegelbilder darunter werden zurückgeklappt (sonst wird jedes Spiegelbild über nRMSR geprüft).</translation>
+    </message>
+    <message>
+        <source>beacons_above_walk: least height of a beacon above the walk plane.</source>
+        <translation>beacons_above_walk: Mindesthöhe einer Bake über der Gangebene.</translation>
+    </message>
+    <message>
+        <source>gauge=auto|track: one extra start with the walk&apos;s tags on a line parallel to the track; it is taken when at least 80 % of its tags lie within 3 × track_sigma of the line (nRMSR alone does not see a wrong geometry).</source>
+        <translation>gauge=auto|track: ein zusätzlicher Start mit den Tags des Gangs auf einer zur Bahn parallelen Linie; er wird genommen, wenn mindestens 80 % seiner Tags innerhalb 3 × track_sigma der Linie liegen (nRMSR allein erkennt eine falsche Geometrie nicht).</translation>
+    </message>
+    <message>
+        <source>track_constraint: σ of the walk&apos;s lateral offset about its line.</source>
+        <translation>track_constraint: σ des seitlichen Versatzes des Gangs um seine Linie.</translation>
+    </message>
+    <message>
+        <source>Relative nRMSR change that stops the final least-squares pass (the beacon heights lie in a flat valley the 0.01 % rule stops in).</source>
+        <translation>Relative nRMSR-Änderung, die den letzten Kleinste-Quadrate-Durchgang beendet (die Bakenhöhen liegen in einem flachen Tal, in dem die 0,01-%-Regel anhält).</translation>
+    </message>
+    <message>
+        <source>gauge=auto: least share of the lap (10 m bins) the walk must visit; on an oval also both bends.</source>
+        <translation>gauge=auto: kleinster Anteil der Runde (10-m-Abschnitte), den der Gang besuchen muss; auf einem Oval auch beide Kurven.</translation>
+    </message>
+    <message>
+        <source>TDoA readings of the calibration walk (tag at constant height, whole area).</source>
+        <translation>TDoA-Messungen des Kalibriergangs (Tag in konstanter Höhe, ganze Fläche).</translation>
+    </message>
+    <message>
+        <source>Initial beacon positions (site plan, aerial image, GNSS), from any recording.</source>
+        <translation>Anfangspositionen der Baken (Lageplan, Luftbild, GNSS), aus beliebiger Aufnahme.</translation>
+    </message>
+    <message>
+        <source>Optional surveyed beacon table: adds nRMSR_ref and η to the report.</source>
+        <translation>Optionale vermessene Bakentabelle: ergänzt nRMSR_ref und η im Bericht.</translation>
+    </message>
+    <message>
+        <source>Calibrated beacon table id, x, y, z (m).</source>
+        <translation>Kalibrierte Bakentabelle id, x, y, z (m).</translation>
+    </message>
+    <message>
+        <source>Per beacon: rms_residual (m), readings, shift (m); attributes: nRMSR before/after, η, walk height.</source>
+        <translation>Je Bake: rms_residual (m), readings, shift (m); Attribute: nRMSR vorher/nachher, η, Ganghöhe.</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::lps::LpsPositioningProcessor</name>
+    <message>
+        <source>LPS positioning (TDoA, ranges)</source>
+        <translation>LPS-Positionierung (TDoA, Entfernungen)</translation>
+    </message>
+    <message>
+        <source>Tag positions and clock offsets from TDoA readings and a beacon table, one fix per instant (2D at tag_height or 3D), with beacon selection against NLOS: all, IRLS (bisquare, 2.5·MAD), largest-residual rejection or the field of view of the body-worn tag. Two-way ranges (lps-range): ToA fixes on epochs merged from the anchors&apos; own report times, with all beacons or IRLS.</source>
+        <translation>Tag-Positionen und Uhrenoffsets aus TDoA-Messungen und einer Bakentabelle, eine Position je Zeitpunkt (2D auf tag_height oder 3D), mit Bakenauswahl gegen NLOS: alle, IRLS (Bisquare, 2,5·MAD), Verwerfen des größten Residuums oder das Sichtfeld des am Körper getragenen Tags. Zweiwege-Entfernungen (lps-range): ToA-Positionen auf Epochen, die aus den eigenen Meldezeiten der Anker zusammengeführt werden, mit allen Baken oder IRLS.</translation>
+    </message>
+    <message>
+        <source>2d solves x, y at tag_height; 3d also z; auto = 3d only when the beacons&apos; height span is at least 30 % of their horizontal extent (else z is ill-conditioned).</source>
+        <translation>2d löst x, y auf tag_height; 3d auch z; auto = 3d nur, wenn die Höhenspanne der Baken mindestens 30 % ihrer horizontalen Ausdehnung beträgt (sonst ist z schlecht konditioniert).</translation>
+    </message>
+    <message>
+        <source>Tag height in the LPS frame for 2D fixes.</source>
+        <translation>Höhe des Tags im LPS-System für 2D-Positionen.</translation>
+    </message>
+    <message>
+        <source>Beacon selection method (thesis §3.2, Fig. 3.16): grubbs and kalman-gate drop readings whose TDoA changes abruptly (Grubbs test on each beacon&apos;s TDoA rate; a constant-velocity Kalman filter per beacon with a Mahalanobis gate) and solve with the rest; all-subsets weights readings by their residuals summed over NLOS hypotheses (Cong &amp; Zhuang); best-subset keeps the best-fitting 5 readings.</source>
+        <translation>Methode der Bakenauswahl (Arbeit §3.2, Abb. 3.16): grubbs und kalman-gate verwerfen Messungen, deren TDoA sich sprunghaft ändert (Grubbs-Test auf der TDoA-Rate jeder Bake; ein Kalman-Filter mit konstanter Geschwindigkeit je Bake mit Mahalanobis-Tor) und lösen mit den übrigen; all-subsets gewichtet Messungen nach ihren über NLOS-Hypothesen summierten Residuen (Cong &amp; Zhuang); best-subset behält die 5 am besten passenden Messungen.</translation>
+    </message>
+    <message>
+        <source>kalman-gate: squared Mahalanobis distance above which a reading is dropped.</source>
+        <translation>kalman-gate: quadrierte Mahalanobis-Distanz, über der eine Messung verworfen wird.</translation>
+    </message>
+    <message>
+        <source>grubbs: significance level of the test (thesis: 0.05).</source>
+        <translation>grubbs: Signifikanzniveau des Tests (Arbeit: 0,05).</translation>
+    </message>
+    <message>
+        <source>all-subsets: NLOS hypotheses with at most this many readings (0 = all 2^B; slow beyond 12 readings).</source>
+        <translation>all-subsets: NLOS-Hypothesen mit höchstens so vielen Messungen (0 = alle 2^B; langsam über 12 Messungen).</translation>
+    </message>
+    <message>
+        <source>Robust loss of the fix (solved with a ceres::Problem; slower).</source>
+        <translation>Robuste Verlustfunktion der Position (gelöst mit einem ceres::Problem; langsamer).</translation>
+    </message>
+    <message>
+        <source>Residual at which the robust loss leaves its quadratic part.</source>
+        <translation>Residuum, ab dem die robuste Verlustfunktion ihren quadratischen Teil verlässt.</translation>
+    </message>
+    <message>
+        <source>Fewest beacons per fix (thesis: 4; TDoA needs at least 4, 2D ranges 3).</source>
+        <translation>Wenigste Baken je Position (Arbeit: 4; TDoA braucht mindestens 4, 2D-Entfernungen 3).</translation>
+    </message>
+    <message>
+        <source>Ranges: one fix every this many seconds from each anchor&apos;s newest range.</source>
+        <translation>Entfernungen: eine Position alle so viele Sekunden aus der neuesten Entfernung jedes Ankers.</translation>
+    </message>
+    <message>
+        <source>Ranges: a range older than this at the epoch is left out (never extrapolated).</source>
+        <translation>Entfernungen: eine zur Epoche ältere Entfernung wird weggelassen (nie extrapoliert).</translation>
+    </message>
+    <message>
+        <source>IRLS: bisquare cut-off in units of 1.4826·MAD of the residuals.</source>
+        <translation>IRLS: Bisquare-Grenze in Einheiten von 1,4826·MAD der Residuen.</translation>
+    </message>
+    <message>
+        <source>largest-residual: stop rejecting when the mean |residual| is below this.</source>
+        <translation>largest-residual: das Verwerfen beenden, wenn das mittlere |Residuum| darunter liegt.</translation>
+    </message>
+    <message>
+        <source>field-of-view: κ of the rule G_t(φ) − L_fs + κ &gt; 0 (Eqn. 3.8).</source>
+        <translation>field-of-view: κ der Regel G_t(φ) − L_fs + κ &gt; 0 (Gl. 3.8).</translation>
+    </message>
+    <message>
+        <source>field-of-view: body-worn tag pattern as &apos;angle_deg:linear_gain,…&apos; (0° = forward; 0…180° is mirrored); empty = ((1+cos φ)/2)^6 with −30 dB behind.</source>
+        <translation>field-of-view: Muster des am Körper getragenen Tags als „angle_deg:linear_gain,…“ (0° = vorn; 0…180° wird gespiegelt); leer = ((1+cos φ)/2)^6 mit −30 dB hinten.</translation>
+    </message>
+    <message>
+        <source>field-of-view: carrier frequency for the free-space loss.</source>
+        <translation>field-of-view: Trägerfrequenz für den Freiraumverlust.</translation>
+    </message>
+    <message>
+        <source>field-of-view: afterwards reject gross outliers among the beacons in view (leave-one-out), and re-solve a fix more than 4 m from the median of the last five fixes with IRLS over all beacons.</source>
+        <translation>field-of-view: danach grobe Ausreißer unter den sichtbaren Baken verwerfen (leave-one-out) und eine Position, die mehr als 4 m vom Median der letzten fünf Positionen abweicht, mit IRLS über alle Baken neu lösen.</translation>
+    </message>
+    <message>
+        <source>field-of-view: body heading from the track geometry and running direction, from the orientation input (sensor x axis = forward) or from the direction of travel.</source>
+        <translation>field-of-view: Körperrichtung aus der Bahngeometrie und der Laufrichtung, aus der Orientierungseingabe (Sensorachse x = vorn) oder aus der Bewegungsrichtung.</translation>
+    </message>
+    <message>
+        <source>field-of-view, heading=track: project geometry name or built-in track; the LPS frame must be the track&apos;s (see lps-align).</source>
+        <translation>field-of-view, heading=track: Geometriename im Projekt oder eingebaute Bahn; das LPS-System muss das der Bahn sein (siehe lps-align).</translation>
+    </message>
+    <message>
+        <source>field-of-view, heading=track: running direction (athletics: counter-clockwise).</source>
+        <translation>field-of-view, heading=track: Laufrichtung (Leichtathletik: gegen den Uhrzeigersinn).</translation>
+    </message>
+    <message>
+        <source>TDoA readings t, beacon, dt (s), several rows per instant; or two-way ranges t, beacon, range (m).</source>
+        <translation>TDoA-Messungen t, beacon, dt (s), mehrere Zeilen je Zeitpunkt; oder Zweiwege-Entfernungen t, beacon, range (m).</translation>
+    </message>
+    <message>
+        <source>Beacon table id, x, y, z (m), from any recording; a row &apos;ref&apos; places the reference node.</source>
+        <translation>Bakentabelle id, x, y, z (m), aus beliebiger Aufnahme; eine Zeile „ref“ platziert den Referenzknoten.</translation>
+    </message>
+    <message>
+        <source>Optional orientation (qw, qx, qy, qz) for heading=orientation.</source>
+        <translation>Optionale Orientierung (qw, qx, qy, qz) für heading=orientation.</translation>
+    </message>
+    <message>
+        <source>t, x, y, z (m), offset (s), rms_residual (m), n_beacons, dop (dilution of precision) per fix.</source>
+        <translation>t, x, y, z (m), offset (s), rms_residual (m), n_beacons, dop (Dilution of Precision) je Position.</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::lps::SimulateLpsProcessor</name>
+    <message>
+        <source>Simulate LPS venue and recording</source>
+        <translation>LPS-Gelände und -Aufnahme simulieren</translation>
+    </message>
+    <message>
+        <source>Simulated TDoA venue around a 400 m track and a calibration walk or a run on it: 7 µs offset, 0.1 m noise, 1 % positive outliers of 20 m, optional body-shadowing NLOS; plus surveyed and perturbed beacon tables and the true trajectory.</source>
+        <translation>Simuliertes TDoA-Gelände um eine 400-m-Bahn und ein Kalibriergang oder ein Lauf darauf: 7 µs Offset, 0,1 m Rauschen, 1 % positive Ausreißer von 20 m, optional NLOS durch Abschattung des Körpers; dazu vermessene und gestörte Bakentabellen und die wahre Trajektorie.</translation>
+    </message>
+    <message>
+        <source>walk: calibration walk in lane 1 (1.4 m/s, 1 Hz, 1.0 m); run: a runner (6 m/s, 10 Hz, 1.2 m).</source>
+        <translation>walk: Kalibriergang auf Bahn 1 (1,4 m/s, 1 Hz, 1,0 m); run: ein Läufer (6 m/s, 10 Hz, 1,2 m).</translation>
+    </message>
+    <message>
+        <source>Seed of the measurement noise.</source>
+        <translation>Startwert des Messrauschens.</translation>
+    </message>
+    <message>
+        <source>Seed of the venue and the initial guess.</source>
+        <translation>Startwert des Geländes und der Anfangsschätzung.</translation>
+    </message>
+    <message>
+        <source>Number of beacons.</source>
+        <translation>Anzahl der Baken.</translation>
+    </message>
+    <message>
+        <source>Laps of the 400 m track.</source>
+        <translation>Runden der 400-m-Bahn.</translation>
+    </message>
+    <message>
+        <source>Lane whose running line is followed.</source>
+        <translation>Bahn, deren Laufline gefolgt wird.</translation>
+    </message>
+    <message>
+        <source>Speed; 0 = scenario default.</source>
+        <translation>Geschwindigkeit; 0 = Vorgabe des Szenarios.</translation>
+    </message>
+    <message>
+        <source>Fix rate; 0 = scenario default.</source>
+        <translation>Positionsrate; 0 = Vorgabe des Szenarios.</translation>
+    </message>
+    <message>
+        <source>Tag height; negative = scenario default (walk 1.0 m, run 1.2 m).</source>
+        <translation>Höhe des Tags; negativ = Vorgabe des Szenarios (Gang 1,0 m, Lauf 1,2 m).</translation>
+    </message>
+    <message>
+        <source>Time of the first instant.</source>
+        <translation>Zeit des ersten Zeitpunkts.</translation>
+    </message>
+    <message>
+        <source>Horizontal error of the initial guess (thesis Table 3.2).</source>
+        <translation>Horizontaler Fehler der Anfangsschätzung (Arbeit Tabelle 3.2).</translation>
+    </message>
+    <message>
+        <source>Vertical error of the initial guess.</source>
+        <translation>Vertikaler Fehler der Anfangsschätzung.</translation>
+    </message>
+    <message>
+        <source>TDoA noise σ as a distance (c·σ_t).</source>
+        <translation>TDoA-Rauschen σ als Distanz (c·σ_t).</translation>
+    </message>
+    <message>
+        <source>Share of readings that are outliers.</source>
+        <translation>Anteil der Messungen, die Ausreißer sind.</translation>
+    </message>
+    <message>
+        <source>Outlier σ as a distance (positive errors).</source>
+        <translation>σ der Ausreißer als Distanz (positive Fehler).</translation>
+    </message>
+    <message>
+        <source>Body-shadowing NLOS of a chest-worn tag (run scenario).</source>
+        <translation>NLOS durch Körperabschattung eines an der Brust getragenen Tags (Szenario run).</translation>
+    </message>
+    <message>
+        <source>Offset t_off common to all beacons.</source>
+        <translation>Für alle Baken gemeinsamer Offset t_off.</translation>
+    </message>
+    <message>
+        <source>TDoA readings t, beacon, dt (s).</source>
+        <translation>TDoA-Messungen t, beacon, dt (s).</translation>
+    </message>
+    <message>
+        <source>Surveyed beacon table.</source>
+        <translation>Vermessene Bakentabelle.</translation>
+    </message>
+    <message>
+        <source>Perturbed initial beacon table.</source>
+        <translation>Gestörte anfängliche Bakentabelle.</translation>
+    </message>
+    <message>
+        <source>True tag trajectory t, x, y, z (m).</source>
+        <translation>Wahre Trajektorie des Tags t, x, y, z (m).</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::metrics::SessionMetricsProcessor</name>
+    <message>
+        <source>Session metrics</source>
+        <translation>Einheitskennzahlen</translation>
+    </message>
+    <message>
+        <source>The coach&apos;s metrics per period (whole session, annotated halves or drills, consecutive windows): distance, maximum speed, distance per speed zone, high-speed running, sprints, accelerations and decelerations, peak distance over 1, 3 and 5 min, metabolic power and energy (di Prampero 2005, Osgnach 2010), PlayerLoad from an IMU and action counts from annotations. Raw positions are smoothed first by the robust Kalman smoother (noise estimated from the data), because raw positions overstate distance.</source>
+        <translation>Die Kennzahlen des Trainers je Abschnitt (ganze Einheit, annotierte Halbzeiten oder Übungen, aufeinanderfolgende Fenster): Distanz, Höchstgeschwindigkeit, Distanz je Geschwindigkeitszone, Hochgeschwindigkeitslaufen, Sprints, Beschleunigungen und Abbremsungen, Spitzendistanz über 1, 3 und 5 min, metabolische Leistung und Energie (di Prampero 2005, Osgnach 2010), PlayerLoad aus einer IMU und Aktionszahlen aus Annotationen. Rohpositionen werden zuerst mit dem robusten Kalman-Glätter geglättet (Rauschen aus den Daten geschätzt), weil Rohpositionen die Distanz überschätzen.</translation>
+    </message>
+    <message>
+        <source>auto: smooth raw fixes (lps-position, gnss) with the robust Kalman smoother and use a trajectory (position-filter output) as it is; none: raw positions, speed by central differences (overstates distance and speed; for comparison).</source>
+        <translation>auto: Rohpositionen (lps-position, gnss) mit dem robusten Kalman-Glätter glätten und eine Trajektorie (Ausgabe von position-filter) unverändert verwenden; none: Rohpositionen, Geschwindigkeit durch zentrale Differenzen (überschätzt Distanz und Geschwindigkeit; zum Vergleich).</translation>
+    </message>
+    <message>
+        <source>Motion model of the smoother: constant velocity (white-noise acceleration; its smoothed speed keeps the accelerations of team sports, docs/validation/session-metrics.md) or constant turn rate and acceleration.</source>
+        <translation>Bewegungsmodell des Glätters: konstante Geschwindigkeit (Beschleunigung als weißes Rauschen; seine geglättete Geschwindigkeit erhält die Beschleunigungen der Mannschaftssportarten, docs/validation/session-metrics.md) oder konstante Drehrate und Beschleunigung.</translation>
+    </message>
+    <message>
+        <source>Sampling rate of the smoothed motion the metrics are computed on.</source>
+        <translation>Abtastrate der geglätteten Bewegung, auf der die Kennzahlen berechnet werden.</translation>
+    </message>
+    <message>
+        <source>Outages longer than this are not bridged: no distance is counted across them.</source>
+        <translation>Ausfälle, die länger dauern, werden nicht überbrückt: über sie wird keine Distanz gezählt.</translation>
+    </message>
+    <message>
+        <source>The smoother&apos;s noise is estimated on this many evenly spread chunks of the recording (0 = on all of it).</source>
+        <translation>Das Rauschen des Glätters wird auf so vielen gleichmäßig verteilten Abschnitten der Aufnahme geschätzt (0 = auf der ganzen).</translation>
+    </message>
+    <message>
+        <source>Length of one chunk of the noise estimate.</source>
+        <translation>Länge eines Abschnitts der Rauschschätzung.</translation>
+    </message>
+    <message>
+        <source>Lower edges of the speed zones in km/h (Bradley et al. 2009; the vendors&apos; defaults); the last zone is open.</source>
+        <translation>Untergrenzen der Geschwindigkeitszonen in km/h (Bradley et al. 2009; die Vorgaben der Hersteller); die letzte Zone ist offen.</translation>
+    </message>
+    <message>
+        <source>High-speed running above this speed (19.8 km/h, Bradley et al. 2009).</source>
+        <translation>Hochgeschwindigkeitslaufen über dieser Geschwindigkeit (19,8 km/h, Bradley et al. 2009).</translation>
+    </message>
+    <message>
+        <source>Sprint entry speed (25.2 km/h, Bradley et al. 2009).</source>
+        <translation>Eintrittsgeschwindigkeit eines Sprints (25,2 km/h, Bradley et al. 2009).</translation>
+    </message>
+    <message>
+        <source>max_speed is the highest speed held at least this long, so that one noisy sample cannot set it (0 = the largest single sample).</source>
+        <translation>max_speed ist die höchste Geschwindigkeit, die mindestens so lange gehalten wird, damit ein verrauschter Abtastwert sie nicht bestimmen kann (0 = der größte einzelne Abtastwert).</translation>
+    </message>
+    <message>
+        <source>Minimum time above the sprint speed (1 s, Di Salvo et al. 2010).</source>
+        <translation>Mindestzeit über der Sprintgeschwindigkeit (1 s, Di Salvo et al. 2010).</translation>
+    </message>
+    <message>
+        <source>Acceleration and deceleration efforts at or beyond ± this (3 m/s², Akenhead et al. 2013).</source>
+        <translation>Beschleunigungs- und Abbremsaktionen bei oder jenseits von ± diesem Wert (3 m/s², Akenhead et al. 2013).</translation>
+    </message>
+    <message>
+        <source>Minimum duration of an acceleration or deceleration effort (0.5 s, Varley et al. 2012).</source>
+        <translation>Mindestdauer einer Beschleunigungs- oder Abbremsaktion (0,5 s, Varley et al. 2012).</translation>
+    </message>
+    <message>
+        <source>Peak distance over these window lengths (s).</source>
+        <translation>Spitzendistanz über diese Fensterlängen (s).</translation>
+    </message>
+    <message>
+        <source>Consecutive windows of this length as extra rows (0 = none).</source>
+        <translation>Aufeinanderfolgende Fenster dieser Länge als zusätzliche Zeilen (0 = keine).</translation>
+    </message>
+    <message>
+        <source>Annotation labels that are periods (halves, drills), comma-separated; auto: interval annotations whose label matches period_pattern. Other annotations are counted as actions.</source>
+        <translation>Annotationsbezeichnungen, die Abschnitte sind (Halbzeiten, Übungen), durch Kommas getrennt; auto: Intervall-Annotationen, deren Bezeichnung zu period_pattern passt. Andere Annotationen werden als Aktionen gezählt.</translation>
+    </message>
+    <message>
+        <source>Regular expression (case-insensitive) of period labels for periods=auto.</source>
+        <translation>Regulärer Ausdruck (ohne Groß-/Kleinschreibung) für Abschnittsbezeichnungen bei periods=auto.</translation>
+    </message>
+    <message>
+        <source>A track (a name under the project&apos;s /geometry or a built-in: iaaf-400m, indoor-200m): adds a row per lap and per split_distance, from the progress along the track. Empty: no track.</source>
+        <translation>Eine Bahn (ein Name unter /geometry des Projekts oder eine eingebaute: iaaf-400m, indoor-200m): ergänzt eine Zeile je Runde und je split_distance, aus dem Fortschritt entlang der Bahn. Leer: keine Bahn.</translation>
+    </message>
+    <message>
+        <source>Split length along lane 1&apos;s running line with a track (0 = laps only).</source>
+        <translation>Zwischenzeitlänge entlang der Laufline von Bahn 1 bei einer Bahn (0 = nur Runden).</translation>
+    </message>
+    <message>
+        <source>KT of the energy cost: 1.29 for grass (Osgnach et al. 2010), 1 for a track.</source>
+        <translation>KT der Energiekosten: 1,29 für Rasen (Osgnach et al. 2010), 1 für eine Bahn.</translation>
+    </message>
+    <message>
+        <source>High metabolic power distance above this power (20 W/kg, Osgnach et al. 2010).</source>
+        <translation>Distanz mit hoher metabolischer Leistung über dieser Leistung (20 W/kg, Osgnach et al. 2010).</translation>
+    </message>
+    <message>
+        <source>Positions t, x, y (m): LPS fixes, GNSS (x, y in the project&apos;s ENU frame) or a filtered trajectory.</source>
+        <translation>Positionen t, x, y (m): LPS-Positionen, GNSS (x, y im ENU-System des Projekts) oder eine gefilterte Trajektorie.</translation>
+    </message>
+    <message>
+        <source>Optional IMU (acc_x, acc_y, acc_z) for PlayerLoad.</source>
+        <translation>Optionale IMU (acc_x, acc_y, acc_z) für PlayerLoad.</translation>
+    </message>
+    <message>
+        <source>One row per period: period, start, end, duration, distance, max_speed, zone distances, hsr_distance, sprint/acceleration/deceleration counts, peak distances, metabolic energy and power, high-power distance, player_load, actions_&lt;label&gt;.</source>
+        <translation>Eine Zeile je Abschnitt: period, start, end, duration, distance, max_speed, Zonendistanzen, hsr_distance, Anzahl der Sprints/Beschleunigungen/Abbremsungen, Spitzendistanzen, metabolische Energie und Leistung, Distanz mit hoher Leistung, player_load, actions_&lt;label&gt;.</translation>
+    </message>
+    <message>
+        <source>The motion the metrics were computed on: x, y (m), speed (m/s), accel (m/s^2), valid.</source>
+        <translation>Die Bewegung, auf der die Kennzahlen berechnet wurden: x, y (m), speed (m/s), accel (m/s^2), valid.</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::positioning::AnchorGateAverageProcessor</name>
+    <message>
+        <source>Average gate positions over runs (GNSS-free)</source>
+        <translation>Torpositionen über Läufe mitteln (ohne GNSS)</translation>
+    </message>
+    <message>
+        <source>GNSS-free gate positions (Fasel thesis ch. 10): the gate estimates of several anchor-smoother runs, each aligned and scaled to the mean first and last gates, averaged gate by gate.</source>
+        <translation>Torpositionen ohne GNSS (Arbeit von Fasel Kap. 10): die Torschätzungen mehrerer anchor-smoother-Läufe, jeweils auf das mittlere erste und letzte Tor ausgerichtet und skaliert, Tor für Tor gemittelt.</translation>
+    </message>
+    <message>
+        <source>Crossings table of an anchor-smoother run.</source>
+        <translation>Durchfahrtstabelle eines anchor-smoother-Laufs.</translation>
+    </message>
+    <message>
+        <source>Averaged gates: id, east, north, up (m).</source>
+        <translation>Gemittelte Tore: id, east, north, up (m).</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::positioning::AnchorSmootherProcessor</name>
+    <message>
+        <source>Anchor-point smoother (gate magnets)</source>
+        <translation>Ankerpunkt-Glätter (Tormagnete)</translation>
+    </message>
+    <message>
+        <source>Sacrum trajectory from an IMU with magnetometer, its orientation and the gate positions (Fasel thesis ch. 9): gate crossings from magnetometer peaks (eq. 9.1), a 16-state extended Kalman smoother (constant acceleration, ZUPT at start and finish) with anchor updates at the gates in two passes (1 m, then 0.2 m), low-passed at 5 Hz.</source>
+        <translation>Kreuzbeintrajektorie aus einer IMU mit Magnetometer, ihrer Orientierung und den Torpositionen (Arbeit von Fasel Kap. 9): Tordurchfahrten aus Magnetometerspitzen (Gl. 9.1), ein erweiterter Kalman-Glätter mit 16 Zuständen (konstante Beschleunigung, ZUPT an Start und Ziel) mit Anker-Updates an den Toren in zwei Durchgängen (1 m, dann 0,2 m), mit 5 Hz tiefpassgefiltert.</translation>
+    </message>
+    <message>
+        <source>Gate detection: magnet field in units of the ambient field (eq. 9.1: 0.3 = 0.88 m; the thesis saw magnets up to 0.8 m).</source>
+        <translation>Torerkennung: Magnetfeld in Einheiten des Umgebungsfelds (Gl. 9.1: 0,3 = 0,88 m; die Arbeit sah Magnete bis 0,8 m).</translation>
+    </message>
+    <message>
+        <source>Shortest time between two gate crossings.</source>
+        <translation>Kürzeste Zeit zwischen zwei Tordurchfahrten.</translation>
+    </message>
+    <message>
+        <source>Sacrum position at the start as east,north,up (m) in the gates&apos; frame; empty = from the matched gates.</source>
+        <translation>Kreuzbeinposition am Start als east,north,up (m) im System der Tore; leer = aus den zugeordneten Toren.</translation>
+    </message>
+    <message>
+        <source>rest-aligned: re-integrate the gyroscope from the stream&apos;s start orientation with the bias of the start rest and remove the tilt drift found at the finish rest (thesis ch. 3-4, 9); stream: use the orientation stream as it is.</source>
+        <translation>rest-aligned: das Gyroskop ab der Startorientierung des Datenstroms mit dem Bias der Startruhe neu integrieren und die bei der Zielruhe gefundene Neigungsdrift entfernen (Arbeit Kap. 3–4, 9); stream: den Orientierungsdatenstrom unverändert verwenden.</translation>
+    </message>
+    <message>
+        <source>Smoother rate (the IMU is block-averaged onto it).</source>
+        <translation>Rate des Glätters (die IMU wird blockweise darauf gemittelt).</translation>
+    </message>
+    <message>
+        <source>Acceleration accuracy (thesis sec. 9.2.2: 1.5 m/s^2).</source>
+        <translation>Genauigkeit der Beschleunigung (Arbeit Abschn. 9.2.2: 1,5 m/s^2).</translation>
+    </message>
+    <message>
+        <source>Jerk noise floor of the constant-acceleration model; the measured acceleration change adds to it (thesis: larger noise in the turns).</source>
+        <translation>Untergrenze des Rucks im Modell konstanter Beschleunigung; die gemessene Beschleunigungsänderung kommt hinzu (Arbeit: größeres Rauschen in den Schwüngen).</translation>
+    </message>
+    <message>
+        <source>Random walk of the acceleration offset state.</source>
+        <translation>Random Walk des Beschleunigungs-Offset-Zustands.</translation>
+    </message>
+    <message>
+        <source>Anchor accuracy in the first pass (thesis: 1 m).</source>
+        <translation>Genauigkeit der Anker im ersten Durchgang (Arbeit: 1 m).</translation>
+    </message>
+    <message>
+        <source>Anchor accuracy in the second pass (thesis: 0.2 m).</source>
+        <translation>Genauigkeit der Anker im zweiten Durchgang (Arbeit: 0,2 m).</translation>
+    </message>
+    <message>
+        <source>Sacrum above the snow at a gate crossing (|d_m| of eqs. 9.2-9.5).</source>
+        <translation>Kreuzbein über dem Schnee bei einer Tordurchfahrt (|d_m| aus Gl. 9.2–9.5).</translation>
+    </message>
+    <message>
+        <source>Largest distance of a crossing from its expected gate.</source>
+        <translation>Größter Abstand einer Durchfahrt von ihrem erwarteten Tor.</translation>
+    </message>
+    <message>
+        <source>Zero-phase 2nd-order Butterworth on the output (thesis: 5 Hz); 0 = none.</source>
+        <translation>Nullphasiger Butterworth 2. Ordnung auf der Ausgabe (Arbeit: 5 Hz); 0 = keiner.</translation>
+    </message>
+    <message>
+        <source>Anchor passes (thesis: 2); 0 = ZUPT-only integration, for comparison.</source>
+        <translation>Anker-Durchgänge (Arbeit: 2); 0 = Integration nur mit ZUPT, zum Vergleich.</translation>
+    </message>
+    <message>
+        <source>Standing at start/finish: angular rate below this.</source>
+        <translation>Stehen an Start/Ziel: Drehrate unter diesem Wert.</translation>
+    </message>
+    <message>
+        <source>Standing at start/finish: gravity-free acceleration below this.</source>
+        <translation>Stehen an Start/Ziel: schwerkraftfreie Beschleunigung unter diesem Wert.</translation>
+    </message>
+    <message>
+        <source>Sacrum IMU with acc, gyr and mag.</source>
+        <translation>Kreuzbein-IMU mit acc, gyr und mag.</translation>
+    </message>
+    <message>
+        <source>Its orientation (processor orientation), one row per IMU sample.</source>
+        <translation>Ihre Orientierung (Prozessor orientation), eine Zeile je IMU-Abtastwert.</translation>
+    </message>
+    <message>
+        <source>Gates table: id, east, north, up (m), in course order.</source>
+        <translation>Tortabelle: id, east, north, up (m), in Kursreihenfolge.</translation>
+    </message>
+    <message>
+        <source>Sacrum x, y, z (m), vx, vy, vz, speed (m/s) in the gates&apos; frame.</source>
+        <translation>Kreuzbein x, y, z (m), vx, vy, vz, speed (m/s) im System der Tore.</translation>
+    </message>
+    <message>
+        <source>Detected gate crossings: t, gate, gate_to_gate (s since the previous crossing: the coach&apos;s gate-to-gate time), distance, excess, side, residual, pass-0 gate estimate.</source>
+        <translation>Erkannte Tordurchfahrten: t, gate, gate_to_gate (s seit der vorigen Durchfahrt: die Tor-zu-Tor-Zeit des Trainers), distance, excess, side, residual, Torschätzung aus Durchgang 0.</translation>
+    </message>
+    <message>
+        <source>Gate passages as predicted instants labelled &quot;gate&quot; (a lane in the action timeline).</source>
+        <translation>Tordurchfahrten als vorhergesagte Zeitpunkte mit der Bezeichnung „gate“ (eine Spur in der Aktionszeitleiste).</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::positioning::NoiseProfileProcessor</name>
+    <message>
+        <source>Noise profile</source>
+        <translation>Rauschprofil</translation>
+    </message>
+    <message>
+        <source>Estimates the position filter&apos;s process and measurement noise and outlier gate on up to eight training recordings of LPS fixes and stores them as a profile; position-filter applies it to new recordings with noise=profile:PATH.</source>
+        <translation>Schätzt Prozess- und Messrauschen sowie das Ausreißertor des Positionsfilters auf bis zu acht Trainingsaufnahmen von LPS-Positionen und speichert sie als Profil; position-filter wendet es mit noise=profile:PATH auf neue Aufnahmen an.</translation>
+    </message>
+    <message>
+        <source>LPS fixes t, x, y (m) of one training recording from the system the profile is for.</source>
+        <translation>LPS-Positionen t, x, y (m) einer Trainingsaufnahme des Systems, für das das Profil gilt.</translation>
+    </message>
+    <message>
+        <source>One row per noise parameter: parameter, value, unit; attribute model.</source>
+        <translation>Eine Zeile je Rauschparameter: parameter, value, unit; Attribut model.</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::positioning::PositionFilterProcessor</name>
+    <message>
+        <source>Position filter</source>
+        <translation>Positionsfilter</translation>
+    </message>
+    <message>
+        <source>Robust Kalman filtering of LPS positions (EKF, UKF or square-root UKF): outlier gating by the Mahalanobis distance, output on any time grid from non-uniform input, RTS or fixed-lag smoothing, noise parameters estimated from the data, and track constraints either in an augmented motion model or as pseudo-measurements.</source>
+        <translation>Robuste Kalman-Filterung von LPS-Positionen (EKF, UKF oder Quadratwurzel-UKF): Ausreißertor über die Mahalanobis-Distanz, Ausgabe auf beliebigem Zeitraster aus ungleichmäßiger Eingabe, RTS- oder Fixed-Lag-Glättung, aus den Daten geschätzte Rauschparameter und Bahnbedingungen entweder in einem erweiterten Bewegungsmodell oder als Pseudomessungen.</translation>
+    </message>
+    <message>
+        <source>Kalman filter variant.</source>
+        <translation>Variante des Kalman-Filters.</translation>
+    </message>
+    <message>
+        <source>Motion model: CTRA (unconstrained), CTRA with track pseudo-measurements, CTRA with the track-augmented prediction, or constant velocity. auto: augmented for position fixes (on the track), constant velocity for raw ranges (no track assumed).</source>
+        <translation>Bewegungsmodell: CTRA (ohne Bedingung), CTRA mit Bahn-Pseudomessungen, CTRA mit bahnerweiterter Prädiktion oder konstante Geschwindigkeit. auto: erweitert für Positionen (auf der Bahn), konstante Geschwindigkeit für rohe Entfernungen (keine Bahn angenommen).</translation>
+    </message>
+    <message>
+        <source>Track geometry: a name under the project&apos;s /geometry or a built-in (iaaf-400m, indoor-200m). Used by model=pseudo|augmented.</source>
+        <translation>Bahngeometrie: ein Name unter /geometry des Projekts oder eine eingebaute (iaaf-400m, indoor-200m). Verwendet von model=pseudo|augmented.</translation>
+    </message>
+    <message>
+        <source>Track origin x in LPS coordinates (overrides the geometry&apos;s pose).</source>
+        <translation>Ursprung x der Bahn in LPS-Koordinaten (überschreibt die Lage der Geometrie).</translation>
+    </message>
+    <message>
+        <source>Track origin y in LPS coordinates.</source>
+        <translation>Ursprung y der Bahn in LPS-Koordinaten.</translation>
+    </message>
+    <message>
+        <source>Rotation of the track frame in LPS coordinates (counter-clockwise).</source>
+        <translation>Drehung des Bahnsystems in LPS-Koordinaten (gegen den Uhrzeigersinn).</translation>
+    </message>
+    <message>
+        <source>auto: estimate Q, R and the gate from the input itself (innovation likelihood, no ground truth); manual: use the q_*, r_* and gate parameters; profile:PATH: the values of a noise-profile table estimated on training recordings (thesis §4.4 deployment), e.g. profile:training/noise.</source>
+        <translation>auto: Q, R und das Tor aus der Eingabe selbst schätzen (Innovations-Likelihood, keine Referenz); manual: die Parameter q_*, r_* und gate verwenden; profile:PATH: die Werte einer auf Trainingsaufnahmen geschätzten noise-profile-Tabelle (Arbeit §4.4, Einsatz), z. B. profile:training/noise.</translation>
+    </message>
+    <message>
+        <source>noise=auto estimates on this many evenly spread chunks of noise_chunk seconds (a representative subsample; 0 or a shorter recording: all of it).</source>
+        <translation>noise=auto schätzt auf so vielen gleichmäßig verteilten Abschnitten von noise_chunk Sekunden (eine repräsentative Teilstichprobe; 0 oder eine kürzere Aufnahme: die ganze).</translation>
+    </message>
+    <message>
+        <source>Raw ranges, noise=auto: each beacon&apos;s ranges at least this far apart for the estimate (range errors are correlated over fractions of a second; the likelihood assumes white noise).</source>
+        <translation>Rohe Entfernungen, noise=auto: die Entfernungen jeder Bake für die Schätzung mindestens so weit auseinander (Entfernungsfehler sind über Sekundenbruchteile korreliert; die Likelihood nimmt weißes Rauschen an).</translation>
+    </message>
+    <message>
+        <source>Length of one chunk of the noise estimate.</source>
+        <translation>Länge eines Abschnitts der Rauschschätzung.</translation>
+    </message>
+    <message>
+        <source>Process noise density of the position (manual).</source>
+        <translation>Prozessrauschdichte der Position (manuell).</translation>
+    </message>
+    <message>
+        <source>Process noise density of the speed (manual).</source>
+        <translation>Prozessrauschdichte der Geschwindigkeit (manuell).</translation>
+    </message>
+    <message>
+        <source>Process noise density of the acceleration; for constant-velocity the white-noise acceleration density (m^2/s^3) (manual).</source>
+        <translation>Prozessrauschdichte der Beschleunigung; bei konstanter Geschwindigkeit die Dichte der Beschleunigung als weißes Rauschen (m^2/s^3) (manuell).</translation>
+    </message>
+    <message>
+        <source>Process noise density of the heading (manual).</source>
+        <translation>Prozessrauschdichte der Richtung (manuell).</translation>
+    </message>
+    <message>
+        <source>Process noise density of the turn rate (manual).</source>
+        <translation>Prozessrauschdichte der Drehrate (manuell).</translation>
+    </message>
+    <message>
+        <source>Measurement noise variance in x (manual).</source>
+        <translation>Varianz des Messrauschens in x (manuell).</translation>
+    </message>
+    <message>
+        <source>Measurement noise variance in y (manual).</source>
+        <translation>Varianz des Messrauschens in y (manuell).</translation>
+    </message>
+    <message>
+        <source>Pseudo-measurement variance of heading − track heading (model=pseudo, manual).</source>
+        <translation>Varianz der Pseudomessung Richtung − Bahnrichtung (model=pseudo, manuell).</translation>
+    </message>
+    <message>
+        <source>Pseudo-measurement variance of turn rate − v·curvature (model=pseudo, manual).</source>
+        <translation>Varianz der Pseudomessung Drehrate − v·Krümmung (model=pseudo, manuell).</translation>
+    </message>
+    <message>
+        <source>Pseudo-measurement variance of the acceleration after the start (model=pseudo, manual).</source>
+        <translation>Varianz der Pseudomessung der Beschleunigung nach dem Start (model=pseudo, manuell).</translation>
+    </message>
+    <message>
+        <source>Range measurement noise variance (raw ranges, manual).</source>
+        <translation>Varianz des Entfernungsmessrauschens (rohe Entfernungen, manuell).</translation>
+    </message>
+    <message>
+        <source>Raw ranges: height of the tag in the beacons&apos; frame; the filter solves x, y at this height.</source>
+        <translation>Rohe Entfernungen: Höhe des Tags im System der Baken; der Filter löst x, y auf dieser Höhe.</translation>
+    </message>
+    <message>
+        <source>Raw ranges: estimate a constant range offset per beacon (antenna delay, survey error) with the track, for up to 8 beacons.</source>
+        <translation>Rohe Entfernungen: einen konstanten Entfernungsoffset je Bake (Antennenverzögerung, Vermessungsfehler) zusammen mit der Bahn schätzen, für bis zu 8 Baken.</translation>
+    </message>
+    <message>
+        <source>Raw ranges: prior standard deviation of each range offset.</source>
+        <translation>Rohe Entfernungen: A-priori-Standardabweichung jedes Entfernungsoffsets.</translation>
+    </message>
+    <message>
+        <source>Outlier gate α on the squared Mahalanobis distance of the innovation (manual); 0 disables gating.</source>
+        <translation>Ausreißertor α auf der quadrierten Mahalanobis-Distanz der Innovation (manuell); 0 schaltet das Tor ab.</translation>
+    </message>
+    <message>
+        <source>none: causal filter output (real-time behaviour); rts: Rauch–Tung–Striebel smoothing over the whole recording; fixed-lag: smoothing with `lag` seconds of look-ahead.</source>
+        <translation>none: kausale Filterausgabe (Echtzeitverhalten); rts: Rauch–Tung–Striebel-Glättung über die ganze Aufnahme; fixed-lag: Glättung mit `lag` Sekunden Vorausschau.</translation>
+    </message>
+    <message>
+        <source>Look-ahead of the fixed-lag smoother.</source>
+        <translation>Vorausschau des Fixed-Lag-Glätters.</translation>
+    </message>
+    <message>
+        <source>model=augmented with smoother=rts: outages at least this long are bridged along the track between the smoothed states at their ends (arc length by a monotone cubic matching both speeds); 0 = off.</source>
+        <translation>model=augmented mit smoother=rts: Ausfälle mindestens dieser Länge werden entlang der Bahn zwischen den geglätteten Zuständen an ihren Enden überbrückt (Bogenlänge durch eine monotone Kubik, die beide Geschwindigkeiten trifft); 0 = aus.</translation>
+    </message>
+    <message>
+        <source>Output on a uniform grid at this rate (multiples of 1/rate); absent: at the input time stamps.</source>
+        <translation>Ausgabe auf einem gleichmäßigen Raster mit dieser Rate (Vielfache von 1/rate); fehlt sie: zu den Zeitstempeln der Eingabe.</translation>
+    </message>
+    <message>
+        <source>Longest prediction step; outages are crossed in steps of at most this length.</source>
+        <translation>Längster Prädiktionsschritt; Ausfälle werden in Schritten von höchstens dieser Länge überquert.</translation>
+    </message>
+    <message>
+        <source>Track models: switch from constant acceleration to constant velocity after the start phase.</source>
+        <translation>Bahnmodelle: nach der Startphase von konstanter Beschleunigung auf konstante Geschwindigkeit wechseln.</translation>
+    </message>
+    <message>
+        <source>Duration of the constant-acceleration phase after the detected start.</source>
+        <translation>Dauer der Phase konstanter Beschleunigung nach dem erkannten Start.</translation>
+    </message>
+    <message>
+        <source>LPS fixes t, x, y (m), possibly non-uniform, with outliers and outages; or raw two-way ranges (lps-range) filtered tightly coupled, with the beacon table.</source>
+        <translation>LPS-Positionen t, x, y (m), möglicherweise ungleichmäßig, mit Ausreißern und Ausfällen; oder rohe Zweiwege-Entfernungen (lps-range), eng gekoppelt gefiltert, mit der Bakentabelle.</translation>
+    </message>
+    <message>
+        <source>Beacon table id, x, y, z (m) for raw ranges.</source>
+        <translation>Bakentabelle id, x, y, z (m) für rohe Entfernungen.</translation>
+    </message>
+    <message>
+        <source>x, y (m), speed (m/s), heading (rad), turn_rate (rad/s), accel (m/s^2), outlier (1 if an input sample in this output sample&apos;s interval was rejected); from raw ranges also sd_x, sd_y (m), the filter&apos;s position standard deviations.</source>
+        <translation>x, y (m), speed (m/s), heading (rad), turn_rate (rad/s), accel (m/s^2), outlier (1, wenn ein Eingabe-Abtastwert im Intervall dieses Ausgabe-Abtastwerts verworfen wurde); aus rohen Entfernungen auch sd_x, sd_y (m), die Standardabweichungen der Position im Filter.</translation>
+    </message>
+    <message>
+        <source>Per input sample: outlier (0/1) and mahalanobis (squared distance d^2).</source>
+        <translation>Je Eingabe-Abtastwert: outlier (0/1) und mahalanobis (quadrierte Distanz d^2).</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::positioning::SimulateGatesProcessor</name>
+    <message>
+        <source>Simulate giant-slalom run with gate magnets</source>
+        <translation>Riesenslalom-Lauf mit Tormagneten simulieren</translation>
+    </message>
+    <message>
+        <source>Simulates a giant-slalom run (turns about 27 m apart at 15-25 m/s, standing at start and finish) with a sacrum IMU (bias, noise, gyroscope drift, vibration) and magnets buried at the gates whose field adds to the magnetometer (Fasel thesis eq. 9.1), plus the truth and the gate table.</source>
+        <translation>Simuliert einen Riesenslalom-Lauf (Schwünge etwa 27 m auseinander bei 15–25 m/s, Stehen an Start und Ziel) mit einer Kreuzbein-IMU (Bias, Rauschen, Gyroskopdrift, Vibration) und an den Toren vergrabenen Magneten, deren Feld zum Magnetometer hinzukommt (Arbeit von Fasel Gl. 9.1), dazu die Referenz und die Tortabelle.</translation>
+    </message>
+    <message>
+        <source>Random seed (deterministic).</source>
+        <translation>Zufallsstartwert (deterministisch).</translation>
+    </message>
+    <message>
+        <source>Seed of the gates&apos; magnet offsets; the same value gives the same course for several runs (0: from seed).</source>
+        <translation>Startwert der Magnetversätze der Tore; derselbe Wert ergibt denselben Kurs für mehrere Läufe (0: aus seed).</translation>
+    </message>
+    <message>
+        <source>Number of gates (one turn each).</source>
+        <translation>Anzahl der Tore (je ein Schwung).</translation>
+    </message>
+    <message>
+        <source>Distance between turns along the fall line (thesis course: 21.8-27.8 m between gates).</source>
+        <translation>Abstand zwischen den Schwüngen entlang der Falllinie (Kurs der Arbeit: 21,8–27,8 m zwischen den Toren).</translation>
+    </message>
+    <message>
+        <source>Lateral excursion of the sacrum line.</source>
+        <translation>Seitliche Auslenkung der Kreuzbeinlinie.</translation>
+    </message>
+    <message>
+        <source>Slope angle.</source>
+        <translation>Hangwinkel.</translation>
+    </message>
+    <message>
+        <source>Mean speed.</source>
+        <translation>Mittlere Geschwindigkeit.</translation>
+    </message>
+    <message>
+        <source>Slow speed variation around the mean.</source>
+        <translation>Langsame Geschwindigkeitsschwankung um den Mittelwert.</translation>
+    </message>
+    <message>
+        <source>Sampling rate of the IMU (acc, gyr, mag).</source>
+        <translation>Abtastrate der IMU (acc, gyr, mag).</translation>
+    </message>
+    <message>
+        <source>Gyroscope bias, SD per axis (0.15 deg/s drift).</source>
+        <translation>Gyroskop-Bias, SD je Achse (0,15 deg/s Drift).</translation>
+    </message>
+    <message>
+        <source>Standing time at the start and at the finish.</source>
+        <translation>Stehzeit an Start und Ziel.</translation>
+    </message>
+    <message>
+        <source>Simulated sacrum IMU: acc, gyr, mag.</source>
+        <translation>Simulierte Kreuzbein-IMU: acc, gyr, mag.</translation>
+    </message>
+    <message>
+        <source>Ground truth x, y, z (m), vx, vy, vz, speed (m/s), ENU.</source>
+        <translation>Referenz x, y, z (m), vx, vy, vz, speed (m/s), ENU.</translation>
+    </message>
+    <message>
+        <source>Magnet positions: id, east, north, up (m).</source>
+        <translation>Magnetpositionen: id, east, north, up (m).</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::positioning::SimulateTrackRunProcessor</name>
+    <message>
+        <source>Simulate track run</source>
+        <translation>Bahnlauf simulieren</translation>
+    </message>
+    <message>
+        <source>Simulates an LPS recording of a runner on a track (start acceleration, near-constant speed, lane changes) with tag noise, outlier bursts, non-uniform sampling and outages, plus the ground truth.</source>
+        <translation>Simuliert eine LPS-Aufnahme eines Läufers auf einer Bahn (Startbeschleunigung, nahezu konstante Geschwindigkeit, Bahnwechsel) mit Tag-Rauschen, Ausreißerfolgen, ungleichmäßiger Abtastung und Ausfällen, dazu die Referenz.</translation>
+    </message>
+    <message>
+        <source>Random seed (deterministic).</source>
+        <translation>Zufallsstartwert (deterministisch).</translation>
+    </message>
+    <message>
+        <source>Race distance.</source>
+        <translation>Renndistanz.</translation>
+    </message>
+    <message>
+        <source>Start lane.</source>
+        <translation>Startbahn.</translation>
+    </message>
+    <message>
+        <source>Speed after the start.</source>
+        <translation>Geschwindigkeit nach dem Start.</translation>
+    </message>
+    <message>
+        <source>Time constant of the start acceleration.</source>
+        <translation>Zeitkonstante der Startbeschleunigung.</translation>
+    </message>
+    <message>
+        <source>Fraction of the top speed lost linearly over the distance.</source>
+        <translation>Anteil der Höchstgeschwindigkeit, der linear über die Distanz verloren geht.</translation>
+    </message>
+    <message>
+        <source>SD of the speed fluctuation (Ornstein–Uhlenbeck, 3 s).</source>
+        <translation>SD der Geschwindigkeitsschwankung (Ornstein–Uhlenbeck, 3 s).</translation>
+    </message>
+    <message>
+        <source>Standing time before the start.</source>
+        <translation>Stehzeit vor dem Start.</translation>
+    </message>
+    <message>
+        <source>Recorded time after the finish.</source>
+        <translation>Aufgezeichnete Zeit nach dem Ziel.</translation>
+    </message>
+    <message>
+        <source>800 m break to lane 1 after the first bend and random overtakes.</source>
+        <translation>800 m: Wechsel auf Bahn 1 nach der ersten Kurve und zufällige Überholmanöver.</translation>
+    </message>
+    <message>
+        <source>Tag noise variance in x.</source>
+        <translation>Varianz des Tag-Rauschens in x.</translation>
+    </message>
+    <message>
+        <source>Tag noise variance in y.</source>
+        <translation>Varianz des Tag-Rauschens in y.</translation>
+    </message>
+    <message>
+        <source>Fraction of outliers.</source>
+        <translation>Anteil der Ausreißer.</translation>
+    </message>
+    <message>
+        <source>Mean outlier burst length (samples).</source>
+        <translation>Mittlere Länge einer Ausreißerfolge (Abtastwerte).</translation>
+    </message>
+    <message>
+        <source>SD of outliers per axis.</source>
+        <translation>SD der Ausreißer je Achse.</translation>
+    </message>
+    <message>
+        <source>Mean number of outages per 400 m.</source>
+        <translation>Mittlere Anzahl der Ausfälle je 400 m.</translation>
+    </message>
+    <message>
+        <source>Shortest outage.</source>
+        <translation>Kürzester Ausfall.</translation>
+    </message>
+    <message>
+        <source>Longest outage.</source>
+        <translation>Längster Ausfall.</translation>
+    </message>
+    <message>
+        <source>Sampling rate of the truth (a divisor of 1000).</source>
+        <translation>Abtastrate der Referenz (ein Teiler von 1000).</translation>
+    </message>
+    <message>
+        <source>Track geometry: a name under the project&apos;s /geometry or a built-in.</source>
+        <translation>Bahngeometrie: ein Name unter /geometry des Projekts oder eine eingebaute.</translation>
+    </message>
+    <message>
+        <source>Track origin x in LPS coordinates.</source>
+        <translation>Ursprung x der Bahn in LPS-Koordinaten.</translation>
+    </message>
+    <message>
+        <source>Track origin y in LPS coordinates.</source>
+        <translation>Ursprung y der Bahn in LPS-Koordinaten.</translation>
+    </message>
+    <message>
+        <source>Rotation of the track frame.</source>
+        <translation>Drehung des Bahnsystems.</translation>
+    </message>
+    <message>
+        <source>Simulated LPS fixes t, x, y (m).</source>
+        <translation>Simulierte LPS-Positionen t, x, y (m).</translation>
+    </message>
+    <message>
+        <source>Ground truth t, x, y (m), speed (m/s), heading (rad).</source>
+        <translation>Referenz t, x, y (m), speed (m/s), heading (rad).</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::signal::ButterworthProcessor</name>
+    <message>
+        <source>Butterworth filter</source>
+        <translation>Butterworth-Filter</translation>
+    </message>
+    <message>
+        <source>Low-pass, high-pass, band-pass or band-stop Butterworth filter of selected columns, zero-phase (forward-backward) by default. Needs uniform sampling (run resample first). Quaternion and flag columns pass through unchanged; NaN-free runs are filtered separately.</source>
+        <translation>Butterworth-Tiefpass, -Hochpass, -Bandpass oder -Bandsperre auf ausgewählten Spalten, standardmäßig nullphasig (vorwärts-rückwärts). Benötigt gleichmäßige Abtastung (zuerst resample ausführen). Quaternionen- und Flag-Spalten bleiben unverändert; NaN-freie Abschnitte werden getrennt gefiltert.</translation>
+    </message>
+    <message>
+        <source>Cut-off frequency (-3 dB of one pass); the lower edge for bandpass/bandstop. Must be below half the sampling rate.</source>
+        <translation>Grenzfrequenz (−3 dB eines Durchgangs); die untere Kante bei bandpass/bandstop. Muss unter der halben Abtastrate liegen.</translation>
+    </message>
+    <message>
+        <source>Upper edge for bandpass/bandstop (required there, not allowed otherwise).</source>
+        <translation>Obere Kante bei bandpass/bandstop (dort erforderlich, sonst nicht erlaubt).</translation>
+    </message>
+    <message>
+        <source>Filter type.</source>
+        <translation>Filtertyp.</translation>
+    </message>
+    <message>
+        <source>Filter order n (band types have 2n poles). Zero-phase filtering doubles the effective order.</source>
+        <translation>Filterordnung n (Bandtypen haben 2n Pole). Nullphasige Filterung verdoppelt die wirksame Ordnung.</translation>
+    </message>
+    <message>
+        <source>Filter forwards and backwards (no phase shift, squared magnitude: -6 dB at the cut-off); false = causal single pass.</source>
+        <translation>Vorwärts und rückwärts filtern (keine Phasenverschiebung, quadrierter Betrag: −6 dB an der Grenzfrequenz); false = kausaler einfacher Durchgang.</translation>
+    </message>
+    <message>
+        <source>Comma-separated columns to filter; empty = all columns except quaternions and flags.</source>
+        <translation>Durch Kommas getrennte zu filternde Spalten; leer = alle Spalten außer Quaternionen und Flags.</translation>
+    </message>
+    <message>
+        <source>Uniformly sampled stream of any kind.</source>
+        <translation>Gleichmäßig abgetasteter Datenstrom beliebiger Art.</translation>
+    </message>
+    <message>
+        <source>Filtered stream: same kind, frame and columns.</source>
+        <translation>Gefilterter Datenstrom: dieselbe Art, dasselbe Bezugssystem und dieselben Spalten.</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::signal::ResampleProcessor</name>
+    <message>
+        <source>Resample</source>
+        <translation>Neu abtasten</translation>
+    </message>
+    <message>
+        <source>Resamples a stream onto a uniform time grid: linear, nearest or cubic interpolation of ordinary columns, SLERP of quaternions (qw,qx,qy,qz, any prefix), nearest neighbour for flag columns; optionally NaN inside input gaps longer than max_gap.</source>
+        <translation>Tastet einen Datenstrom auf ein gleichmäßiges Zeitraster um: lineare, nächste oder kubische Interpolation gewöhnlicher Spalten, SLERP für Quaternionen (qw,qx,qy,qz, beliebiges Präfix), nächster Nachbar für Flag-Spalten; optional NaN in Eingabelücken, die länger als max_gap sind.</translation>
+    </message>
+    <message>
+        <source>Output sampling rate (&gt; 0).</source>
+        <translation>Ausgabe-Abtastrate (&gt; 0).</translation>
+    </message>
+    <message>
+        <source>Interpolation of ordinary columns. cubic = local cubic Hermite (Catmull-Rom style, exact for quadratics). Quaternions always use SLERP (nearest sample for nearest), flags nearest.</source>
+        <translation>Interpolation gewöhnlicher Spalten. cubic = lokale kubische Hermite-Interpolation (nach Catmull-Rom, exakt für quadratische Funktionen). Quaternionen verwenden immer SLERP (nächster Abtastwert bei nearest), Flags den nächsten.</translation>
+    </message>
+    <message>
+        <source>Output samples inside an input gap longer than this become NaN; 0 = off.</source>
+        <translation>Ausgabe-Abtastwerte in einer Eingabelücke, die länger ist, werden NaN; 0 = aus.</translation>
+    </message>
+    <message>
+        <source>Put the grid on integer multiples of 1/rate instead of starting at the first sample.</source>
+        <translation>Das Raster auf ganzzahlige Vielfache von 1/rate legen, statt beim ersten Abtastwert zu beginnen.</translation>
+    </message>
+    <message>
+        <source>Stream of any kind, possibly non-uniform.</source>
+        <translation>Datenstrom beliebiger Art, möglicherweise ungleichmäßig.</translation>
+    </message>
+    <message>
+        <source>Uniformly sampled stream: same kind, frame and columns.</source>
+        <translation>Gleichmäßig abgetasteter Datenstrom: dieselbe Art, dasselbe Bezugssystem und dieselben Spalten.</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::team::SimulateTeamProcessor</name>
+    <message>
+        <source>Simulate team match</source>
+        <translation>Mannschaftsspiel simulieren</translation>
+    </message>
+    <message>
+        <source>Simulates a football match: 22 players (two teams in a 4-4-2 with goalkeepers) on a 105 × 68 m pitch, with standing, walking, jogging, running and sprinting phases, bounded accelerations and the team blocks shifting with the ball. One position stream per player.</source>
+        <translation>Simuliert ein Fußballspiel: 22 Spieler (zwei Mannschaften im 4-4-2 mit Torhütern) auf einem Feld von 105 × 68 m, mit Phasen des Stehens, Gehens, Trabens, Laufens und Sprintens, begrenzten Beschleunigungen und mit dem Ball verschiebenden Mannschaftsblöcken. Ein Positionsdatenstrom je Spieler.</translation>
+    </message>
+    <message>
+        <source>Random seed (deterministic).</source>
+        <translation>Zufallsstartwert (deterministisch).</translation>
+    </message>
+    <message>
+        <source>Playing time.</source>
+        <translation>Spielzeit.</translation>
+    </message>
+    <message>
+        <source>Sampling rate of the positions.</source>
+        <translation>Abtastrate der Positionen.</translation>
+    </message>
+    <message>
+        <source>Largest acceleration of a player (vector norm).</source>
+        <translation>Größte Beschleunigung eines Spielers (Vektornorm).</translation>
+    </message>
+    <message>
+        <source>Slowest sprint speed among the players.</source>
+        <translation>Langsamste Sprintgeschwindigkeit unter den Spielern.</translation>
+    </message>
+    <message>
+        <source>Fastest sprint speed among the players.</source>
+        <translation>Schnellste Sprintgeschwindigkeit unter den Spielern.</translation>
+    </message>
+    <message>
+        <source>How readily players choose running and sprinting (1 = typical).</source>
+        <translation>Wie bereitwillig Spieler Laufen und Sprinten wählen (1 = typisch).</translation>
+    </message>
+    <message>
+        <source>Positions t, x, y (m) of player %1.</source>
+        <translation>Positionen t, x, y (m) von Spieler %1.</translation>
+    </message>
+</context>
+<context>
     <name>athlos::ui</name>
     <message>
         <source>Export report</source>

@@ -6,7 +6,7 @@
 namespace athlos::activity {
 
 namespace {
-constexpr Translator tr{"athlos::activity"};
+constexpr Translator tr{"athlos::activity", "ClassifyActionsProcessor"};
 
 Expected<ActivityModel> loadModel(const RunContext& c) {
     const QString name = c.text(QStringLiteral("model"));

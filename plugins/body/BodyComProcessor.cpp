@@ -16,7 +16,7 @@
 namespace athlos::body {
 
 namespace {
-constexpr Translator tr{"athlos::body"};
+constexpr Translator tr{"athlos::body", "BodyComProcessor"};
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 enum Input { ModelIn = 0, MountsIn, LeftMountsIn, VectorsIn };
 

@@ -6,7 +6,7 @@
 namespace athlos::body {
 
 namespace {
-constexpr Translator tr{"athlos::body"};
+constexpr Translator tr{"athlos::body", "BodyModelProcessor"};
 
 bool hasColumns(const StreamInfo& info, std::initializer_list<const char*> names) {
     for (const char* n : names)

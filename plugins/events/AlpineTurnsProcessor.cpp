@@ -10,7 +10,7 @@
 namespace athlos::events {
 
 namespace {
-constexpr Translator tr{"athlos::events"};
+constexpr Translator tr{"athlos::events", "AlpineTurnsProcessor"};
 constexpr double kInf = std::numeric_limits<double>::infinity();
 }  // namespace
 

@@ -13,7 +13,7 @@
 namespace athlos::events {
 
 namespace {
-constexpr Translator tr{"athlos::events"};
+constexpr Translator tr{"athlos::events", "GaitParametersProcessor"};
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 struct Plan {

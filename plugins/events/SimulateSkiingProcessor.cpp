@@ -10,7 +10,7 @@
 namespace athlos::events {
 
 namespace {
-constexpr Translator tr{"athlos::events"};
+constexpr Translator tr{"athlos::events", "SimulateSkiingProcessor"};
 
 Stream imuStream(const std::vector<double>& t, const std::vector<double>& rows, const QString& sensor,
                  const QJsonObject& attributes) {

@@ -9,7 +9,7 @@
 namespace athlos::events {
 
 namespace {
-constexpr Translator tr{"athlos::events"};
+constexpr Translator tr{"athlos::events", "SimulateWristWalkProcessor"};
 }  // namespace
 
 QString SimulateWristWalkProcessor::name() const { return tr("Simulate wrist walking"); }

@@ -7,7 +7,7 @@
 namespace athlos::events {
 
 namespace {
-constexpr Translator tr{"athlos::events"};
+constexpr Translator tr{"athlos::events", "SkimoPhasesProcessor"};
 }
 
 QString SkimoPhasesProcessor::name() const { return tr("Ski-mountaineering phases"); }

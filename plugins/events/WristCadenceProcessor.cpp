@@ -9,7 +9,7 @@
 namespace athlos::events {
 
 namespace {
-constexpr Translator tr{"athlos::events"};
+constexpr Translator tr{"athlos::events", "WristCadenceProcessor"};
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 struct Plan {

@@ -12,7 +12,7 @@
 namespace athlos::events {
 
 namespace {
-constexpr Translator tr{"athlos::events"};
+constexpr Translator tr{"athlos::events", "WristSpeedProcessor"};
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 const QStringList kFeatureColumns{QStringLiteral("max_x_std"), QStringLiteral("cadence"),
                                   QStringLiteral("pressure_change"), QStringLiteral("height")};

@@ -10,7 +10,7 @@
 namespace athlos::events {
 
 namespace {
-constexpr Translator tr{"athlos::events"};
+constexpr Translator tr{"athlos::events", "XcSkiingCyclesProcessor"};
 constexpr double kInf = std::numeric_limits<double>::infinity();
 const QStringList kAxes{QStringLiteral("x"),  QStringLiteral("-x"), QStringLiteral("y"),
                         QStringLiteral("-y"), QStringLiteral("z"),  QStringLiteral("-z")};

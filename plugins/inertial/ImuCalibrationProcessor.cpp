@@ -10,7 +10,7 @@
 namespace athlos::inertial {
 
 namespace {
-constexpr Translator tr{"athlos::inertial"};
+constexpr Translator tr{"athlos::inertial", "ImuCalibrationProcessor"};
 
 struct Calibration {
     Vec3 gyrOffset = Vec3::Zero();

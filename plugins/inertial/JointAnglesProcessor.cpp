@@ -11,7 +11,7 @@
 namespace athlos::inertial {
 
 namespace {
-constexpr Translator tr{"athlos::inertial"};
+constexpr Translator tr{"athlos::inertial", "JointAnglesProcessor"};
 const QString kIdentity = QStringLiteral("1,0,0,0");
 
 struct Plan {

@@ -11,7 +11,7 @@
 namespace athlos::inertial {
 
 namespace {
-constexpr Translator tr{"athlos::inertial"};
+constexpr Translator tr{"athlos::inertial", "OrientationProcessor"};
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 struct Plan {

@@ -13,7 +13,7 @@
 namespace athlos::inertial {
 
 namespace {
-constexpr Translator tr{"athlos::inertial"};
+constexpr Translator tr{"athlos::inertial", "SegmentCalibrationProcessor"};
 
 // Sign of each segment's first turn about its right-pointing Z axis when a squat starts.
 Expected<double> firstRotation(const QString& segment) {

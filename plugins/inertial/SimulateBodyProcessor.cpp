@@ -10,7 +10,7 @@
 namespace athlos::inertial {
 
 namespace {
-constexpr Translator tr{"athlos::inertial"};
+constexpr Translator tr{"athlos::inertial", "SimulateBodyProcessor"};
 
 Stream imuStream(const BodySimulation& sim, int s, QJsonObject attributes) {
     const BodySensor& seg = sim.sensors[s];

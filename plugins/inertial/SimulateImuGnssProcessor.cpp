@@ -10,7 +10,7 @@
 namespace athlos::inertial {
 
 namespace {
-constexpr Translator tr{"athlos::inertial"};
+constexpr Translator tr{"athlos::inertial", "SimulateImuGnssProcessor"};
 }  // namespace
 
 QString SimulateImuGnssProcessor::name() const { return tr("Simulate IMU and GNSS"); }

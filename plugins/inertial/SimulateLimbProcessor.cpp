@@ -8,7 +8,7 @@
 namespace athlos::inertial {
 
 namespace {
-constexpr Translator tr{"athlos::inertial"};
+constexpr Translator tr{"athlos::inertial", "SimulateLimbProcessor"};
 
 const QStringList kSegments{QStringLiteral("pelvis"), QStringLiteral("thigh"), QStringLiteral("shank")};
 

@@ -9,7 +9,7 @@
 namespace athlos::lps {
 
 namespace {
-constexpr Translator tr{"athlos::lps"};
+constexpr Translator tr{"athlos::lps", "LpsAlignProcessor"};
 }  // namespace
 
 QString LpsAlignProcessor::name() const { return tr("LPS frame alignment"); }

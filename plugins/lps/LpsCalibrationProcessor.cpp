@@ -10,7 +10,7 @@
 namespace athlos::lps {
 
 namespace {
-constexpr Translator tr{"athlos::lps"};
+constexpr Translator tr{"athlos::lps", "LpsCalibrationProcessor"};
 
 ParameterSpec optionalNumber(const QString& name, const QString& unit, const QString& help, double min = -1e9,
                              double max = 1e9) {

@@ -14,7 +14,7 @@
 namespace athlos::lps {
 
 namespace {
-constexpr Translator tr{"athlos::lps"};
+constexpr Translator tr{"athlos::lps", "LpsPositioningProcessor"};
 
 // Why a run gave no fix at all (issue #13 item 8: a run that produces nothing fails with the reason,
 // naming the stream and the numbers): too few beacons at every instant, or enough beacons but no

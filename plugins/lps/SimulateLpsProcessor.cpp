@@ -11,7 +11,7 @@
 namespace athlos::lps {
 
 namespace {
-constexpr Translator tr{"athlos::lps"};
+constexpr Translator tr{"athlos::lps", "SimulateLpsProcessor"};
 }  // namespace
 
 QString SimulateLpsProcessor::name() const { return tr("Simulate LPS venue and recording"); }

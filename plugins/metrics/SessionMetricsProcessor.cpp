@@ -13,7 +13,7 @@
 namespace athlos::metrics {
 
 namespace {
-constexpr Translator tr{"athlos::metrics"};
+constexpr Translator tr{"athlos::metrics", "SessionMetricsProcessor"};
 const double kInf = std::numeric_limits<double>::infinity();
 
 Expected<std::vector<double>> numberList(const RunContext& c, const QString& name, double scale) {

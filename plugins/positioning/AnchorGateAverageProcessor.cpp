@@ -9,7 +9,7 @@
 namespace athlos::positioning {
 
 namespace {
-constexpr Translator tr{"athlos::positioning"};
+constexpr Translator tr{"athlos::positioning", "AnchorGateAverageProcessor"};
 constexpr int kRuns = 8;
 }  // namespace
 

@@ -12,7 +12,7 @@
 namespace athlos::positioning {
 
 namespace {
-constexpr Translator tr{"athlos::positioning"};
+constexpr Translator tr{"athlos::positioning", "AnchorSmootherProcessor"};
 const double kInf = std::numeric_limits<double>::infinity();
 
 int triple(const StreamInfo& info, const QString& prefix) {

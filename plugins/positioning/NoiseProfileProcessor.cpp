@@ -9,7 +9,7 @@
 namespace athlos::positioning {
 
 namespace {
-constexpr Translator tr{"athlos::positioning"};
+constexpr Translator tr{"athlos::positioning", "NoiseProfileProcessor"};
 
 // position-filter parameters that do not change the estimate (output, smoothing, raw ranges) or
 // are replaced by it (noise).

@@ -16,7 +16,7 @@
 namespace athlos::positioning {
 
 namespace {
-constexpr Translator tr{"athlos::positioning"};
+constexpr Translator tr{"athlos::positioning", "PositionFilterProcessor"};
 const double kInf = std::numeric_limits<double>::infinity();
 
 ParameterSpec optionalNumber(const QString& name, double min, double max, const QString& unit, const QString& help) {

@@ -11,7 +11,7 @@
 namespace athlos::positioning {
 
 namespace {
-constexpr Translator tr{"athlos::positioning"};
+constexpr Translator tr{"athlos::positioning", "SimulateGatesProcessor"};
 }  // namespace
 
 QString SimulateGatesProcessor::name() const { return tr("Simulate giant-slalom run with gate magnets"); }

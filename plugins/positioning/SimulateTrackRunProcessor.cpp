@@ -8,7 +8,7 @@
 namespace athlos::positioning {
 
 namespace {
-constexpr Translator tr{"athlos::positioning"};
+constexpr Translator tr{"athlos::positioning", "SimulateTrackRunProcessor"};
 const double kInf = std::numeric_limits<double>::infinity();
 }  // namespace
 

@@ -9,7 +9,7 @@
 namespace athlos::signal {
 
 namespace {
-constexpr Translator tr{"athlos::signal"};
+constexpr Translator tr{"athlos::signal", "ButterworthProcessor"};
 }  // namespace
 
 struct ButterworthProcessor::Plan {

@@ -8,7 +8,7 @@
 namespace athlos::signal {
 
 namespace {
-constexpr Translator tr{"athlos::signal"};
+constexpr Translator tr{"athlos::signal", "ResampleProcessor"};
 }  // namespace
 
 QString ResampleProcessor::name() const { return tr("Resample"); }

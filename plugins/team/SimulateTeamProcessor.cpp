@@ -8,7 +8,7 @@
 namespace athlos::team {
 
 namespace {
-constexpr Translator tr{"athlos::team"};
+constexpr Translator tr{"athlos::team", "SimulateTeamProcessor"};
 }  // namespace
 
 QString SimulateTeamProcessor::name() const { return tr("Simulate team match"); }

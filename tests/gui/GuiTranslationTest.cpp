@@ -1,5 +1,6 @@
-// German: the embedded .qm loads for ATHLOS_LANG=de and translates the window; the .ts in the
-// source tree has a finished translation for every source string.
+// German: the embedded .qm loads for ATHLOS_LANG=de and translates the window and the processor
+// forms; the .ts in the source tree has a finished translation for every source string.
+#include "core/processing/Translator.h"
 #include "ui/ItemDescription.h"
 #include "ui/MainWindow.h"
 #include "ui/UiEntry.h"
@@ -20,6 +21,7 @@ class GuiTranslationTest : public QObject {
 private slots:
     void initTestCase();
     void translatesKnownStrings();
+    void translatesProcessorForms();
     void windowIsGerman();
     void tsFileIsComplete();
 };
@@ -41,6 +43,20 @@ void GuiTranslationTest::translatesKnownStrings() {
     // Qt's own strings (standard dialog buttons) come from qtbase_de (qt6-translations-l10n, which
     // scripts/setup.sh installs).
     QCOMPARE(QCoreApplication::translate("QPlatformTheme", "Cancel"), QStringLiteral("Abbrechen"));
+}
+
+// Processor forms: lupdate files a plugin's tr("…") under its processor class when written in a
+// member function and under the family namespace when written in a free function; the plugin's
+// Translator finds both (core/processing/Translator.h).
+void GuiTranslationTest::translatesProcessorForms() {
+    const Translator gaitEvents{"athlos::events", "GaitEventsProcessor"};
+    QCOMPARE(gaitEvents("Gait events (foot IMU)"), QStringLiteral("Gangereignisse (Fuß-IMU)"));
+    const Translator xcCycles{"athlos::events", "XcSkiingCyclesProcessor"};
+    QCOMPARE(xcCycles("Sensor axis pointing forward along the ski."),
+             QStringLiteral("Sensorachse, die entlang des Skis nach vorn zeigt."));  // a free function's
+    const Translator positionFilter{"athlos::positioning", "PositionFilterProcessor"};
+    QCOMPARE(positionFilter("Position filter"), QStringLiteral("Positionsfilter"));
+    QCOMPARE(positionFilter("no such string"), QStringLiteral("no such string"));
 }
 
 void GuiTranslationTest::windowIsGerman() {
