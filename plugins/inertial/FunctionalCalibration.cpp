@@ -329,14 +329,17 @@ std::optional<CalibrationMovement> classify(const FunctionalCalibration::Params&
     std::array<double, 2> leg{-1.0, -1.0};  // RMS rate of each side's leg: right, left (−1 = no sensor)
     std::array<double, 2> legAxisToUp{0.0, 0.0};
     std::array<int, 2> legRank{9, 9};
-    double trunkRate = -1.0, trunkAxisToUp = 0.0;
+    double trunkRate = -1.0, trunkAxisToUp = 0.0, midlineRate = -1.0;  // midline: largest of pelvis and trunk
     for (const Prepared& p : all) {
         const AxisStats s = axisStats(p.segment->gyr, p.rows(begin, end), p.bias);
         if (p.role.role == Role::Trunk) {
             trunkRate = s.rms;
             trunkAxisToUp = angleBetweenLines(s.axis, p.up);
         }
-        if (p.role.side == 0) continue;
+        if (p.role.side == 0) {
+            midlineRate = std::max(midlineRate, s.rms);
+            continue;
+        }
         const int i = p.role.side > 0 ? 0 : 1;
         const int rank = p.role.role == Role::Thigh ? 0 : p.role.role == Role::Shank ? 1 : 2;
         if (rank < legRank[std::size_t(i)]) {
@@ -352,9 +355,14 @@ std::optional<CalibrationMovement> classify(const FunctionalCalibration::Params&
         return CalibrationMovement::RightAbduction;
     if (left && !right && leg[0] >= 0.0 && leg[0] < params.stillRatio * leg[1] && legAxisToUp[1] > lateral)
         return CalibrationMovement::LeftAbduction;
-    // One leg only instrumented: a lateral turn of that leg alone counts as squats.
-    if ((right && leg[1] < 0.0 && legAxisToUp[0] > lateral) || (left && leg[0] < 0.0 && legAxisToUp[1] > lateral))
-        return CalibrationMovement::Squats;
+    // One leg only instrumented: squats turn the pelvis or trunk too, an ab/adduction does not (hips
+    // fixed); without a pelvis or trunk sensor the turn counts as squats.
+    for (int i = 0; i < 2; ++i) {
+        const bool moves = i == 0 ? right : left, otherAbsent = leg[std::size_t(1 - i)] < 0.0;
+        if (!moves || !otherAbsent || !(legAxisToUp[std::size_t(i)] > lateral)) continue;
+        if (midlineRate < 0.0 || midlineRate > params.moveRate) return CalibrationMovement::Squats;
+        return i == 0 ? CalibrationMovement::RightAbduction : CalibrationMovement::LeftAbduction;
+    }
     if (!right && !left && trunkRate > params.moveRate && trunkAxisToUp < params.axialTolerance)
         return CalibrationMovement::TrunkRotations;
     return std::nullopt;

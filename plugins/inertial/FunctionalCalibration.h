@@ -9,7 +9,8 @@
 // A block is classified by which segments turn and about which of their axes (the principal axis of
 // the angular velocity, with the superior axis Y from gravity in the upright window):
 //   squats          — both legs turn (thigh, else shank), about an axis ⟂ Y (medio-lateral);
-//   ab/adduction    — one leg turns, the other stays still (< `stillRatio` of its rate), axis ⟂ Y;
+//   ab/adduction    — one leg turns, the other stays still (< `stillRatio` of its rate), axis ⟂ Y
+//                     (one leg instrumented: the pelvis and trunk stay still, else it is a squat);
 //   trunk rotations — no leg turns, the sternum turns about an axis ∥ Y (within `axialTolerance`).
 // Repetitions: the rotation angle of the driving segment about the block's axis, θ(t) = ∫ω·a dt;
 // each excursion beyond half the largest one (in the sign of the first) is one repetition, and

@@ -73,6 +73,16 @@ TableColumn numbers(const char* name, const char* unit) {
     return TableColumn{QLatin1String(name), QLatin1String(unit), false, {}, {}};
 }
 TableColumn texts(const char* name) { return TableColumn{QLatin1String(name), QString(), true, {}, {}}; }
+
+// The name joint-angles looks up (jointSegments()) for a protocol segment seen from one side, or
+// empty when the segment belongs to the other side.
+QString jointAnglesName(const QString& segment, const QString& side) {
+    if (segment == QLatin1String("sacrum") || segment == QLatin1String("pelvis")) return QStringLiteral("pelvis");
+    if (segment == QLatin1String("sternum") || segment == QLatin1String("trunk") || segment == QLatin1String("thorax"))
+        return QStringLiteral("thorax");
+    const QString prefix = side + QLatin1Char('-');
+    return segment.startsWith(prefix) ? segment.mid(prefix.size()) : QString();
+}
 }  // namespace
 
 QString FunctionalCalibrationProcessor::name() const { return tr("Functional calibration (protocol)"); }
@@ -131,6 +141,11 @@ QList<InputSpec> FunctionalCalibrationProcessor::inputs() const {
 QList<OutputSpec> FunctionalCalibrationProcessor::outputs() const {
     return {OutputSpec{kSegmentCalibrationKind, true, QString(),
                        tr("segment, qw, qx, qy, qz (segment to sensor), axis_share, orthogonality (rad).")},
+            OutputSpec{kSegmentCalibrationKind, true, QStringLiteral("right"),
+                       tr("The right side's mounts under the names joint-angles reads: pelvis, thorax, thigh, "
+                          "shank, foot.")},
+            OutputSpec{kSegmentCalibrationKind, true, QStringLiteral("left"),
+                       tr("The left side's mounts (pelvis, thorax, thigh, shank, foot).")},
             OutputSpec{kCalibrationQualityKind, true, QStringLiteral("quality"),
                        tr("Per segment: movement, repetitions, dispersion χ, orthogonality, cross_orthogonality "
                           "(rad), cmc, begin, end (s).")},
@@ -249,6 +264,19 @@ Expected<std::vector<ProcessorOutput>> FunctionalCalibrationProcessor::run(const
 
     std::vector<ProcessorOutput> out;
     out.push_back({QString(), std::move(mountTable)});
+    for (const char* sideName : {"right", "left"}) {
+        const QString side = QLatin1String(sideName);
+        QStringList sideNames;
+        std::vector<math::Quat> sideMounts;
+        for (qsizetype i = 0; i < segmentList.size(); ++i) {
+            const QString n = jointAnglesName(segmentList[i], side);
+            if (n.isEmpty()) continue;
+            sideNames << n;
+            sideMounts.push_back(mounts[std::size_t(i)]);
+        }
+        out.push_back({side, segmentMountTable(sideNames, sideMounts,
+                                               QJsonObject{{"method", "functional protocol"}, {"side", side}})});
+    }
     out.push_back({QStringLiteral("quality"), std::move(quality)});
     out.push_back({QStringLiteral("movements"), std::move(moves)});
     return out;
