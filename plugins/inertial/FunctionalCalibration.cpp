@@ -211,7 +211,8 @@ const Prepared* driverOf(const std::vector<Prepared>& all, CalibrationMovement m
         case CalibrationMovement::Squats:
             if (auto* p = find(Role::Thigh, 0)) return p;
             if (auto* p = find(Role::Shank, 0)) return p;
-            return find(Role::Pelvis, 0);
+            if (auto* p = find(Role::Pelvis, 0)) return p;
+            return find(Role::Trunk, 0);
         case CalibrationMovement::TrunkRotations:
             return find(Role::Trunk, 0);
         case CalibrationMovement::RightAbduction:
@@ -494,6 +495,13 @@ Expected<FunctionalCalibration::Result> FunctionalCalibration::calibrate(const s
         if (!cal)
             return makeError(
                 QStringLiteral("segment '%1' (%2): %3").arg(name, calibrationMovementName(needed), cal.message()));
+        if (cal->orthogonality > params_.maxAxisTilt)
+            return makeError(QStringLiteral("segment '%1' (%2): the turning axis is %3° out of the plane perpendicular "
+                                            "to gravity (more than %4°); the movement does not turn this segment "
+                                            "about a horizontal axis")
+                                 .arg(name, calibrationMovementName(needed))
+                                 .arg(cal->orthogonality / math::kDeg, 0, 'f', 1)
+                                 .arg(params_.maxAxisTilt / math::kDeg, 0, 'f', 1));
         SegmentResult s;
         s.name = name;
         s.mount = cal->mount;

@@ -31,7 +31,8 @@
 //        θ̄_t the mean over repetitions at t, θ̄ the grand mean (0 when the ratio exceeds 1).
 // Refusals (errors naming the segment and the reason): no upright window, a movement a segment
 // needs not found or with fewer than `minRepetitions` repetitions, an axis that is not dominant,
-// a dispersion above `maxDispersion`.
+// a dispersion above `maxDispersion`, a functional axis tilted more than `maxAxisTilt` out of the
+// horizontal plane (it would be re-orthogonalised into noise: the wrong movement for that segment).
 #include "core/math/QuaternionOps.h"
 #include "core/util/Expected.h"
 
@@ -64,6 +65,7 @@ public:
         double axialTolerance = 30.0 * 0.017453292519943295;  // rad, trunk rotation axis to Y
         int minRepetitions = 3;                               // spec §4: ×3
         double maxDispersion = 10.0 * 0.017453292519943295;   // rad; Fasel reports χ ≤ 5.5° (shank)
+        double maxAxisTilt = 30.0 * 0.017453292519943295;     // rad, functional axis out of the plane ⟂ gravity
     };
 
     struct Segment {

@@ -66,6 +66,7 @@ FunctionalCalibration::Params engineParams(const RunContext& c) {
     p.axialTolerance = c.number(QStringLiteral("axial_tolerance"));
     p.minRepetitions = c.integer(QStringLiteral("repetitions"));
     p.maxDispersion = c.number(QStringLiteral("max_dispersion"));
+    p.maxAxisTilt = c.number(QStringLiteral("max_axis_tilt"));
     return p;
 }
 
@@ -126,6 +127,9 @@ ParameterSpecs FunctionalCalibrationProcessor::parameters() const {
         ParameterSpec::number(QStringLiteral("max_dispersion"), d.maxDispersion, 0.001, 1.5, QStringLiteral("rad"),
                               tr("Largest dispersion χ of the functional axis between repetitions (10°; Fasel "
                                  "Table 6.3 reports up to 5.5° for the shank).")),
+        ParameterSpec::number(QStringLiteral("max_axis_tilt"), d.maxAxisTilt, 0.01, 1.5, QStringLiteral("rad"),
+                              tr("Largest angle between the functional axis and the plane perpendicular to gravity "
+                                 "(30°; the simulated shank's coupled rotation tilts it by ≈ 8°).")),
     };
 }
 

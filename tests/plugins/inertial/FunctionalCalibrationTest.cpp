@@ -154,3 +154,19 @@ TEST(FunctionalCalibration, MultipleCorrelationOfIdenticalCurvesIsOne) {
         }
     }
 }
+
+TEST(FunctionalCalibration, RefusesAnAxisAlongGravity) {
+    // Trunk rotations marked as squats: the sternum turns about its long axis, which cannot be its
+    // medio-lateral axis.
+    const BodySimulation sim = simulateBody(protocol(9));
+    FunctionalCalibration::Movement wrong;
+    wrong.movement = CalibrationMovement::Squats;
+    wrong.interval = {sim.trunkBegin, sim.trunkEnd};
+    auto segments = segmentsOf(sim);
+    segments.erase(segments.begin() + 2, segments.end());
+    segments.erase(segments.begin());
+    const auto result = FunctionalCalibration().calibrate(segments, {wrong});
+    ASSERT_FALSE(result.ok());
+    EXPECT_TRUE(result.message().contains("sternum")) << result.message().toStdString();
+    EXPECT_TRUE(result.message().contains("gravity")) << result.message().toStdString();
+}
