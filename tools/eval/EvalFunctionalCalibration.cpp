@@ -4,10 +4,13 @@
 // default sensor errors, gyroscope and accelerometer noise scaled by the second argument): how often every
 // movement is found with its 3 repetitions, and per segment the mount error against the true mount (the
 // angle of m̂ m*; mean and worst over the seeds) and the quality figures the processor stores (dispersion χ,
-// orthogonality, CMC). The figures of docs/validation/functional-calibration.md.
+// orthogonality, CMC). Then the joint angles of the seven joints from the TRUE sensor orientations with
+// the estimated mounts against the reference angles over the whole recording (RMSE flexion/abduction/
+// rotation): what the mount errors alone cost. The figures of docs/validation/functional-calibration.md.
 #include "core/math/Angles.h"
 #include "plugins/inertial/BodySimulator.h"
 #include "plugins/inertial/FunctionalCalibration.h"
+#include "plugins/inertial/JointAngles.h"
 
 #include <algorithm>
 #include <array>
@@ -27,6 +30,7 @@ int main(int argc, char** argv) {
         int crossCount = 0;
     };
     std::array<Sum, kBodySegments> sums{};
+    std::array<std::array<double, 3>, kBodyJoints> jointRmse{};
     int calibrated = 0, allFound = 0;
     for (int s = 1; s <= seeds; ++s) {
         BodySimulatorParams p;
@@ -67,6 +71,22 @@ int main(int argc, char** argv) {
                 ++x.crossCount;
             }
         }
+        for (int j = 0; j < kBodyJoints; ++j) {
+            const BodyJointInfo info = bodyJointInfo(static_cast<BodyJoint>(j));
+            const int pi = static_cast<int>(info.proximal), di = static_cast<int>(info.distal);
+            JointAngles::Params jp;
+            jp.joint = info.joint;
+            jp.side = info.side;
+            jp.proximalMount = result->segments[std::size_t(pi)].mount;
+            jp.distalMount = result->segments[std::size_t(di)].mount;
+            const auto samples = JointAngles(jp).updateBatch(sim.sensors[pi].sensor, sim.sensors[di].sensor);
+            std::array<double, 3> sq{};
+            for (std::size_t k = 0; k < samples.size(); ++k) {
+                const math::Vec3 d = samples[k].angles.vector() - sim.joints[j].angles[k].vector();
+                for (int i = 0; i < 3; ++i) sq[i] += d[i] * d[i];
+            }
+            for (int i = 0; i < 3; ++i) jointRmse[j][i] += std::sqrt(sq[i] / double(samples.size())) / kDeg;
+        }
     }
     std::printf("seeds %d, noise x%.2f: calibrated %d, all 5 movements with 3 repetitions found in %d\n", seeds, noise,
                 calibrated, allFound);
@@ -82,5 +102,9 @@ int main(int argc, char** argv) {
                     qUtf8Printable(bodySegmentName(static_cast<BodySegment>(k))), x.error / n, x.worst, x.chi / n,
                     x.ortho / n, cross, x.cmc / n);
     }
+    std::printf("\n| joint | RMSE flexion [°] | abduction [°] | rotation [°] |\n|---|---|---|---|\n");
+    for (int j = 0; j < kBodyJoints; ++j)
+        std::printf("| %s | %.2f | %.2f | %.2f |\n", qUtf8Printable(bodyJointName(static_cast<BodyJoint>(j))),
+                    jointRmse[j][0] / calibrated, jointRmse[j][1] / calibrated, jointRmse[j][2] / calibrated);
     return 0;
 }
