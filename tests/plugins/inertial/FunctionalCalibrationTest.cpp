@@ -3,8 +3,15 @@
 // mounts of all eight segments are recovered against the simulator's true mounts, and recordings
 // that lack a movement a segment needs are refused with the reason.
 #include "core/math/Angles.h"
+#include "core/model/Project.h"
+#include "core/processing/ProcessorRunner.h"
 #include "plugins/inertial/BodySimulator.h"
 #include "plugins/inertial/FunctionalCalibration.h"
+#include "plugins/inertial/FunctionalCalibrationProcessor.h"
+#include "plugins/inertial/SegmentMounts.h"
+#include "plugins/inertial/SimulateBodyProcessor.h"
+
+#include <QTemporaryDir>
 
 #include <gtest/gtest.h>
 #include <iostream>
@@ -169,4 +176,65 @@ TEST(FunctionalCalibration, RefusesAnAxisAlongGravity) {
     ASSERT_FALSE(result.ok());
     EXPECT_TRUE(result.message().contains("sternum")) << result.message().toStdString();
     EXPECT_TRUE(result.message().contains("gravity")) << result.message().toStdString();
+}
+
+// The processor: simulate-body → functional-calibration with an annotation marking the squats (taken
+// as given), the per-side tables hold the true mounts under joint-angles' names, and the quality
+// and movements tables are filled.
+TEST(FunctionalCalibrationProcessor, WritesMountsQualityAndMovements) {
+    QTemporaryDir dir;
+    auto project = Project::create(dir.filePath("f.athlos"));
+    ASSERT_TRUE(project);
+    const SimulateBodyProcessor sim;
+    const FunctionalCalibrationProcessor calibration;
+    auto simulated = runProcessor(*project, sim,
+                                  RunRequest{sim.id(),
+                                             {},
+                                             "cal/imu",
+                                             {{"scenario", "squats"},
+                                              {"motion_duration", 4.0},
+                                              {"trunk_rotations", 3},
+                                              {"hip_abductions", 3},
+                                              {"seed", 12}}});
+    ASSERT_TRUE(simulated.ok()) << simulated.message().toStdString();
+    const QJsonObject attrs = project->stream("cal/imu")->info().attributes;
+    Annotation squats;
+    squats.label = "squats";
+    squats.tStart = attrs.value("squat_begin").toDouble();
+    squats.tEnd = attrs.value("squat_end").toDouble();
+    project->recording("cal")->annotations.push_back(squats);
+    QStringList inputs{"cal/imu"};
+    for (const char* s :
+         {"sternum", "right-thigh", "right-shank", "right-foot", "left-thigh", "left-shank", "left-foot"})
+        inputs << QStringLiteral("cal/imu-%1").arg(QLatin1String(s));
+    auto done = runProcessor(*project, calibration, RunRequest{calibration.id(), inputs, "cal/fc", {}});
+    ASSERT_TRUE(done.ok()) << done.message().toStdString();
+    for (const char* side : {"right", "left"}) {
+        const QString estimated = QStringLiteral("cal/fc-%1").arg(QLatin1String(side));
+        const QString truth = QStringLiteral("cal/imu-%1-mounts").arg(QLatin1String(side));
+        ASSERT_TRUE(project->table(estimated) && project->table(truth));
+        for (const char* segment : {"pelvis", "thorax", "thigh", "shank", "foot"}) {
+            const auto e = segmentMount(*project->table(estimated), estimated, segment);
+            const auto t = segmentMount(*project->table(truth), truth, segment);
+            ASSERT_TRUE(e.ok() && t.ok()) << segment;
+            EXPECT_LT(e->angularDistance(*t) / kDeg, 3.0) << side << " " << segment;
+        }
+    }
+    const Table* quality = project->table("cal/fc-quality");
+    ASSERT_TRUE(quality);
+    EXPECT_EQ(quality->rows(), 8);
+    ASSERT_TRUE(quality->column("cmc") && quality->column("dispersion"));
+    const Table* movements = project->table("cal/fc-movements");
+    ASSERT_TRUE(movements);
+    const TableColumn* name = movements->column("movement");
+    const TableColumn* given = movements->column("given");
+    const TableColumn* begin = movements->column("begin");
+    ASSERT_TRUE(name && given && begin);
+    int whole = 0;
+    for (int r = 0; r < int(name->size()); ++r) {
+        if (name->texts.at(r) != "squats") continue;
+        EXPECT_EQ(given->numbers[std::size_t(r)], 1.0);
+        whole += begin->numbers[std::size_t(r)] == squats.tStart ? 1 : 0;
+    }
+    EXPECT_GE(whole, 1);  // the annotation's interval, as given
 }
