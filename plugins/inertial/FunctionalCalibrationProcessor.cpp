@@ -24,8 +24,9 @@ Expected<QStringList> segmentNames(const RunContext& c) {
     const QStringList names = c.text(QStringLiteral("segments")).split(separators, Qt::SkipEmptyParts);
     int inputs = 0;
     for (int i = 0; i < c.inputCount(); ++i) inputs += c.stream(i) ? 1 : 0;
-    if (names.size() < inputs)
-        return makeError(QStringLiteral("segments: %1 name(s) for %2 IMU stream(s); name every input in order")
+    // Exactly one name per input: a default list longer than the inputs would silently mislabel them.
+    if (names.size() != inputs)
+        return makeError(QStringLiteral("segments: %1 name(s) for %2 IMU stream(s); name every input, in order")
                              .arg(names.size())
                              .arg(inputs));
     return names;

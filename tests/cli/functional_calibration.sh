@@ -56,6 +56,8 @@ expect_fail "no squats" "no squats" "$ATHLOS" run "$P" functional-calibration \
   --input nosq/imu,nosq/imu-right-thigh --output nosq/fc --param segments=sacrum,right-thigh
 expect_fail "bad intervals" "intervals" "$ATHLOS" run "$P" functional-calibration --input cal/imu --output cal/x \
   --param segments=sacrum --param intervals="squats=12"
+expect_fail "names do not match the inputs" "segments: 8 name" "$ATHLOS" run "$P" functional-calibration \
+  --input cal/imu,cal/imu-sternum --output cal/x
 expect_fail "unknown segment" "tail" "$ATHLOS" run "$P" functional-calibration --input cal/imu --output cal/x \
   --param segments=tail
 after=$(sha256sum "$P" | cut -d' ' -f1)
