@@ -64,7 +64,19 @@ public:
     explicit Script(const BodySimulatorParams& p) : p_(p) {
         squatBegin = p.uprightDuration;
         squatEnd = squatBegin + p.squats * p.squatDuration;
-        motionBegin = squatEnd + p.standDuration;
+        // Optional blocks; with none of them calibrationEnd = squatEnd exactly.
+        double c = squatEnd;
+        const auto block = [&](int count, double duration, double& b, double& e) {
+            b = e = c;
+            if (count <= 0) return;
+            b = c + p.calibrationPause;
+            e = b + count * duration;
+            c = e;
+        };
+        block(p.trunkRotations, p.trunkRotationDuration, trunkBegin, trunkEnd);
+        block(p.hipAbductions, p.hipAbductionDuration, rightBegin, rightEnd);
+        block(p.hipAbductions, p.hipAbductionDuration, leftBegin, leftEnd);
+        motionBegin = c + p.standDuration;
         motionEnd = motionBegin + p.motionDuration;
         end = motionEnd + p.standDuration;
         skiing = p.scenario == BodyScenario::Skiing;
@@ -126,6 +138,21 @@ public:
             pelvisTilt = -20.0 * d * kDeg;
             drop = 0.35 * d;
             back = 0.15 * d;
+        } else if (t > trunkBegin && t < trunkEnd) {
+            pose.phase = 4;
+            // Axial rotation to the right first (negative: JointAngles counts rotation to the left),
+            // sin(2πu)·sin²(πu) (peak 3√3/8) starts and ends each repetition at rest.
+            const double u = std::fmod(t - trunkBegin, p_.trunkRotationDuration) / p_.trunkRotationDuration;
+            const double peak = 3.0 * std::sqrt(3.0) / 8.0;
+            a[0].rotation =
+                -p_.trunkRotationAmplitude / peak * std::sin(2.0 * kPi * u) * std::pow(std::sin(kPi * u), 2);
+        } else if ((t > rightBegin && t < rightEnd) || (t > leftBegin && t < leftEnd)) {
+            const bool right = t < rightEnd;
+            pose.phase = right ? 5 : 6;
+            // Abduction of the straight leg and back (knee and ankle fixed, the foot lifted).
+            const double u =
+                std::fmod(t - (right ? rightBegin : leftBegin), p_.hipAbductionDuration) / p_.hipAbductionDuration;
+            a[right ? 1 : 4].abduction += p_.hipAbductionAmplitude * std::pow(std::sin(kPi * u), 2);
         } else if (t > motionBegin && t < motionEnd && walking) {
             pose.phase = 2;
             const double e = window(t, motionBegin, motionEnd, 1.0);
@@ -271,6 +298,7 @@ public:
     }
 
     double squatBegin = 0, squatEnd = 0, motionBegin = 0, motionEnd = 0, end = 0, speed = 0, ramp = 1;
+    double trunkBegin = 0, trunkEnd = 0, rightBegin = 0, rightEnd = 0, leftBegin = 0, leftEnd = 0;
     bool skiing = false, walking = false;
 
 private:
@@ -311,6 +339,12 @@ BodySimulation simulateBody(const BodySimulatorParams& params) {
     sim.squatEnd = script.squatEnd;
     sim.motionBegin = script.motionBegin;
     sim.motionEnd = script.motionEnd;
+    sim.trunkBegin = script.trunkBegin;
+    sim.trunkEnd = script.trunkEnd;
+    sim.rightAbductionBegin = script.rightBegin;
+    sim.rightAbductionEnd = script.rightEnd;
+    sim.leftAbductionBegin = script.leftBegin;
+    sim.leftAbductionEnd = script.leftEnd;
     const double dt = 1.0 / params.rate;
     const auto n = static_cast<std::size_t>(std::floor(script.end * params.rate)) + 1;
     std::mt19937_64 rng(params.seed);

@@ -54,6 +54,16 @@ struct BodySimulatorParams {
     double uprightDuration = 10.0;  // s, calibration: stand still (spec §4)
     int squats = 3;                 // calibration squats
     double squatDuration = 4.0;     // s each
+    // Further calibration movements of the functional protocol (spec §4), after the squats; all off
+    // by default (0 repetitions) so that the default simulation stays unchanged. Each block starts
+    // after `calibrationPause` s of standing still.
+    int trunkRotations = 0;              // rotations about the vertical, hips fixed, starting right
+    double trunkRotationDuration = 4.0;  // s each (right, back through neutral to the left, back)
+    double trunkRotationAmplitude = 40.0 * math::kDeg;
+    int hipAbductions = 0;              // ab/adductions per leg, straight knee (right leg first)
+    double hipAbductionDuration = 3.0;  // s each
+    double hipAbductionAmplitude = 25.0 * math::kDeg;
+    double calibrationPause = 2.0;  // s standing still before each further block
     double standDuration = 3.0;     // s, between calibration and motion and at the end
     double motionDuration = 120.0;  // s, walking or skiing (incl. speed ramps)
     double initialHeading = 0.4;    // rad, fall line / walking direction counter-clockwise from East
@@ -98,8 +108,11 @@ struct BodySimulation {
     std::vector<double> t;
     std::array<BodySensor, kBodySegments> sensors;
     std::array<BodyJointTruth, kBodyJoints> joints;
-    std::vector<unsigned char> phase;  // 0 stand, 1 squat, 2 walk, 3 ski
+    std::vector<unsigned char> phase;  // 0 stand, 1 squat, 2 walk, 3 ski, 4 trunk rotation, 5 right, 6 left abduction
     double uprightEnd = 0, squatBegin = 0, squatEnd = 0, motionBegin = 0, motionEnd = 0;
+    // The further calibration blocks (begin = end when off).
+    double trunkBegin = 0, trunkEnd = 0, rightAbductionBegin = 0, rightAbductionEnd = 0, leftAbductionBegin = 0,
+           leftAbductionEnd = 0;
     const BodySensor& operator[](BodySegment s) const { return sensors[static_cast<int>(s)]; }
     const BodyJointTruth& operator[](BodyJoint j) const { return joints[static_cast<int>(j)]; }
 };

@@ -1,6 +1,7 @@
 #include "plugins/inertial/InertialPlugin.h"
 
 #include "plugins/inertial/DriftReductionProcessor.h"
+#include "plugins/inertial/FunctionalCalibrationProcessor.h"
 #include "plugins/inertial/GnssImuProcessor.h"
 #include "plugins/inertial/ImuCalibrationProcessor.h"
 #include "plugins/inertial/JointAnglesProcessor.h"
@@ -21,7 +22,8 @@ std::vector<std::shared_ptr<const Processor>> InertialPlugin::processors() const
             std::make_shared<SimulateLimbProcessor>(),
             std::make_shared<SegmentCalibrationProcessor>(),
             std::make_shared<SimulateBodyProcessor>(),
-            std::make_shared<DriftReductionProcessor>()};
+            std::make_shared<DriftReductionProcessor>(),
+            std::make_shared<FunctionalCalibrationProcessor>()};
 }
 
 }  // namespace athlos::inertial

@@ -54,12 +54,19 @@ Expected<SegmentCalibration::Result> SegmentCalibration::calibrate(std::span<con
                            "undetermined")
                 .arg(params_.decisionAngle / math::kDeg, 0, 'f', 0));
     if (turned * params_.firstRotation < 0.0) axis = -axis;
+    r.functional = axis;
 
     r.orthogonality = std::asin(std::clamp(std::abs(axis.dot(r.superior)), 0.0, 1.0));
     // Gravity is the more reliable axis: keep Y, make Z orthogonal to it, X completes the frame.
-    const Vec3 z = (axis - axis.dot(r.superior) * r.superior).normalized();
-    const Vec3 x = r.superior.cross(z).normalized();
-    r.mediolateral = x.cross(r.superior).normalized();
+    const Vec3 f = (axis - axis.dot(r.superior) * r.superior).normalized();
+    Vec3 x;
+    if (params_.functionalAxis == 0) {
+        x = f;  // X ⟂ Y; Z = X × Y
+        r.mediolateral = x.cross(r.superior).normalized();
+    } else {
+        x = r.superior.cross(f).normalized();
+        r.mediolateral = x.cross(r.superior).normalized();
+    }
     Eigen::Matrix3d segmentInSensor;
     segmentInSensor << x, r.superior, r.mediolateral;
     r.mount = math::Quat(segmentInSensor).normalized();

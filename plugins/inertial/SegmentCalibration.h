@@ -21,12 +21,16 @@ public:
     struct Params {
         double firstRotation = 1.0;     // +1 or −1: sign of the first turn about the right-pointing axis
         double decisionAngle = 0.1745;  // rad of integrated rotation that decides the sign (10°)
+        // Which segment axis the movement turns about: 2 = Z (medio-lateral, squats; the default) or
+        // 0 = X (antero-posterior, hip ab/adduction: the foot's frame, FunctionalCalibration.h).
+        int functionalAxis = 2;
     };
 
     struct Result {
         math::Quat mount = math::Quat::Identity();      // segment → sensor
         math::Vec3 superior = math::Vec3::UnitY();      // Y in sensor coordinates
         math::Vec3 mediolateral = math::Vec3::UnitZ();  // Z in sensor coordinates
+        math::Vec3 functional = math::Vec3::UnitZ();    // signed principal axis, before orthogonalisation
         double axisShare = 0.0;                         // fraction of the angular velocity energy on the principal axis
         double orthogonality =
             0.0;  // angle (rad) between the functional axis and the plane ⊥ Y, before re-orthogonalisation

@@ -110,6 +110,10 @@ ParameterSpecs SimulateBodyProcessor::parameters() const {
         ParameterSpec::number(QStringLiteral("motion_duration"), d.motionDuration, 4.0, 3600.0, QStringLiteral("s"),
                               tr("Length of the walking or skiing phase (including the speed ramps).")),
         ParameterSpec::integer(QStringLiteral("squats"), d.squats, 0, 100, tr("Number of calibration squats.")),
+        ParameterSpec::integer(QStringLiteral("trunk_rotations"), d.trunkRotations, 0, 100,
+                               tr("Calibration trunk rotations after the squats (0 = none; the protocol has 3).")),
+        ParameterSpec::integer(QStringLiteral("hip_abductions"), d.hipAbductions, 0, 100,
+                               tr("Calibration hip ab/adductions per leg after them (0 = none; the protocol has 3).")),
         ParameterSpec::number(QStringLiteral("gyr_bias"), d.gyrBias, 0.0, 1.0, QStringLiteral("rad/s"),
                               tr("Largest constant gyroscope bias per axis (drawn uniformly).")),
         ParameterSpec::number(QStringLiteral("gyr_drift"), d.gyrDrift, 0.0, 1.0, QStringLiteral("rad/s"),
@@ -162,6 +166,8 @@ Expected<std::vector<ProcessorOutput>> SimulateBodyProcessor::run(const RunConte
     num("rate", p.rate);
     num("motion_duration", p.motionDuration);
     if (c.has(QStringLiteral("squats"))) p.squats = c.integer(QStringLiteral("squats"));
+    if (c.has(QStringLiteral("trunk_rotations"))) p.trunkRotations = c.integer(QStringLiteral("trunk_rotations"));
+    if (c.has(QStringLiteral("hip_abductions"))) p.hipAbductions = c.integer(QStringLiteral("hip_abductions"));
     num("gyr_bias", p.gyrBias);
     num("gyr_drift", p.gyrDrift);
     num("gyr_noise", p.gyrNoise);
@@ -171,7 +177,7 @@ Expected<std::vector<ProcessorOutput>> SimulateBodyProcessor::run(const RunConte
     c.report(0.1, QStringLiteral("simulating"));
     const BodySimulation sim = simulateBody(p);
     if (c.isCancelled()) return cancelledError();
-    const QJsonObject attrs{
+    QJsonObject attrs{
         {"simulated", true},
         {"seed", static_cast<double>(p.seed)},
         {"scenario", c.has(QStringLiteral("scenario")) ? c.text(QStringLiteral("scenario")) : QStringLiteral("skiing")},
@@ -180,6 +186,17 @@ Expected<std::vector<ProcessorOutput>> SimulateBodyProcessor::run(const RunConte
         {"squat_end", sim.squatEnd},
         {"motion_begin", sim.motionBegin},
         {"motion_end", sim.motionEnd}};
+    // The further calibration blocks only when simulated (the default attributes stay as they were).
+    if (p.trunkRotations > 0) {
+        attrs.insert(QStringLiteral("trunk_rotations_begin"), sim.trunkBegin);
+        attrs.insert(QStringLiteral("trunk_rotations_end"), sim.trunkEnd);
+    }
+    if (p.hipAbductions > 0) {
+        attrs.insert(QStringLiteral("right_abduction_begin"), sim.rightAbductionBegin);
+        attrs.insert(QStringLiteral("right_abduction_end"), sim.rightAbductionEnd);
+        attrs.insert(QStringLiteral("left_abduction_begin"), sim.leftAbductionBegin);
+        attrs.insert(QStringLiteral("left_abduction_end"), sim.leftAbductionEnd);
+    }
     const std::size_t n = sim.t.size();
     std::vector<ProcessorOutput> out;
     out.push_back({QString(), imuStream(sim, 0, attrs)});
