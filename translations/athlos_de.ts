@@ -71,6 +71,10 @@
         <source>Stick figure (centre of mass)…</source>
         <translation>Strichfigur (Körperschwerpunkt)…</translation>
     </message>
+    <message>
+        <source>Functional calibration…</source>
+        <translation>Funktionelle Kalibrierung…</translation>
+    </message>
 </context>
 <context>
     <name>athlos::activity::ClassifyActionsProcessor</name>
@@ -810,6 +814,93 @@
     </message>
 </context>
 <context>
+    <name>athlos::inertial::FunctionalCalibrationProcessor</name>
+    <message>
+        <source>Functional calibration (protocol)</source>
+        <translation>Funktionelle Kalibrierung (Protokoll)</translation>
+    </message>
+    <message>
+        <source>Sensor-to-segment mounts from the whole functional calibration protocol in one recording: upright standing, squats, trunk rotations and hip ab/adduction per leg, found automatically (or from annotations). Gravity gives each segment&apos;s superior axis, the principal axis of the angular velocity its medio-lateral (squats) or, for the feet, antero-posterior axis (ab/adduction). Writes a segment-calibration table for joint-angles and a quality table (dispersion between repetitions, orthogonality, CMC).</source>
+        <translation>Sensor-Segment-Montagen aus dem ganzen funktionellen Kalibrierprotokoll in einer Aufnahme: aufrechtes Stehen, Kniebeugen, Rumpfrotationen und Hüft-Ab-/Adduktion je Bein, automatisch gefunden (oder aus Annotationen). Die Schwerkraft liefert die superiore Achse jedes Segments, die Hauptachse der Winkelgeschwindigkeit seine medio-laterale (Kniebeugen) oder, bei den Füßen, die antero-posteriore Achse (Ab-/Adduktion). Schreibt eine segment-calibration-Tabelle für joint-angles und eine Qualitätstabelle (Streuung zwischen Wiederholungen, Orthogonalität, CMC).</translation>
+    </message>
+    <message>
+        <source>Segment of each input IMU, in input order: sacrum (pelvis), sternum (trunk), right-/left-thigh, right-/left-shank, right-/left-foot.</source>
+        <translation>Segment jeder Eingabe-IMU in der Reihenfolge der Eingaben: sacrum (Becken), sternum (Rumpf), right-/left-thigh, right-/left-shank, right-/left-foot.</translation>
+    </message>
+    <message>
+        <source>Movements given by hand, e.g. &apos;squats=12-24; right-abduction=40-49&apos; (s); they override the detection and the annotations.</source>
+        <translation>Von Hand angegebene Bewegungen, z. B. „squats=12-24; right-abduction=40-49“ (s); sie ersetzen die Erkennung und die Annotationen.</translation>
+    </message>
+    <message>
+        <source>Take interval annotations of the recording labelled upright, squats, trunk-rotations, right-abduction or left-abduction as the movements.</source>
+        <translation>Intervall-Annotationen der Aufnahme mit den Bezeichnungen upright, squats, trunk-rotations, right-abduction oder left-abduction als Bewegungen übernehmen.</translation>
+    </message>
+    <message>
+        <source>Rest: every sensor&apos;s angular rate (0.5 s mean) below this (11°/s).</source>
+        <translation>Ruhe: die Drehrate jedes Sensors (Mittel über 0,5 s) unter diesem Wert (11°/s).</translation>
+    </message>
+    <message>
+        <source>Shortest upright standing (the protocol asks for 10 s; Fasel ch. 6).</source>
+        <translation>Kürzestes aufrechtes Stehen (das Protokoll verlangt 10 s; Fasel Kap. 6).</translation>
+    </message>
+    <message>
+        <source>Rest that separates two movements.</source>
+        <translation>Ruhe, die zwei Bewegungen trennt.</translation>
+    </message>
+    <message>
+        <source>RMS angular rate above which a segment takes part in a movement (8°/s).</source>
+        <translation>RMS-Drehrate, über der ein Segment an einer Bewegung teilnimmt (8°/s).</translation>
+    </message>
+    <message>
+        <source>Ab/adduction: the standing leg&apos;s RMS rate below this share of the moving leg&apos;s.</source>
+        <translation>Ab-/Adduktion: die RMS-Drehrate des Standbeins unter diesem Anteil der des bewegten Beins.</translation>
+    </message>
+    <message>
+        <source>Trunk rotations: largest angle between the sternum&apos;s turning axis and gravity; squats and ab/adduction: smallest angle from the horizontal plane is 90° minus it.</source>
+        <translation>Rumpfrotationen: größter Winkel zwischen der Drehachse des Brustbeins und der Schwerkraft; Kniebeugen und Ab-/Adduktion: der kleinste Winkel zur horizontalen Ebene ist 90° minus dieser Wert.</translation>
+    </message>
+    <message>
+        <source>Repetitions each movement needs (the protocol&apos;s ×3, spec §4).</source>
+        <translation>Wiederholungen, die jede Bewegung braucht (×3 im Protokoll, Spezifikation §4).</translation>
+    </message>
+    <message>
+        <source>Largest dispersion χ of the functional axis between repetitions (10°; Fasel Table 6.3 reports up to 5.5° for the shank).</source>
+        <translation>Größte Streuung χ der funktionellen Achse zwischen Wiederholungen (10°; Fasel Tabelle 6.3 nennt bis 5,5° für den Unterschenkel).</translation>
+    </message>
+    <message>
+        <source>Largest angle between the functional axis and the plane perpendicular to gravity (30°; the simulated shank&apos;s coupled rotation tilts it by ≈ 8°).</source>
+        <translation>Größter Winkel zwischen der funktionellen Achse und der Ebene senkrecht zur Schwerkraft (30°; die gekoppelte Rotation des simulierten Unterschenkels neigt sie um ≈ 8°).</translation>
+    </message>
+    <message>
+        <source>IMU of the first segment (acc, gyr).</source>
+        <translation>IMU des ersten Segments (acc, gyr).</translation>
+    </message>
+    <message>
+        <source>IMU of segment %1.</source>
+        <translation>IMU von Segment %1.</translation>
+    </message>
+    <message>
+        <source>segment, qw, qx, qy, qz (segment to sensor), axis_share, orthogonality (rad).</source>
+        <translation>segment, qw, qx, qy, qz (Segment → Sensor), axis_share, orthogonality (rad).</translation>
+    </message>
+    <message>
+        <source>The right side&apos;s mounts under the names joint-angles reads: pelvis, thorax, thigh, shank, foot.</source>
+        <translation>Die Montagen der rechten Seite unter den Namen, die joint-angles liest: pelvis, thorax, thigh, shank, foot.</translation>
+    </message>
+    <message>
+        <source>The left side&apos;s mounts (pelvis, thorax, thigh, shank, foot).</source>
+        <translation>Die Montagen der linken Seite (pelvis, thorax, thigh, shank, foot).</translation>
+    </message>
+    <message>
+        <source>Per segment: movement, repetitions, dispersion χ, orthogonality, cross_orthogonality (rad), cmc, begin, end (s).</source>
+        <translation>Je Segment: movement, repetitions, Streuung χ, orthogonality, cross_orthogonality (rad), cmc, begin, end (s).</translation>
+    </message>
+    <message>
+        <source>Per movement and repetition: movement, repetition (0 = whole), begin, end (s), given.</source>
+        <translation>Je Bewegung und Wiederholung: movement, repetition (0 = ganz), begin, end (s), given.</translation>
+    </message>
+</context>
+<context>
     <name>athlos::inertial::GnssImuProcessor</name>
     <message>
         <source>GNSS/IMU fusion</source>
@@ -1189,6 +1280,14 @@
     <message>
         <source>True sensor-to-joint vectors (joint, proximal, distal, rp_x..z, rd_x..z in m).</source>
         <translation>Wahre Sensor-Gelenk-Vektoren (joint, proximal, distal, rp_x..z, rd_x..z in m).</translation>
+    </message>
+    <message>
+        <source>Calibration trunk rotations after the squats (0 = none; the protocol has 3).</source>
+        <translation>Kalibrier-Rumpfrotationen nach den Kniebeugen (0 = keine; das Protokoll hat 3).</translation>
+    </message>
+    <message>
+        <source>Calibration hip ab/adductions per leg after them (0 = none; the protocol has 3).</source>
+        <translation>Kalibrier-Hüft-Ab-/Adduktionen je Bein danach (0 = keine; das Protokoll hat 3).</translation>
     </message>
 </context>
 <context>
@@ -2750,6 +2849,109 @@
     <message>
         <source>cycle (%)</source>
         <translation>Zyklus (%)</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::FunctionalCalibrationWizard</name>
+    <message>
+        <source>Functional calibration</source>
+        <translation>Funktionelle Kalibrierung</translation>
+    </message>
+    <message>
+        <source>Recording and sensors</source>
+        <translation>Aufnahme und Sensoren</translation>
+    </message>
+    <message>
+        <source>The recording of the protocol: standing upright still (10 s), 3 squats, 3 trunk rotations and 3 hip ab/adductions per leg, standing still for a moment between movements. Choose the IMU of each segment (leave out those without a sensor). Next finds the movements and calibrates.</source>
+        <translation>Die Aufnahme des Protokolls: ruhig aufrecht stehen (10 s), 3 Kniebeugen, 3 Rumpfrotationen und 3 Hüft-Ab-/Adduktionen je Bein, zwischen den Bewegungen kurz stillstehen. Wählen Sie die IMU jedes Segments (lassen Sie die ohne Sensor weg). Weiter findet die Bewegungen und kalibriert.</translation>
+    </message>
+    <message>
+        <source>Recording:</source>
+        <translation>Aufnahme:</translation>
+    </message>
+    <message>
+        <source>Output (rec/table):</source>
+        <translation>Ausgabe (Aufnahme/Tabelle):</translation>
+    </message>
+    <message>
+        <source>This project has no IMU stream; import the recording first.</source>
+        <translation>Dieses Projekt hat keinen IMU-Datenstrom; importieren Sie zuerst die Aufnahme.</translation>
+    </message>
+    <message>
+        <source>Movements and quality</source>
+        <translation>Bewegungen und Qualität</translation>
+    </message>
+    <message>
+        <source>The movements found and, per segment, the dispersion χ of the functional axis between repetitions, its angle to the horizontal plane, the angle between axes that should be orthogonal and the CMC of the repetitions. Finish keeps the calibration; Back discards it.</source>
+        <translation>Die gefundenen Bewegungen und je Segment die Streuung χ der funktionellen Achse zwischen Wiederholungen, ihr Winkel zur horizontalen Ebene, der Winkel zwischen Achsen, die orthogonal sein sollten, und der CMC der Wiederholungen. Fertigstellen behält die Kalibrierung; Zurück verwirft sie.</translation>
+    </message>
+    <message>
+        <source>Movements:</source>
+        <translation>Bewegungen:</translation>
+    </message>
+    <message>
+        <source>Quality per segment:</source>
+        <translation>Qualität je Segment:</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(keine)</translation>
+    </message>
+    <message>
+        <source>Choose the IMU stream of at least one segment.</source>
+        <translation>Wählen Sie den IMU-Datenstrom mindestens eines Segments.</translation>
+    </message>
+    <message>
+        <source>The output must be named rec/table.</source>
+        <translation>Die Ausgabe muss als Aufnahme/Tabelle benannt sein.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; already exists; choose another name.</source>
+        <translation>„%1“ existiert bereits; wählen Sie einen anderen Namen.</translation>
+    </message>
+    <message>
+        <source>Movement</source>
+        <translation>Bewegung</translation>
+    </message>
+    <message>
+        <source>Repetition</source>
+        <translation>Wiederholung</translation>
+    </message>
+    <message>
+        <source>From [s]</source>
+        <translation>Von [s]</translation>
+    </message>
+    <message>
+        <source>To [s]</source>
+        <translation>Bis [s]</translation>
+    </message>
+    <message>
+        <source> (marked)</source>
+        <translation> (markiert)</translation>
+    </message>
+    <message>
+        <source>all</source>
+        <translation>alle</translation>
+    </message>
+    <message>
+        <source>Segment</source>
+        <translation>Segment</translation>
+    </message>
+    <message>
+        <source>χ [°]</source>
+        <translation>χ [°]</translation>
+    </message>
+    <message>
+        <source>Orthogonality [°]</source>
+        <translation>Orthogonalität [°]</translation>
+    </message>
+    <message>
+        <source>Second axis [°]</source>
+        <translation>Zweite Achse [°]</translation>
+    </message>
+    <message>
+        <source>CMC</source>
+        <translation>CMC</translation>
     </message>
 </context>
 <context>

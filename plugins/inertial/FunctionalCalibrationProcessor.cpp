@@ -14,7 +14,7 @@
 namespace athlos::inertial {
 
 namespace {
-constexpr Translator tr{"athlos::inertial"};
+constexpr Translator tr{"athlos::inertial", "FunctionalCalibrationProcessor"};
 constexpr int kMaxInputs = 8;
 const QString kDefaultSegments =
     QStringLiteral("sacrum,sternum,right-thigh,right-shank,right-foot,left-thigh,left-shank,left-foot");
