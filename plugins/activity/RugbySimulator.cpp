@@ -32,9 +32,11 @@ Eigen::Vector2d clampToPitch(Eigen::Vector2d p, double margin) {
 }
 
 struct Event {
+    enum Kind { Tackle, Scrum, Contact, Fall } kind = Tackle;
     bool scrum = false;
-    double t = 0.0;         // scrum: binding starts; tackle: collision
-    double duration = 0.0;  // scrum: binding time
+    double t = 0.0;         // scrum: binding starts; others: collision
+    double duration = 0.0;  // scrum: binding time; tackle, fall: time on the ground
+    double approach = 4.0;  // s before t: scrum: walking to the mark; tackle, contact: the chase
     Eigen::Vector2d mark{0.0, 0.0};
     bool started = false;  // the mark / the tackle pair is chosen when the approach starts
     int carrier = -1, tackler = -1;
@@ -97,7 +99,14 @@ RugbySimulator::Result RugbySimulator::simulate(const Params& params) {
     std::vector<Event> events;
     for (int k = 0; k < params.scrums; ++k) {
         Event e;
+        e.kind = Event::Scrum;
         e.scrum = true;
+        e.approach = 10.0;
+        events.push_back(e);
+    }
+    for (int k = 0; k < params.contacts + params.falls; ++k) {
+        Event e;
+        e.kind = k < params.contacts ? Event::Contact : Event::Fall;
         events.push_back(e);
     }
     for (int k = 0; k < params.tackles; ++k) events.push_back(Event());
@@ -106,14 +115,13 @@ RugbySimulator::Result RugbySimulator::simulate(const Params& params) {
     const double spacing = events.empty() ? 0.0 : (last - first) / double(events.size());
     for (std::size_t k = 0; k < events.size(); ++k) {
         Event& e = events[k];
-        e.t = first + spacing * (double(k) + 0.3 + 0.4 * u(rng));
+        e.t = first + spacing * (double(k) + 0.45 + 0.1 * u(rng));
         e.duration = e.scrum ? 4.0 + 6.0 * u(rng) : 2.0 + 1.0 * u(rng);
-        e.size = 15.0 + 15.0 * u(rng);
+        e.size = e.kind == Event::Contact ? 10.0 + 15.0 * u(rng) : 15.0 + 15.0 * u(rng);
         e.pitch.resize(kPlayers);
         for (double& p : e.pitch)
             p = e.scrum ? (62.0 + 26.0 * u(rng)) * kPi / 180.0 : (70.0 + 15.0 * u(rng)) * kPi / 180.0;
     }
-    const double approach = 10.0;  // s, scrum: walking to the mark; tackle: the chase
 
     Eigen::Vector2d ball(0.0, 0.0), ballTarget(0.0, 0.0);
     double nextBall = kStanding;
@@ -141,12 +149,22 @@ RugbySimulator::Result RugbySimulator::simulate(const Params& params) {
         // The event in progress (at most one: events are ≥ 20 s apart).
         Event* active = nullptr;
         for (Event& e : events)
-            if (now >= e.t - approach && now <= e.t + e.duration) active = &e;
+            if (now >= e.t - e.approach && now <= e.t + e.duration) active = &e;
         if (active && !active->started) {
             active->started = true;
             if (active->scrum) {
                 active->mark = clampToPitch(ball, 8.0);
                 ball = ballTarget = active->mark;
+            } else if (active->kind == Event::Fall) {  // the player farthest from every opponent
+                double farthest = -1.0;
+                for (int i = 0; i < kPlayers; ++i) {
+                    double nearest = 1e300;
+                    for (int j = 0; j < kPlayers; ++j)
+                        if ((i < kPlayersPerTeam) != (j < kPlayersPerTeam))
+                            nearest = std::min(nearest, (st[std::size_t(j)].p - st[std::size_t(i)].p).norm());
+                    if (nearest > farthest) farthest = nearest, active->carrier = i;
+                }
+                active->mark = st[std::size_t(active->carrier)].p;
             } else {  // the carrier and his nearest opponent
                 active->carrier = int(u(rng) * kPlayers) % kPlayers;
                 const bool home = active->carrier < kPlayersPerTeam;
@@ -193,13 +211,23 @@ RugbySimulator::Result RugbySimulator::simulate(const Params& params) {
                     target = clampToPitch(target, 1.0);
                     cap = std::min(cap, 3.0);
                 }
+            } else if (active && active->kind == Event::Fall && i == active->carrier) {
+                // Like the pair of a tackle, who meet and stop before the collision: to a spot, then down.
+                if (now < active->t) {
+                    target = active->mark;
+                    cap = 7.0;
+                    gain = 2.0;
+                } else {
+                    ground = true;
+                    pitchTarget = active->pitch[std::size_t(i)];
+                }
             } else if (active && (i == active->carrier || i == active->tackler)) {
                 const PlayerState& other = st[std::size_t(i == active->carrier ? active->tackler : active->carrier)];
                 if (now < active->t) {
                     target = 0.5 * (s.p + other.p);
                     cap = 7.0;
                     gain = 2.0;
-                } else {
+                } else if (active->kind == Event::Tackle) {
                     ground = true;
                     pitchTarget = active->pitch[std::size_t(i)];
                 }
@@ -254,7 +282,7 @@ RugbySimulator::Result RugbySimulator::simulate(const Params& params) {
             if (active && !active->scrum && (i == active->carrier || i == active->tackler)) {
                 const Eigen::Vector3d forward = body.col(0);
                 f -= active->size * halfSine(now, active->t - 0.25, 0.5) * forward;
-                f.z() += 12.0 * ringDown(now, active->t + 0.7, 0.08, 5.0);
+                if (active->kind != Event::Contact) f.z() += 12.0 * ringDown(now, active->t + 0.7, 0.08, 5.0);
             }
             const Eigen::Vector3d acc = sensor.transpose() * f;
             Eigen::Vector3d gyr = Eigen::Vector3d::Zero();
@@ -294,6 +322,10 @@ RugbySimulator::Result RugbySimulator::simulate(const Params& params) {
     for (const Event& e : events) {
         Annotation an;
         an.source = QStringLiteral("import");
+        if (e.kind == Event::Contact || e.kind == Event::Fall) {
+            (e.kind == Event::Contact ? out.contacts : out.falls).push_back({e.t, e.carrier, e.tackler});
+            continue;
+        }
         if (e.scrum) {
             out.scrums.push_back({e.t, e.t + e.duration});
             an.label = QStringLiteral("scrum");

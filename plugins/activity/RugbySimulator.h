@@ -10,6 +10,9 @@
 //    jogging and running, and occasional single players bending to pick up the ball (60–75°);
 //  - tackles: a carrier and an opponent run into each other, a 15–30 m/s² collision, both go to
 //    ground (torso pitch ~70–85°) for 2–3 s; annotated `tackle` [t − 1, t + 1] s;
+//  - events that are not tackles but look like one to a single IMU: contacts (two opponents collide
+//    at 10–25 m/s² and stay on their feet) and falls (the player farthest from every opponent goes
+//    to ground alone after a 15–30 m/s² deceleration: a slip or a dive); not annotated;
 //  - scrums: `scrumPlayersPerTeam` players of each team (3 in sevens: the front row, thesis
 //    §5.1.1) walk to the mark, bind within ~2 m of each other with the front rows facing each
 //    other, torso pitched forward 60–90° from upright for 4–10 s; annotated `scrum` over the binding.
@@ -37,6 +40,8 @@ public:
         double imuRate = 200.0;       // Hz
         int scrums = 4;               // scrums in the match
         int tackles = 8;              // tackles in the match
+        int contacts = 8;             // collisions of two opponents who stay on their feet (not tackles)
+        int falls = 4;                // a player going to ground alone (slip, dive), no opponent near
         int scrumPlayersPerTeam = 3;  // 3 in sevens (thesis §5.1.1), up to 6
         double positionNoise = 0.05;  // m, SD of the position noise (filtered LPS)
     };
@@ -69,7 +74,9 @@ public:
         std::vector<Track> tracks;      // same order as players
         std::vector<Interval> scrums;
         std::vector<Tackle> tackles;
-        Annotations truth;  // `scrum` and `tackle`, source "import"
+        std::vector<Tackle> contacts;  // not tackles: both stay on their feet
+        std::vector<Tackle> falls;     // not tackles: carrier alone, tackler −1
+        Annotations truth;             // `scrum` and `tackle`, source "import"
     };
 
     static std::vector<Player> roster();

@@ -33,7 +33,8 @@ QString SimulateRugbyProcessor::name() const { return tr("Simulate rugby sevens 
 QString SimulateRugbyProcessor::description() const {
     return tr(
         "Simulates a rugby sevens match of 2 × 7 players: positions (~80 Hz) and an upper-back IMU (200 Hz) per "
-        "player, with running play, tackles (two players collide and go to ground) and scrums (the front rows "
+        "player, with running play, tackles (two players collide and go to ground), contacts and falls that are not "
+        "tackles, and scrums (the front rows "
         "bind with the torso pitched 60–90° forward). The true scrums and tackles are written as annotations.");
 }
 
@@ -46,6 +47,10 @@ ParameterSpecs SimulateRugbyProcessor::parameters() const {
                    tr("Length of the match.")),
         PS::integer(QStringLiteral("scrums"), d.scrums, 0, 100, tr("Number of scrums.")),
         PS::integer(QStringLiteral("tackles"), d.tackles, 0, 400, tr("Number of tackles.")),
+        PS::integer(QStringLiteral("contacts"), d.contacts, 0, 400,
+                    tr("Collisions of two opponents who stay on their feet (not tackles, not annotated).")),
+        PS::integer(QStringLiteral("falls"), d.falls, 0, 400,
+                    tr("Players going to ground alone, away from opponents (not tackles, not annotated).")),
         PS::integer(QStringLiteral("scrum_players"), d.scrumPlayersPerTeam, 1, 6,
                     tr("Players of each team bound in a scrum (3 in sevens: the front row, seed 000 §5.1.1).")),
         PS::number(QStringLiteral("position_rate"), d.positionRate, 1.0, 200.0, QStringLiteral("Hz"),
@@ -82,17 +87,19 @@ Expected<std::vector<ProcessorOutput>> SimulateRugbyProcessor::run(const RunCont
     p.duration = c.number(QStringLiteral("duration"));
     p.scrums = c.integer(QStringLiteral("scrums"));
     p.tackles = c.integer(QStringLiteral("tackles"));
+    p.contacts = c.integer(QStringLiteral("contacts"));
+    p.falls = c.integer(QStringLiteral("falls"));
     p.scrumPlayersPerTeam = c.integer(QStringLiteral("scrum_players"));
     p.positionRate = c.number(QStringLiteral("position_rate"));
     p.imuRate = c.number(QStringLiteral("imu_rate"));
-    // Events are spread evenly after 15 s and need ~20 s each (approach, scrum or tackle, recovery).
-    const double needed = 30.0 + 20.0 * double(p.scrums + p.tackles);
+    // Events are spread evenly after 15 s; a scrum needs up to 20 s (approach, binding), so ≥ 25 s each.
+    const int events = p.scrums + p.tackles + p.contacts + p.falls;
+    const double needed = 30.0 + 25.0 * double(events);
     if (p.duration < needed)
-        return makeError(QStringLiteral("parameter 'duration' (%1 s) is too short for %2 scrums and %3 tackles (needs "
-                                        "at least %4 s)")
+        return makeError(QStringLiteral("parameter 'duration' (%1 s) is too short for %2 events (scrums, tackles, "
+                                        "contacts, falls; needs at least %3 s)")
                              .arg(p.duration)
-                             .arg(p.scrums)
-                             .arg(p.tackles)
+                             .arg(events)
                              .arg(needed));
     c.report(0.0, QStringLiteral("simulating"));
     if (c.isCancelled()) return cancelledError();

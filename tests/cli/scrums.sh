@@ -7,12 +7,12 @@ P="$WORK/p.athlos"
 
 expect_ok "new" "$ATHLOS" new "$P"
 cp "$P" "$WORK/before.athlos"
-expect_fail "too short" "parameter 'duration' .100 s. is too short for 4 scrums and 8 tackles" \
+expect_fail "too short" "parameter 'duration' .100 s. is too short for 24 events" \
   "$ATHLOS" run "$P" simulate-rugby --output m/sim --param duration=100
 cmp -s "$P" "$WORK/before.athlos" || fail "a refused command changed the project"
 
-expect_ok "simulate" "$ATHLOS" run "$P" simulate-rugby --output match/sim --param seed=3 --param duration=200 \
-  --param scrums=2 --param tackles=3
+expect_ok "simulate" "$ATHLOS" run "$P" simulate-rugby --output match/sim --param seed=3 --param duration=240 \
+  --param scrums=2 --param tackles=3 --param contacts=1 --param falls=1
 expect_ok "detect" "$ATHLOS" run "$P" detect-scrums --input match/sim-imu-away-07 --output match/scrums
 expect_ok "export" "$ATHLOS" export "$P" match/annotations --to "$WORK/x.csv"
 truth=$(awk -F, '$3 == "scrum" && $5 == "simulate-rugby"' "$WORK/x.csv" | wc -l)

@@ -3,7 +3,7 @@
 // mean inside scrums and elsewhere, and the recall and precision of the detected scrums.
 // Figures: docs/validation/activity.md.
 //
-//   build/bin/athlos-eval-scrums [--seeds N] [--duration S] [--scrums K] [--tackles T]
+//   build/bin/athlos-eval-scrums [--seeds N] [--duration S] [--scrums K] [--tackles T] [--contacts C] [--falls F]
 #include "tools/eval/ScrumEvaluation.h"
 
 #include <QCoreApplication>
@@ -26,6 +26,8 @@ int main(int argc, char** argv) {
     sp.duration = option("--duration", 600.0);
     sp.scrums = int(option("--scrums", 4));
     sp.tackles = int(option("--tackles", 8));
+    sp.contacts = int(option("--contacts", 8));
+    sp.falls = int(option("--falls", 4));
     const TorsoPitch::Params pitch;
     const ScrumDetector::Params detector;
     constexpr double deg = 180.0 / std::numbers::pi;

@@ -26,6 +26,8 @@ RugbySimulator::Params shortMatch(std::uint64_t seed) {
     p.duration = 300.0;
     p.scrums = 3;
     p.tackles = 4;
+    p.contacts = 2;
+    p.falls = 1;
     return p;
 }
 
@@ -131,9 +133,11 @@ TEST(DetectScrumsProcessor, SimulatedMatchEndToEnd) {
                                        {},
                                        QStringLiteral("match/sim"),
                                        {{QStringLiteral("seed"), 5},
-                                        {QStringLiteral("duration"), 200.0},
+                                        {QStringLiteral("duration"), 240.0},
                                         {QStringLiteral("scrums"), 2},
-                                        {QStringLiteral("tackles"), 3}}});
+                                        {QStringLiteral("tackles"), 3},
+                                        {QStringLiteral("contacts"), 1},
+                                        {QStringLiteral("falls"), 1}}});
     ASSERT_TRUE(sim.ok()) << qPrintable(sim.message());
     const Recording* match = project->recording(QStringLiteral("match"));
     ASSERT_NE(match, nullptr);
