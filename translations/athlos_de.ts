@@ -104,6 +104,116 @@
     </message>
 </context>
 <context>
+    <name>athlos::activity::DetectScrumsProcessor</name>
+    <message>
+        <source>Detect scrums (top-6 torso pitch)</source>
+        <translation>Gedränge erkennen (Top-6-Rumpfneigung)</translation>
+    </message>
+    <message>
+        <source>Finds scrums in a team session: the torso pitch of every player from the upper-back accelerometer (gravity direction against the upright standing posture), sorted at each instant; where the mean of the six largest stays above the threshold for the minimum duration, with those players close together, a scrum annotation is written. Uses every IMU stream of the input&apos;s recording.</source>
+        <translation>Findet Gedränge in einer Mannschaftseinheit: die Rumpfneigung jedes Spielers aus dem Beschleunigungsmesser am oberen Rücken (Schwerkraftrichtung gegenüber der aufrechten Haltung), zu jedem Zeitpunkt sortiert; wo der Mittelwert der sechs größten für die Mindestdauer über der Schwelle bleibt und diese Spieler nahe beieinander sind, wird eine Annotation scrum geschrieben. Verwendet jeden IMU-Datenstrom der Aufnahme der Eingabe.</translation>
+    </message>
+    <message>
+        <source>Largest torso pitches averaged at each instant (seed 000 §5.1.2: the six players of a sevens scrum).</source>
+        <translation>Größte Rumpfneigungen, die zu jedem Zeitpunkt gemittelt werden (Quelle 000 §5.1.2: die sechs Spieler eines Siebener-Gedränges).</translation>
+    </message>
+    <message>
+        <source>Scrum when the mean of the largest torso pitches exceeds this (0.96 rad = 55°, between running &lt; 25° and binding 60–90°; the thesis fits it by grid search so that no scrum is missed, seed 000 §5.1.2, Fig. 5.6).</source>
+        <translation>Gedränge, wenn der Mittelwert der größten Rumpfneigungen diesen Wert übersteigt (0,96 rad = 55°, zwischen Laufen &lt; 25° und Binden 60–90°; die Arbeit passt ihn per Rastersuche so an, dass kein Gedränge verpasst wird, Quelle 000 §5.1.2, Abb. 5.6).</translation>
+    </message>
+    <message>
+        <source>Shorter episodes are not scrums (a scrum lasts several seconds; tackles and players bending for the ball are brief).</source>
+        <translation>Kürzere Episoden sind keine Gedränge (ein Gedränge dauert mehrere Sekunden; Tackles und Spieler, die sich nach dem Ball bücken, sind kurz).</translation>
+    </message>
+    <message>
+        <source>Largest distance of those players from their centroid (bound players are within ~2 m of each other); 0 or no position streams: not checked.</source>
+        <translation>Größter Abstand dieser Spieler von ihrem Schwerpunkt (gebundene Spieler sind höchstens ~2 m voneinander entfernt); 0 oder keine Positionsdatenströme: nicht geprüft.</translation>
+    </message>
+    <message>
+        <source>Low-pass of the accelerometer that leaves the direction of gravity (torso pitch).</source>
+        <translation>Tiefpass des Beschleunigungsmessers, der die Schwerkraftrichtung übrig lässt (Rumpfneigung).</translation>
+    </message>
+    <message>
+        <source>Start of the standing period whose gravity direction is each player&apos;s upright reference (sensor alignment correction, seed 000 Fig. 5.5).</source>
+        <translation>Beginn der Stehphase, deren Schwerkraftrichtung die aufrechte Referenz jedes Spielers ist (Korrektur der Sensorausrichtung, Quelle 000 Abb. 5.5).</translation>
+    </message>
+    <message>
+        <source>Length of the standing period; 0: the sensor axis up_axis is upright.</source>
+        <translation>Länge der Stehphase; 0: die Sensorachse up_axis ist aufrecht.</translation>
+    </message>
+    <message>
+        <source>The sensor axis that points up when the player stands (reference_duration 0).</source>
+        <translation>Die Sensorachse, die nach oben zeigt, wenn der Spieler steht (reference_duration 0).</translation>
+    </message>
+    <message>
+        <source>One upper-back IMU stream of the session; all IMU streams of its recording are used.</source>
+        <translation>Ein IMU-Datenstrom vom oberen Rücken der Einheit; alle IMU-Datenströme seiner Aufnahme werden verwendet.</translation>
+    </message>
+    <message>
+        <source>Scrums as predicted annotations.</source>
+        <translation>Gedränge als vorhergesagte Annotationen.</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::activity::SimulateRugbyProcessor</name>
+    <message>
+        <source>Simulate rugby sevens match</source>
+        <translation>Siebener-Rugbyspiel simulieren</translation>
+    </message>
+    <message>
+        <source>Simulates a rugby sevens match of 2 × 7 players: positions (~80 Hz) and an upper-back IMU (200 Hz) per player, with running play, tackles (two players collide and go to ground), contacts and falls that are not tackles, and scrums (the front rows bind with the torso pitched 60–90° forward). The true scrums and tackles are written as annotations.</source>
+        <translation>Simuliert ein Siebener-Rugbyspiel mit 2 × 7 Spielern: Positionen (~80 Hz) und eine IMU am oberen Rücken (200 Hz) je Spieler, mit offenem Spiel, Tackles (zwei Spieler prallen zusammen und gehen zu Boden), Kontakten und Stürzen, die keine Tackles sind, und Gedrängen (die erste Reihe bindet mit 60–90° nach vorn geneigtem Rumpf). Die wahren Gedränge und Tackles werden als Annotationen geschrieben.</translation>
+    </message>
+    <message>
+        <source>Random seed (deterministic).</source>
+        <translation>Zufallsstartwert (deterministisch).</translation>
+    </message>
+    <message>
+        <source>Length of the match.</source>
+        <translation>Länge des Spiels.</translation>
+    </message>
+    <message>
+        <source>Number of scrums.</source>
+        <translation>Anzahl der Gedränge.</translation>
+    </message>
+    <message>
+        <source>Number of tackles.</source>
+        <translation>Anzahl der Tackles.</translation>
+    </message>
+    <message>
+        <source>Collisions of two opponents who stay on their feet (not tackles, not annotated).</source>
+        <translation>Zusammenstöße zweier Gegner, die auf den Beinen bleiben (keine Tackles, nicht annotiert).</translation>
+    </message>
+    <message>
+        <source>Players going to ground alone, away from opponents (not tackles, not annotated).</source>
+        <translation>Spieler, die allein, abseits von Gegnern, zu Boden gehen (keine Tackles, nicht annotiert).</translation>
+    </message>
+    <message>
+        <source>Players of each team bound in a scrum (3 in sevens: the front row, seed 000 §5.1.1).</source>
+        <translation>Spieler je Mannschaft, die in einem Gedränge gebunden sind (3 im Siebener: die erste Reihe, Quelle 000 §5.1.1).</translation>
+    </message>
+    <message>
+        <source>Sampling rate of the positions (the LPS&apos;s ~80 Hz, seed 000 §5.1.2).</source>
+        <translation>Abtastrate der Positionen (die ~80 Hz des LPS, Quelle 000 §5.1.2).</translation>
+    </message>
+    <message>
+        <source>Sampling rate of the IMU (200 Hz, seed 000 §5.1.2).</source>
+        <translation>Abtastrate der IMU (200 Hz, Quelle 000 §5.1.2).</translation>
+    </message>
+    <message>
+        <source>Upper-back IMU of player %1: acc_x..z (m/s²), gyr_x..z (rad/s).</source>
+        <translation>IMU am oberen Rücken von Spieler %1: acc_x..z (m/s²), gyr_x..z (rad/s).</translation>
+    </message>
+    <message>
+        <source>Positions t, x, y (m) of player %1.</source>
+        <translation>Positionen t, x, y (m) von Spieler %1.</translation>
+    </message>
+    <message>
+        <source>The true scrums and tackles as annotations.</source>
+        <translation>Die wahren Gedränge und Tackles als Annotationen.</translation>
+    </message>
+</context>
+<context>
     <name>athlos::body::BodyComProcessor</name>
     <message>
         <source>Centre of mass (body model)</source>

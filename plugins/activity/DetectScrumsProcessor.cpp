@@ -7,7 +7,7 @@
 namespace athlos::activity {
 
 namespace {
-constexpr Translator tr{"athlos::activity"};
+constexpr Translator tr{"athlos::activity", "DetectScrumsProcessor"};
 
 QString athleteOf(const StreamInfo& info) {
     const QString athlete = info.attributes.value(QStringLiteral("athlete")).toString();

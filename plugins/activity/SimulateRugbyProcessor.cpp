@@ -9,7 +9,7 @@
 namespace athlos::activity {
 
 namespace {
-constexpr Translator tr{"athlos::activity"};
+constexpr Translator tr{"athlos::activity", "SimulateRugbyProcessor"};
 
 QString suffixOf(const char* sensor, const RugbySimulator::Player& player) {
     return QStringLiteral("%1-%2-%3")
