@@ -91,6 +91,9 @@ expect_ok "retrain" "$ATHLOS" train "$P" --model m2 --input imu --window 3 --ste
   --balance smote --select-features 20
 grep -q "from 5 recordings" "$WORK/out" || fail "predictions became training data: $(head -1 "$WORK/out")"
 grep -q "selected the 20 of 242 features of highest mutual information" "$WORK/out" || fail "no selection: $(cat "$WORK/out")"
+expect_ok "info with selection" "$ATHLOS" info "$P"
+grep -q "model m2: random-forest on imu, 7 classes .*20 of 242 features selected by mutual information" "$WORK/out" \
+  || fail "info: $(grep model "$WORK/out")"
 # The model with 20 selected features classifies (classify-actions applies the stored selection).
 expect_ok "classify with selection" "$ATHLOS" run "$P" classify-actions --input test102/imu --output test102/actions \
   --param model=m2
