@@ -158,6 +158,14 @@ void printText(const Project& project) {
             std::printf(", cross-validated balanced accuracy %.3f (%s)",
                         cv.value(QStringLiteral("balanced_accuracy")).toDouble(),
                         qUtf8Printable(cv.value(QStringLiteral("scheme")).toString()));
+        if (d.contains(QStringLiteral("feature_selection")))
+            std::printf(", %lld of %lld features selected by mutual information",
+                        qlonglong(d.value(QStringLiteral("feature_selection"))
+                                      .toObject()
+                                      .value(QStringLiteral("features"))
+                                      .toArray()
+                                      .size()),
+                        qlonglong(d.value(QStringLiteral("features")).toArray().size()));
         std::printf("\n");
     }
 }

@@ -175,6 +175,14 @@ int cmdTrain(const QStringList& args) {
                                 "with replacement), smote (their missing windows synthesised by SMOTE, Chawla et al. "
                                 "2002, k = 5) or none."),
                  QStringLiteral("METHOD"), QStringLiteral("oversample")});
+    p.addOption({QStringLiteral("select-features"),
+                 QStringLiteral("Keep the K features of highest mutual information with the class (equal-frequency "
+                                "bins, seed 000 §5.2), ranked inside each cross-validation training fold and on all "
+                                "windows for the stored model (default 0: every feature)."),
+                 QStringLiteral("K"), QStringLiteral("0")});
+    p.addOption({QStringLiteral("mi-bins"),
+                 QStringLiteral("Equal-frequency bins per feature of the mutual-information estimate (default 10)."),
+                 QStringLiteral("B"), QStringLiteral("10")});
     p.addOption({QStringLiteral("min-label-fraction"),
                  QStringLiteral("Share of a window its label must cover to be trained on (default 0.5)."),
                  QStringLiteral("F"), QStringLiteral("0.5")});
@@ -263,6 +271,15 @@ int cmdTrain(const QStringList& args) {
     options.classifier.trees = cl.value(QStringLiteral("trees")).toInt(&ok);
     if (!ok || options.classifier.trees < 1 || options.classifier.trees > 2000)
         return fail(QStringLiteral("--trees: an integer from 1 to 2000"), Usage);
+    options.selectFeatures = cl.value(QStringLiteral("select-features")).toInt(&ok);
+    if (!ok || options.selectFeatures < 0 || options.selectFeatures > 100000)
+        return fail(QStringLiteral("--select-features: an integer from 0 (every feature) to 100000"), Usage);
+    if (options.selectFeatures > 0 && cnn)
+        return fail(QStringLiteral("--select-features goes with the feature classifiers; the cnn reads raw windows"),
+                    Usage);
+    options.miBins = cl.value(QStringLiteral("mi-bins")).toInt(&ok);
+    if (!ok || options.miBins < 2 || options.miBins > 1000)
+        return fail(QStringLiteral("--mi-bins: an integer from 2 to 1000"), Usage);
     options.minLabelFraction = cl.value(QStringLiteral("min-label-fraction")).toDouble(&ok);
     if (!ok || options.minLabelFraction < 0 || options.minLabelFraction > 1)
         return fail(QStringLiteral("--min-label-fraction: a number from 0 to 1"), Usage);
@@ -329,6 +346,21 @@ int cmdTrain(const QStringList& args) {
     auto model = trainModel(*dataset, options);
     if (!model) return fail(model.message());
     if (progress.isCancelled()) return fail(QStringLiteral("cancelled"), Cancelled);
+    bar.finish();
+    if (model->selection) {
+        std::printf(
+            "selected the %d of %lld features of highest mutual information with the class (all windows, "
+            "%d equal-frequency bins):\n%s",
+            model->selection->size(), qlonglong(dataset->features.size()), options.miBins,
+            qUtf8Printable(model->selection->toText(20)));
+        if (model->selection->size() > 20)
+            std::printf("  … (all %d in the model's description)\n", model->selection->size());
+    } else {
+        std::printf(
+            "features of highest mutual information with the class (all windows, %d equal-frequency bins; "
+            "--select-features K keeps the top K):\n%s",
+            options.miBins, qUtf8Printable(rankFeatures(*dataset, options).toText(10)));
+    }
     progress.report(0.95, QStringLiteral("storing"));
 
     QJsonArray training;
@@ -342,23 +374,7 @@ int cmdTrain(const QStringList& args) {
                                     {QStringLiteral("content_hash"), QString::fromLatin1(s.data->contentHash())},
                                     {QStringLiteral("windows"), double(windowsPerSource[i])}});
     }
-    QJsonArray members;
-    for (qsizetype i = 0; i < options.classifier.voteMembers.size(); ++i)
-        members.append(QJsonObject{{QStringLiteral("classifier"), options.classifier.voteMembers[i]},
-                                   {QStringLiteral("weight"), std::size_t(i) < options.classifier.voteWeights.size()
-                                                                  ? options.classifier.voteWeights[std::size_t(i)]
-                                                                  : 1.0}});
-    QJsonObject parameters{{QStringLiteral("trees"), options.classifier.trees},
-                           {QStringLiteral("max_depth"), options.classifier.maxDepth},
-                           {QStringLiteral("neighbours"), options.classifier.neighbours},
-                           {QStringLiteral("balanced"), options.classifier.balance},
-                           {QStringLiteral("balancing"),
-                            options.classifier.balance
-                                ? (options.classifier.smote ? QStringLiteral("smote") : QStringLiteral("oversample"))
-                                : QStringLiteral("none")},
-                           {QStringLiteral("min_label_fraction"), options.minLabelFraction},
-                           {QStringLiteral("seed"), double(options.classifier.seed)}};
-    if (options.classifier.kind == u"vote") parameters[QStringLiteral("vote")] = members;
+    const QJsonObject parameters = trainingParameters(options);
     model->provenance[QStringLiteral("input")] = stream;
     model->provenance[QStringLiteral("parameters")] = parameters;
     model->provenance[QStringLiteral("training")] = training;

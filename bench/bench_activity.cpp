@@ -2,15 +2,26 @@
 // forest). items_per_second = windows/s (CPU time, OpenCV limited to one thread): FeatureExtraction computes the 143 features of 3 s windows
 // (50 Hz, acc + gyr) of a simulated wrist IMU; FeaturesAndForest adds scaling and the class
 // probabilities of the default (100-tree) random forest trained on 4 simulated people; Training trains that forest.
+// Issue #14 item 6 besides: Training100k trains the default forest (class-balanced, as athlos train's final
+// model) on 100 000 windows of simulated people (args: --select-features K, 0 = all 242; --trees), and CnnInference runs
+// the committed tiny ONNX CNN (tests/data/activity/tiny_cnn.onnx) through OpenCV dnn on batches of raw
+// windows (RawWindowsAndCnn: with cutting and resampling the windows out of the stream, as classify-actions).
 #include "plugins/activity/ActivityModel.h"
 #include "plugins/activity/ActivitySimulator.h"
 #include "plugins/activity/ActivityTraining.h"
+#include "plugins/activity/CnnTraining.h"
+#include "plugins/activity/RawWindows.h"
 #include "plugins/activity/FeatureExtractor.h"
 #include "plugins/activity/Windows.h"
 
 #include "core/processing/OutputStreams.h"
 
 #include <benchmark/benchmark.h>
+
+#include <QFile>
+#include <QJsonDocument>
+#include <cstdio>
+#include <cstdlib>
 
 using namespace athlos;
 using namespace athlos::activity;
@@ -108,6 +119,128 @@ void Training(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations() * std::int64_t(dataset->labels.size()));
 }
 BENCHMARK(Training)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// 100 000 labelled windows (3 s, step 1.5 s) of as many simulated people as it takes.
+const Dataset& largeDataset() {
+    static const Dataset d = [] {
+        Fixture& f = fixture();
+        std::vector<TrainingSource> sources;
+        std::size_t windows = 0;
+        for (unsigned person = 100; windows < 100000; ++person) {
+            SimulatedRecording r = ActivitySimulator::simulate(SimulatedPerson::random(person), 14, person);
+            TrainingSource s;
+            s.recording = s.athlete = QStringLiteral("p%1").arg(person);
+            s.info = f.info;
+            s.annotations = Fixture::labelRunsOf(r);
+            s.data = std::make_shared<const StreamData>(std::move(r.imu));
+            windows += slidingWindows(*s.data, 3.0, 1.5).size() * 95 / 100;  // a few are unlabelled
+            sources.push_back(std::move(s));
+        }
+        Dataset out = *buildDataset(sources, f.options);
+        const int n = std::min(100000, out.samples.rows);
+        out.samples = out.samples.rowRange(0, n).clone();
+        out.labels.resize(std::size_t(n));
+        out.source.resize(std::size_t(n));
+        std::fprintf(stderr, "large dataset: %d windows of %zu people, %lld features\n", n, sources.size(),
+                     qlonglong(out.features.size()));
+        return out;
+    }();
+    return d;
+}
+
+void Training100k(benchmark::State& state) {
+    const Dataset& d = largeDataset();
+    TrainingOptions options = fixture().options;
+    options.selectFeatures = int(state.range(0));
+    options.classifier.trees = int(state.range(1));
+    for (auto _ : state) {
+        auto model = trainModel(d, options);
+        benchmark::DoNotOptimize(model.ok());
+    }
+    state.SetItemsProcessed(state.iterations() * std::int64_t(d.labels.size()));
+}
+// Args: features kept by MI (0: all 242), trees.
+BENCHMARK(Training100k)
+    ->Args({0, 100})
+    ->Args({40, 100})
+    ->Args({0, 30})
+    ->Args({40, 30})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+
+// The mutual-information ranking of all 242 features on the 100 000 windows (done once per CV fold with
+// --select-features, equal-frequency bins).
+void MutualInformation100k(benchmark::State& state) {
+    const Dataset& d = largeDataset();
+    for (auto _ : state) {
+        const auto mi = mutualInformation(d.samples, d.labels, int(d.classes.size()), FeatureSelection::kDefaultBins);
+        benchmark::DoNotOptimize(mi.data());
+    }
+    state.SetItemsProcessed(state.iterations() * std::int64_t(d.labels.size()));
+}
+BENCHMARK(MutualInformation100k)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+QByteArray testData(const QString& name) {
+    QFile file(QStringLiteral(ATHLOS_BENCH_TEST_DATA_DIR "/activity/") + name);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+const ActivityModel& tinyCnn() {
+    static const ActivityModel model = [] {
+        auto m = importCnn(testData(QStringLiteral("tiny_cnn.onnx")),
+                           QJsonDocument::fromJson(testData(QStringLiteral("tiny_cnn.json"))).object(),
+                           QStringLiteral("tiny_cnn.onnx"));
+        if (!m) {
+            std::fprintf(stderr, "tiny_cnn.onnx: %s\n", qPrintable(m.message()));
+            std::exit(1);
+        }
+        return *m;
+    }();
+    return model;
+}
+
+// Raw windows (channels × length) of the simulated stream, as classify-actions cuts them for the CNN.
+cv::Mat rawBatch(const ActivityModel& model, std::size_t first, int batch) {
+    Fixture& f = fixture();
+    std::vector<int> columns;
+    for (const QString& c : model.inputColumns) columns.push_back(f.info.columnIndex(c));
+    const int length = model.cnn->length();
+    static const std::vector<Window> windows = slidingWindows(f.recording.imu, model.window, model.step);
+    cv::Mat raw(batch, model.cnn->channels() * length, CV_32F);
+    for (int k = 0; k < batch; ++k) {
+        const Window& w = windows[(first + std::size_t(k)) % windows.size()];
+        rawWindow(f.recording.imu, columns, w.tStart, w.tEnd, length, raw.ptr<float>(k));
+    }
+    return raw;
+}
+
+void CnnInference(benchmark::State& state) {
+    const ActivityModel& model = tinyCnn();
+    const int batch = int(state.range(0));
+    const cv::Mat raw = rawBatch(model, 0, batch);
+    cv::Mat p;
+    for (auto _ : state) {
+        if (!model.cnn->probabilities(raw, p)) state.SkipWithError("cnn failed");
+        benchmark::DoNotOptimize(p.data);
+    }
+    state.SetItemsProcessed(state.iterations() * batch);
+}
+BENCHMARK(CnnInference)->Arg(1)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+void RawWindowsAndCnn(benchmark::State& state) {
+    const ActivityModel& model = tinyCnn();
+    const int batch = 1000;
+    std::size_t first = 0;
+    cv::Mat p;
+    for (auto _ : state) {
+        const cv::Mat raw = rawBatch(model, first, batch);
+        first += batch;
+        if (!model.cnn->probabilities(raw, p)) state.SkipWithError("cnn failed");
+        benchmark::DoNotOptimize(p.data);
+    }
+    state.SetItemsProcessed(state.iterations() * batch);
+}
+BENCHMARK(RawWindowsAndCnn)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

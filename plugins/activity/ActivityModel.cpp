@@ -102,8 +102,15 @@ Expected<ActivityModel> ActivityModel::fromStored(const TrainedModel& stored) {
     }
     if (m.features.isEmpty()) return refuse(QStringLiteral("it lists no features"));
     if (!(m.window > 0) || !(m.step > 0)) return refuse(QStringLiteral("its window or step is not positive"));
-    auto scaling = RobustScaling::fromJson(d.value(QStringLiteral("scaling")).toObject(), int(m.features.size()));
-    if (!scaling) return refuse(QStringLiteral("its scaling does not match its %1 features").arg(m.features.size()));
+    if (d.contains(QStringLiteral("feature_selection"))) {
+        auto selection =
+            FeatureSelection::fromJson(d.value(QStringLiteral("feature_selection")).toObject(), m.features);
+        if (!selection) return refuse(selection.message());
+        m.selection = std::move(*selection);
+    }
+    const int used = m.selection ? m.selection->size() : int(m.features.size());
+    auto scaling = RobustScaling::fromJson(d.value(QStringLiteral("scaling")).toObject(), used);
+    if (!scaling) return refuse(QStringLiteral("its scaling does not match its %1 features").arg(used));
     m.scaling = std::move(*scaling);
     try {
         cv::FileStorage fs(stored.definition.toStdString(), cv::FileStorage::READ | cv::FileStorage::MEMORY);
@@ -165,6 +172,10 @@ Expected<TrainedModel> ActivityModel::toStored(const QString& name) const {
     d[QStringLiteral("window")] = window;
     d[QStringLiteral("step")] = step;
     d[QStringLiteral("scaling")] = scaling.toJson();
+    if (selection)
+        d[QStringLiteral("feature_selection")] = selection->toJson();
+    else
+        d.remove(QStringLiteral("feature_selection"));
     d[QStringLiteral("segmentation")] = segmentation.toJson();
     d[QStringLiteral("classifier")] = classifier->kind();
     t.description = d;
@@ -172,6 +183,7 @@ Expected<TrainedModel> ActivityModel::toStored(const QString& name) const {
 }
 
 void ActivityModel::probabilities(cv::Mat samples, cv::Mat& out) const {
+    if (selection) samples = selection->apply(samples);
     scaling.apply(samples);
     classifier->probabilities(samples, out);
 }

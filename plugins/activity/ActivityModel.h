@@ -11,6 +11,7 @@
 #include "plugins/activity/Windows.h"
 #include "plugins/activity/Classifier.h"
 #include "plugins/activity/CnnClassifier.h"
+#include "plugins/activity/FeatureSelection.h"
 #include "plugins/activity/Segmentation.h"
 
 #include <QJsonObject>
@@ -42,6 +43,9 @@ public:
     QStringList inputColumns;         // stream columns read
     double window = 3.0, step = 1.5;  // s
     Segmentation segmentation;        // sliding windows, or `window` s around each detected event
+    // The features the classifier reads (mutual-information selection, --select-features K); absent: all
+    // of `features` (models stored before the selection existed have none). Scaling is of these columns.
+    std::optional<FeatureSelection> selection;
     RobustScaling scaling;
     std::optional<Classifier> classifier;  // features → OpenCV ml
     std::optional<CnnClassifier> cnn;      // or: raw windows of inputColumns → ONNX network (no features)
@@ -51,7 +55,7 @@ public:
     static Expected<ActivityModel> fromStored(const TrainedModel& stored);
     Expected<TrainedModel> toStored(const QString& name) const;
 
-    // Class probabilities of each window (rows) of `samples` (raw features, scaled here).
+    // Class probabilities of each window (rows) of `samples` (every raw feature; selected and scaled here).
     void probabilities(cv::Mat samples, cv::Mat& out) const;
     // Class probabilities of `windows` of a stream: features and the classifier, or raw windows and the CNN.
     Status windowProbabilities(const StreamInfo& info, const StreamData& data, const std::vector<Window>& windows,

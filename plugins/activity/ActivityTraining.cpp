@@ -287,6 +287,15 @@ Expected<Evaluation> crossValidate(const Dataset& dataset, const std::vector<int
         }
         cv::Mat test(int(testRows.size()), dataset.samples.cols, CV_32F);
         for (std::size_t i = 0; i < testRows.size(); ++i) dataset.samples.row(testRows[i]).copyTo(test.row(int(i)));
+        if (options.selectFeatures > 0 && options.selectFeatures < train.cols) {
+            // Ranked on this fold's training windows only: selecting on all windows would let the test
+            // fold pick the features it is scored with.
+            const FeatureSelection selection =
+                FeatureSelection::fit(train, trainLabels, int(dataset.classes.size()), options.selectFeatures,
+                                      dataset.features, options.miBins);
+            train = selection.apply(train);
+            test = selection.apply(test);
+        }
         const RobustScaling scaling = RobustScaling::fit(train);
         scaling.apply(train);
         scaling.apply(test);
@@ -313,6 +322,11 @@ Expected<ActivityModel> trainModel(const Dataset& dataset, const TrainingOptions
     m.window = options.window;
     m.step = options.step;
     cv::Mat samples = dataset.samples.clone();
+    if (options.selectFeatures > 0 && options.selectFeatures < samples.cols) {
+        m.selection = FeatureSelection::fit(samples, dataset.labels, int(dataset.classes.size()),
+                                            options.selectFeatures, dataset.features, options.miBins);
+        samples = m.selection->apply(samples);
+    }
     m.scaling = RobustScaling::fit(samples);
     m.scaling.apply(samples);
     auto classifier = Classifier::train(samples, dataset.labels, int(dataset.classes.size()), options.classifier);
@@ -321,6 +335,35 @@ Expected<ActivityModel> trainModel(const Dataset& dataset, const TrainingOptions
     m.segmentation = dataset.segmentation;
     m.provenance[QStringLiteral("units")] = dataset.units;
     return m;
+}
+
+FeatureSelection rankFeatures(const Dataset& dataset, const TrainingOptions& options) {
+    return FeatureSelection::fit(dataset.samples, dataset.labels, int(dataset.classes.size()), 0, dataset.features,
+                                 options.miBins);
+}
+
+QJsonObject trainingParameters(const TrainingOptions& options) {
+    const ClassifierOptions& c = options.classifier;
+    QJsonObject parameters{
+        {QStringLiteral("trees"), c.trees},
+        {QStringLiteral("max_depth"), c.maxDepth},
+        {QStringLiteral("neighbours"), c.neighbours},
+        {QStringLiteral("balanced"), c.balance},
+        {QStringLiteral("balancing"),
+         c.balance ? (c.smote ? QStringLiteral("smote") : QStringLiteral("oversample")) : QStringLiteral("none")},
+        {QStringLiteral("min_label_fraction"), options.minLabelFraction},
+        {QStringLiteral("select_features"), options.selectFeatures},
+        {QStringLiteral("mi_bins"), options.miBins},
+        {QStringLiteral("seed"), double(c.seed)}};
+    if (c.kind == QLatin1String("vote")) {
+        QJsonArray members;
+        for (qsizetype i = 0; i < c.voteMembers.size(); ++i)
+            members.append(QJsonObject{{QStringLiteral("classifier"), c.voteMembers[i]},
+                                       {QStringLiteral("weight"),
+                                        std::size_t(i) < c.voteWeights.size() ? c.voteWeights[std::size_t(i)] : 1.0}});
+        parameters[QStringLiteral("vote")] = members;
+    }
+    return parameters;
 }
 
 }  // namespace athlos::activity

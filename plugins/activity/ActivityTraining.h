@@ -38,6 +38,11 @@ struct TrainingOptions {
     int maxGroups = 10;         // leave-one-*-out with more subjects: subjects dealt into this many folds
     int rawLength = 0;          // raw windows (CNN): samples per window; 0: the window at the first recording's rate
     Segmentation segmentation;  // sliding windows or windows around detected events
+    // Mutual-information feature selection (FeatureSelection.h): the classifier reads the K features of
+    // highest I(feature; class), ranked on the training windows of each cross-validation fold (the test
+    // fold never chooses its features) and on all windows for the stored model; 0: every feature.
+    int selectFeatures = 0;
+    int miBins = FeatureSelection::kDefaultBins;
 };
 
 // A window of a source with its label (index into the classes).
@@ -97,5 +102,11 @@ Expected<std::vector<int>> foldGroups(const Dataset& dataset, const std::vector<
                                       const TrainingOptions& options);
 
 Expected<ActivityModel> trainModel(const Dataset& dataset, const TrainingOptions& options);
+
+// Every feature of the dataset ranked by mutual information with the class (on all its windows).
+FeatureSelection rankFeatures(const Dataset& dataset, const TrainingOptions& options);
+
+// The training parameters as stored in a model's provenance ("parameters"), the same from CLI and GUI.
+QJsonObject trainingParameters(const TrainingOptions& options);
 
 }  // namespace athlos::activity

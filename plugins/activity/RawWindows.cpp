@@ -16,7 +16,10 @@ void rawWindow(const StreamData& data, const std::vector<int>& columns, double t
         return;
     }
     const double dt = length > 1 ? (tEnd - tStart) / double(length - 1) : 0.0;
-    std::size_t k = 0;  // data.t[k] <= t < data.t[k + 1] (times only grow along the window)
+    // data.t[k] <= t < data.t[k + 1] (times only grow along the window); found by bisection, not by a scan
+    // from the stream's start, which made cutting all windows of a stream quadratic in its length.
+    std::size_t k = std::size_t(std::upper_bound(data.t.begin(), data.t.end(), tStart) - data.t.begin());
+    k = k > 0 ? k - 1 : 0;
     for (int j = 0; j < length; ++j) {
         const double t = tStart + dt * double(j);
         while (k + 1 < n && data.t[k + 1] <= t) ++k;

@@ -63,6 +63,7 @@ expect_ok "train" "$ATHLOS" train "$P" --model m --input imu --window 3 --step 1
 grep -q "from 5 recordings" "$WORK/out" || fail "train used other recordings: $(head -1 "$WORK/out")"
 grep -q "cross-validation (leave-one-athlete-out, random-forest, 5 folds)" "$WORK/out" || fail "no cross-validation: $(cat "$WORK/out")"
 grep -q "confusion (rows: annotated, columns: predicted)" "$WORK/out" || fail "no confusion matrix"
+grep -q "features of highest mutual information with the class" "$WORK/out" || fail "no feature ranking: $(cat "$WORK/out")"
 grep -qE "^stored model 'm' \(random-forest, 7 classes" "$WORK/out" || fail "model not stored: $(tail -1 "$WORK/out")"
 cv=$(awk '/^balanced accuracy/ {print $3; exit}' "$WORK/out" | tr -d ,)
 awk -v a="$cv" 'BEGIN { exit !(a >= 0.85) }' || fail "cross-validated balanced accuracy $cv < 0.85"
@@ -87,8 +88,19 @@ expect_ok "classify again" "$ATHLOS" run "$P" classify-actions --input test101/i
 expect_ok "export again" "$ATHLOS" export "$P" test101/annotations --to "$WORK/again.csv"
 cmp -s "$WORK/x101.csv" "$WORK/again.csv" || fail "a re-run changed the predictions"
 expect_ok "retrain" "$ATHLOS" train "$P" --model m2 --input imu --window 3 --step 1.5 --cv none --trees 20 \
-  --balance smote
+  --balance smote --select-features 20
 grep -q "from 5 recordings" "$WORK/out" || fail "predictions became training data: $(head -1 "$WORK/out")"
+grep -q "selected the 20 of 242 features of highest mutual information" "$WORK/out" || fail "no selection: $(cat "$WORK/out")"
+expect_ok "info with selection" "$ATHLOS" info "$P"
+grep -q "model m2: random-forest on imu, 7 classes .*20 of 242 features selected by mutual information" "$WORK/out" \
+  || fail "info: $(grep model "$WORK/out")"
+# The model with 20 selected features classifies (classify-actions applies the stored selection).
+expect_ok "classify with selection" "$ATHLOS" run "$P" classify-actions --input test102/imu --output test102/actions \
+  --param model=m2
+expect_ok "export with selection" "$ATHLOS" export "$P" test102/annotations --to "$WORK/sel102.csv"
+score=$(sample_balanced_accuracy "$WORK/test102.csv" "$WORK/sel102.csv")
+echo "test102 with 20 features: sample-wise balanced accuracy $score"
+awk -v a="$score" 'BEGIN { exit !(a >= 0.8) }' || fail "test102 with 20 features: balanced accuracy $score < 0.8"
 
 # Refusals name what is wrong; a refused run leaves the project byte-identical.
 cp "$P" "$WORK/before.athlos"
@@ -96,6 +108,7 @@ expect_fail "unknown model" "model: the project has no model 'nope' \(models: m,
   "$ATHLOS" run "$P" classify-actions --input test101/imu --output test101/actions --param model=nope
 expect_fail "no model name" "train needs --model NAME" "$ATHLOS" train "$P" --input imu
 expect_fail "bad balance" "--balance 'magic'" "$ATHLOS" train "$P" --model x --input imu --balance magic
+expect_fail "bad selection" "--select-features: an integer" "$ATHLOS" train "$P" --model x --input imu --select-features -3
 expect_fail "no such stream" "no recording has both a stream 'gps' and annotations" "$ATHLOS" train "$P" --model x --input gps
 expect_fail "bad classifier" "--classifier 'forest': use one of random-forest" "$ATHLOS" train "$P" --model x --input imu --classifier forest
 cmp -s "$P" "$WORK/before.athlos" || fail "a refused command changed the project"

@@ -12,6 +12,8 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QSignalSpy>
+#include <QSpinBox>
+#include <QJsonArray>
 #include <QTemporaryDir>
 #include <QtTest>
 #include <cmath>
@@ -110,6 +112,40 @@ private slots:
         QCOMPARE(workspace.modifications, 1);
         QCOMPARE(project_->model(QStringLiteral("shaking"))->description.value(QStringLiteral("input")).toString(),
                  QStringLiteral("imu"));
+    }
+
+    // Class balancing and mutual-information feature selection go through to the training, as
+    // `athlos train --balance smote --select-features 12`: the stored model reads the 12 selected
+    // features and records the choices in its parameters.
+    void balancingAndFeatureSelection() {
+        TestWorkspace workspace(project_.get());
+        TrainClassifierWizard wizard(workspace);
+        wizard.show();
+        QCOMPARE(wizard.balanceCombo()->currentData().toString(), QStringLiteral("oversample"));
+        QCOMPARE(wizard.selectFeaturesSpin()->value(), 0);
+        wizard.classifierCombo()->setCurrentText(QStringLiteral("decision-tree"));
+        wizard.balanceCombo()->setCurrentIndex(wizard.balanceCombo()->findData(QStringLiteral("smote")));
+        wizard.selectFeaturesSpin()->setValue(12);
+        QSignalSpy finished(&wizard, &TrainClassifierWizard::evaluationFinished);
+        wizard.next();
+        wizard.next();
+        QVERIFY(finished.count() == 1 || finished.wait(60000));
+        QCOMPARE(finished.first().first().toBool(), true);
+        QVERIFY2(wizard.balancedAccuracy() > 0.9, qPrintable(wizard.metricsText()));
+        QVERIFY2(wizard.metricsText().contains(QStringLiteral("the 12 features of highest mutual information")),
+                 qPrintable(wizard.metricsText()));
+        wizard.next();
+        wizard.nameEdit()->setText(QStringLiteral("selected"));
+        wizard.button(QWizard::FinishButton)->click();
+        const TrainedModel* stored = project_->model(QStringLiteral("selected"));
+        QVERIFY(stored);
+        const QJsonObject d = stored->description;
+        QCOMPARE(
+            d.value(QStringLiteral("feature_selection")).toObject().value(QStringLiteral("features")).toArray().size(),
+            12);
+        const QJsonObject parameters = d.value(QStringLiteral("parameters")).toObject();
+        QCOMPARE(parameters.value(QStringLiteral("balancing")).toString(), QStringLiteral("smote"));
+        QCOMPARE(parameters.value(QStringLiteral("select_features")).toInt(), 12);
     }
 
     void cancelStopsTheTraining() {

@@ -3,7 +3,9 @@
 // (step 1.5 s), plus the sample-wise balanced accuracy of the default random forest on held-out
 // people through the full classify path (smoothing 0 and 1). Figures: docs/validation/activity.md.
 //
-//   build/bin/athlos-eval-activity [--people N] [--segments S] [--test-people M]
+//   build/bin/athlos-eval-activity [--people N] [--segments S] [--test-people M] [--classifiers C1,C2]
+//                                  [--select-features K1,K2]   (a row per classifier and number of features
+//                                  kept by mutual information, ranked inside each fold; 0: all)
 #include "plugins/activity/ActivitySimulator.h"
 #include "plugins/activity/ActivityTraining.h"
 
@@ -51,11 +53,17 @@ double sampleBalancedAccuracy(const SimulatedRecording& r, const Annotations& pr
 int main(int argc, char** argv) {
     QCoreApplication app(argc, argv);
     int people = 10, segments = 14, testPeople = 4;
+    QStringList classifiers = Classifier::kinds();
+    std::vector<int> selections;  // empty: the classifier table with every feature
     const QStringList args = app.arguments();
     for (qsizetype i = 1; i + 1 < args.size(); i += 2) {
         if (args[i] == u"--people") people = args[i + 1].toInt();
         if (args[i] == u"--segments") segments = args[i + 1].toInt();
         if (args[i] == u"--test-people") testPeople = args[i + 1].toInt();
+        if (args[i] == u"--classifiers") classifiers = args[i + 1].split(QLatin1Char(','), Qt::SkipEmptyParts);
+        if (args[i] == u"--select-features")
+            for (const QString& k : args[i + 1].split(QLatin1Char(','), Qt::SkipEmptyParts))
+                selections.push_back(k.toInt());
     }
     StreamInfo info;
     info.name = info.kind = QStringLiteral("imu");
@@ -79,23 +87,38 @@ int main(int argc, char** argv) {
     }
     std::printf("%d simulated people, %zu windows of 3 s (step 1.5 s), %lld features, %lld classes\n\n", people,
                 dataset->labels.size(), qlonglong(dataset->features.size()), qlonglong(dataset->classes.size()));
-    std::printf(
-        "| classifier | balanced accuracy (leave-one-subject-out) | accuracy | time (s) |\n|---|---|---|---|\n");
+    if (selections.empty())
+        std::printf(
+            "| classifier | balanced accuracy (leave-one-subject-out) | accuracy | time (s) |\n|---|---|---|---|\n");
+    else
+        std::printf(
+            "| classifier | features (top K by MI; 0: all) | balanced accuracy (leave-one-subject-out) | "
+            "accuracy | time (s) |\n|---|---|---|---|---|\n");
     auto groups = foldGroups(*dataset, sources, options);
-    for (const QString& kind : Classifier::kinds()) {
-        TrainingOptions o = options;
-        o.classifier.kind = kind;
-        QElapsedTimer timer;
-        timer.start();
-        auto e = crossValidate(*dataset, *groups, o);
-        if (!e) {
-            std::printf("| %s | failed: %s | | |\n", qPrintable(kind), qPrintable(e.message()));
-            continue;
+    const std::vector<int> ks = selections.empty() ? std::vector<int>{-1} : selections;
+    for (const QString& kind : classifiers)
+        for (int k : ks) {
+            TrainingOptions o = options;
+            o.classifier.kind = kind;
+            o.selectFeatures = std::max(0, k);
+            QElapsedTimer timer;
+            timer.start();
+            auto e = crossValidate(*dataset, *groups, o);
+            if (!e) {
+                std::printf("| %s | %d | failed: %s | | |\n", qPrintable(kind), k, qPrintable(e.message()));
+                continue;
+            }
+            if (k < 0)
+                std::printf("| %s | %.3f | %.3f | %.1f |\n", qPrintable(kind), e->balancedAccuracy, e->accuracy,
+                            double(timer.elapsed()) / 1000.0);
+            else
+                std::printf("| %s | %s | %.3f | %.3f | %.1f |\n", qPrintable(kind),
+                            k > 0 && k < dataset->samples.cols
+                                ? qPrintable(QString::number(k))
+                                : qPrintable(QStringLiteral("all %1").arg(dataset->samples.cols)),
+                            e->balancedAccuracy, e->accuracy, double(timer.elapsed()) / 1000.0);
+            std::fflush(stdout);
         }
-        std::printf("| %s | %.3f | %.3f | %.1f |\n", qPrintable(kind), e->balancedAccuracy, e->accuracy,
-                    double(timer.elapsed()) / 1000.0);
-        std::fflush(stdout);
-    }
 
     // The judged path: the default model on everyone above, classify-actions on unseen people.
     auto model = trainModel(*dataset, options);

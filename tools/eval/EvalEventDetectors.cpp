@@ -6,6 +6,8 @@
 // Figures: docs/validation/activity.md.
 //
 //   build/bin/athlos-eval-event-detectors [--players N] [--actions A] [--classifiers C1,C2] [--export-windows DIR]
+//                                         [--select-features K1,K2]   (a row per classifier and number of
+//                                         features kept by mutual information, ranked inside each fold; 0: all)
 #include "plugins/activity/ActivityTraining.h"
 #include "plugins/activity/CnnTraining.h"
 #include "plugins/activity/EventDetectors.h"
@@ -38,12 +40,16 @@ int main(int argc, char** argv) {
     int players = 10, actions = 60;
     QString exportDir;
     QStringList classifiers = Classifier::kinds();
+    std::vector<int> selections;  // empty: the classifier table with every feature
     const QStringList args = app.arguments();
     for (qsizetype i = 1; i + 1 < args.size(); i += 2) {
         if (args[i] == u"--players") players = args[i + 1].toInt();
         if (args[i] == u"--actions") actions = args[i + 1].toInt();
         if (args[i] == u"--export-windows") exportDir = args[i + 1];
         if (args[i] == u"--classifiers") classifiers = args[i + 1].split(QLatin1Char(','), Qt::SkipEmptyParts);
+        if (args[i] == u"--select-features")
+            for (const QString& k : args[i + 1].split(QLatin1Char(','), Qt::SkipEmptyParts))
+                selections.push_back(k.toInt());
     }
     const StreamInfo acc = infoOf({QStringLiteral("acc_x"), QStringLiteral("acc_y"), QStringLiteral("acc_z")});
 
@@ -117,20 +123,35 @@ int main(int argc, char** argv) {
     auto groups = foldGroups(*dataset, sources, options);
     std::printf("%zu event windows, %lld classes, leave-one-player-out:\n\n", dataset->labels.size(),
                 qlonglong(dataset->classes.size()));
-    std::printf("| classifier | balanced accuracy | accuracy | time (s) |\n|---|---|---|---|\n");
-    for (const QString& kind : classifiers) {
-        TrainingOptions o = options;
-        o.classifier.kind = kind;
-        QElapsedTimer timer;
-        timer.start();
-        auto e = crossValidate(*dataset, *groups, o);
-        if (!e) {
-            std::printf("| %s | failed: %s | | |\n", qPrintable(kind), qPrintable(e.message()));
-            continue;
+    if (selections.empty())
+        std::printf("| classifier | balanced accuracy | accuracy | time (s) |\n|---|---|---|---|\n");
+    else
+        std::printf(
+            "| classifier | features (top K by MI; 0: all) | balanced accuracy | accuracy | time (s) "
+            "|\n|---|---|---|---|---|\n");
+    const std::vector<int> ks = selections.empty() ? std::vector<int>{-1} : selections;
+    for (const QString& kind : classifiers)
+        for (int k : ks) {
+            TrainingOptions o = options;
+            o.classifier.kind = kind;
+            o.selectFeatures = std::max(0, k);
+            QElapsedTimer timer;
+            timer.start();
+            auto e = crossValidate(*dataset, *groups, o);
+            if (!e) {
+                std::printf("| %s | %d | failed: %s | | |\n", qPrintable(kind), k, qPrintable(e.message()));
+                continue;
+            }
+            if (k < 0)
+                std::printf("| %s | %.3f | %.3f | %.1f |\n", qPrintable(kind), e->balancedAccuracy, e->accuracy,
+                            double(timer.elapsed()) / 1000.0);
+            else
+                std::printf("| %s | %s | %.3f | %.3f | %.1f |\n", qPrintable(kind),
+                            k > 0 && k < dataset->samples.cols
+                                ? qPrintable(QString::number(k))
+                                : qPrintable(QStringLiteral("all %1").arg(dataset->samples.cols)),
+                            e->balancedAccuracy, e->accuracy, double(timer.elapsed()) / 1000.0);
+            std::fflush(stdout);
         }
-        std::printf("| %s | %.3f | %.3f | %.1f |\n", qPrintable(kind), e->balancedAccuracy, e->accuracy,
-                    double(timer.elapsed()) / 1000.0);
-        std::fflush(stdout);
-    }
     return 0;
 }

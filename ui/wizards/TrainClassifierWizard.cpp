@@ -18,6 +18,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QPointer>
+#include <QSpinBox>
 #include <QVBoxLayout>
 #include <QtConcurrent>
 #include <qcustomplot.h>
@@ -94,12 +95,22 @@ std::shared_ptr<TrainClassifierWizard::Result> train(std::vector<TrainingSource>
         r->error = model.message();
         return r;
     }
+    if (model->selection)
+        r->text += QCoreApplication::translate("athlos::ui::TrainClassifierWizard",
+                                               "the %1 features of highest mutual information with the class:\n")
+                       .arg(model->selection->size()) +
+                   model->selection->toText(20);
+    else
+        r->text += QCoreApplication::translate("athlos::ui::TrainClassifierWizard",
+                                               "features of highest mutual information with the class:\n") +
+                   rankFeatures(*dataset, options).toText(10);
     QJsonArray training;
     for (const TrainingSource& s : sources)
         training.append(QJsonObject{{QStringLiteral("recording"), s.recording},
                                     {QStringLiteral("stream"), s.info.name},
                                     {QStringLiteral("athlete"), s.athlete},
                                     {QStringLiteral("content_hash"), QString::fromLatin1(s.data->contentHash())}});
+    model->provenance[QStringLiteral("parameters")] = trainingParameters(options);
     model->provenance[QStringLiteral("training")] = training;
     model->provenance[QStringLiteral("windows")] = double(dataset->labels.size());
     model->provenance[QStringLiteral("cross_validation")] =
@@ -196,12 +207,29 @@ QWizardPage* TrainClassifierWizard::createSettingsPage() {
     validationCombo_->setObjectName(QStringLiteral("validationCombo"));
     validationCombo_->addItems({QStringLiteral("leave-one-athlete-out"), QStringLiteral("leave-one-recording-out"),
                                 QStringLiteral("k-fold"), QStringLiteral("none")});
+    // As `athlos train --balance`: the values are the CLI's, the labels explain them.
+    balanceCombo_ = new QComboBox(page);
+    balanceCombo_->setObjectName(QStringLiteral("balanceCombo"));
+    balanceCombo_->addItem(tr("Oversample smaller classes"), QStringLiteral("oversample"));
+    balanceCombo_->addItem(tr("SMOTE (synthetic windows)"), QStringLiteral("smote"));
+    balanceCombo_->addItem(tr("None"), QStringLiteral("none"));
+    balanceCombo_->setToolTip(tr("Class balancing of the training windows (athlos train --balance)."));
+    selectFeatures_ = new QSpinBox(page);
+    selectFeatures_->setObjectName(QStringLiteral("selectFeaturesSpin"));
+    selectFeatures_->setRange(0, 10000);
+    selectFeatures_->setValue(0);
+    selectFeatures_->setSpecialValueText(tr("all"));
+    selectFeatures_->setToolTip(
+        tr("Keep the K features of highest mutual information with the class, ranked "
+           "inside each cross-validation fold (athlos train --select-features K)."));
     auto* layout = new QFormLayout(page);
     layout->addRow(tr("Window:"), window_);
     layout->addRow(tr("Step:"), step_);
     layout->addRow(tr("Segmentation:"), segmentationCombo_);
     layout->addRow(tr("Classifier:"), classifierCombo_);
     layout->addRow(tr("Cross-validation:"), validationCombo_);
+    layout->addRow(tr("Class balancing:"), balanceCombo_);
+    layout->addRow(tr("Features (mutual information):"), selectFeatures_);
     connect(segmentationCombo_, &QComboBox::currentTextChanged, this,
             [this](const QString& kind) { step_->setEnabled(kind == QLatin1String("sliding")); });
     return page;
@@ -282,6 +310,10 @@ void TrainClassifierWizard::startTraining() {
     options.classes = checkedItems(classList_);
     options.classifier.kind = classifierCombo_->currentText();
     options.validation = validationCombo_->currentText();
+    const QString balance = balanceCombo_->currentData().toString();
+    options.classifier.balance = balance != QLatin1String("none");
+    options.classifier.smote = balance == QLatin1String("smote");
+    options.selectFeatures = selectFeatures_->value();
     auto segmentation = Segmentation::parse(segmentationCombo_->currentText());
     if (segmentation) options.segmentation = *segmentation;
     if (options.segmentation.events() && !options.classes.contains(options.segmentation.nullLabel))

@@ -1,6 +1,7 @@
 #pragma once
 // "Train classifier…": the GUI face of `athlos train` (same library calls, plugins/activity):
-// recordings and classes from the project's annotations, window and segmentation, classifier, and a
+// recordings and classes from the project's annotations, window and segmentation, classifier, class
+// balancing (oversample / SMOTE / none) and mutual-information feature selection (K), and a
 // cross-validation run on a worker thread (progress, Cancel) whose confusion matrix is shown as a
 // heat map; Finish stores the model trained on every window in the project (/models/<name>).
 #include "core/util/Progress.h"
@@ -19,6 +20,7 @@ class QListWidget;
 class QPlainTextEdit;
 class QProgressBar;
 class QPushButton;
+class QSpinBox;
 
 namespace athlos::ui {
 
@@ -41,6 +43,8 @@ public:
     QComboBox* classifierCombo() const { return classifierCombo_; }
     QComboBox* validationCombo() const { return validationCombo_; }
     QComboBox* segmentationCombo() const { return segmentationCombo_; }
+    QComboBox* balanceCombo() const { return balanceCombo_; }
+    QSpinBox* selectFeaturesSpin() const { return selectFeatures_; }
     QDoubleSpinBox* windowSpin() const { return window_; }
     QDoubleSpinBox* stepSpin() const { return step_; }
     QLineEdit* nameEdit() const { return nameEdit_; }
@@ -85,6 +89,8 @@ private:
     QComboBox* segmentationCombo_ = nullptr;
     QComboBox* classifierCombo_ = nullptr;
     QComboBox* validationCombo_ = nullptr;
+    QComboBox* balanceCombo_ = nullptr;
+    QSpinBox* selectFeatures_ = nullptr;
     QProgressBar* progressBar_ = nullptr;
     QPushButton* cancelButton_ = nullptr;
     QPlainTextEdit* metrics_ = nullptr;
