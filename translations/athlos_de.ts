@@ -4826,6 +4826,50 @@
         <source>Give the model a name without &apos;/&apos;.</source>
         <translation>Geben Sie dem Modell einen Namen ohne &apos;/&apos;.</translation>
     </message>
+    <message>
+        <source>the %1 features of highest mutual information with the class:
+</source>
+        <translation>die %1 Merkmale mit der höchsten Transinformation mit der Klasse:
+</translation>
+    </message>
+    <message>
+        <source>features of highest mutual information with the class:
+</source>
+        <translation>Merkmale mit der höchsten Transinformation mit der Klasse:
+</translation>
+    </message>
+    <message>
+        <source>Oversample smaller classes</source>
+        <translation>Kleinere Klassen überabtasten</translation>
+    </message>
+    <message>
+        <source>SMOTE (synthetic windows)</source>
+        <translation>SMOTE (synthetische Fenster)</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Keine</translation>
+    </message>
+    <message>
+        <source>Class balancing of the training windows (athlos train --balance).</source>
+        <translation>Klassenausgleich der Trainingsfenster (athlos train --balance).</translation>
+    </message>
+    <message>
+        <source>all</source>
+        <translation>alle</translation>
+    </message>
+    <message>
+        <source>Keep the K features of highest mutual information with the class, ranked inside each cross-validation fold (athlos train --select-features K).</source>
+        <translation>Die K Merkmale mit der höchsten Transinformation mit der Klasse behalten, innerhalb jeder Kreuzvalidierungsfalte bestimmt (athlos train --select-features K).</translation>
+    </message>
+    <message>
+        <source>Class balancing:</source>
+        <translation>Klassenausgleich:</translation>
+    </message>
+    <message>
+        <source>Features (mutual information):</source>
+        <translation>Merkmale (Transinformation):</translation>
+    </message>
 </context>
 <context>
     <name>athlos::ui::TrajectoryPanel</name>
