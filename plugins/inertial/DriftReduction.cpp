@@ -439,12 +439,16 @@ DriftReduction::Result DriftReduction::run(const std::vector<Segment>& segments,
                 const auto len = static_cast<Eigen::Index>(blockStart[b + 1]) - from;
                 const auto bu = up.middleCols(from, len);
                 const auto bv = ud.middleCols(from, len);
-                const Mat3 h = bv * bu.transpose();
+                Mat3 h;  // Σ ud upᵀ, as nine vectorised dot products over the block
+                for (int i = 0; i < 3; ++i)
+                    for (int j = 0; j < 3; ++j) h(i, j) = bv.row(i).dot(bu.row(j));
                 const Mat3 turn = properRotation(h.transpose());  // ud → up (Kabsch)
                 auto r = residual.middleCols(from, len);
                 r.noalias() = turn * bv;
                 r -= bu;
-                e += (r.row(0).array().square() + r.row(1).array().square() + r.row(2).array().square()).sqrt().sum();
+                e += (r.row(0).array().square() + r.row(1).array().square() + r.row(2).array().square())
+                         .sqrt()
+                         .sum();
             }
             return e / double(c.size());
         };

@@ -101,7 +101,8 @@ JointAngles::Sample JointAngles::sample(const Quat& proximalSensor, const Quat& 
     const Quat proximal = (proximalSensor * params_.proximalMount).normalized();
     const Quat distal = (heading * distalSensor * params_.distalMount).normalized();
     Sample s;
-    s.relative = math::canonical((proximal.conjugate() * distal).normalized());
+    s.relative = (proximal.conjugate() * distal).normalized();
+    if (s.relative.w() < 0.0) s.relative.coeffs() = -s.relative.coeffs();  // canonical: w ≥ 0
     s.cardan = math::eulerFromQuaternion(s.relative, zxy());
     s.angles = anatomicalFromCardan(s.cardan, params_.joint, params_.side);
     const Vec3 yp = proximal * Vec3::UnitY(), yd = distal * Vec3::UnitY();
