@@ -446,9 +446,7 @@ DriftReduction::Result DriftReduction::run(const std::vector<Segment>& segments,
                 auto r = residual.middleCols(from, len);
                 r.noalias() = turn * bv;
                 r -= bu;
-                e += (r.row(0).array().square() + r.row(1).array().square() + r.row(2).array().square())
-                         .sqrt()
-                         .sum();
+                e += (r.row(0).array().square() + r.row(1).array().square() + r.row(2).array().square()).sqrt().sum();
             }
             return e / double(c.size());
         };
