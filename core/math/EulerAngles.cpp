@@ -38,7 +38,9 @@ Vec3 extrinsicAngles(const Quat& quat, int i, int j, int k0) {
         d = q[k] * sign - q[i];
     }
     Vec3 angles;
-    angles[1] = 2.0 * std::atan2(std::hypot(c, d), std::hypot(a, b));
+    // a, b, c, d are sums of two unit-quaternion components (|·| ≤ 2): the plain square roots cannot
+    // overflow or underflow, and are several times faster than std::hypot.
+    angles[1] = 2.0 * std::atan2(std::sqrt(c * c + d * d), std::sqrt(a * a + b * b));
     const double halfSum = std::atan2(b, a);
     const double halfDiff = std::atan2(d, c);
     constexpr double eps = 1e-9;

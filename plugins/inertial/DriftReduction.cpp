@@ -71,6 +71,81 @@ Quat nlerp(const Quat& a, const Quat& b, double t) {
     return Quat((1.0 - t) * a.coeffs() + sign * t * b.coeffs()).normalized();
 }
 
+// The rotation R maximising tr(Rᵀ m), i.e. U diag(1, 1, det UVᵀ) Vᵀ for m = U S Vᵀ (the solution of
+// Wahba's problem and of Kabsch's, Markley 1988), by SVD.
+Mat3 properRotationSvd(const Mat3& m) {
+    const Eigen::JacobiSVD<Mat3> svd(m, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    Mat3 fix = Mat3::Identity();
+    fix(2, 2) = svd.matrixU().determinant() * svd.matrixV().determinant() < 0.0 ? -1.0 : 1.0;
+    return svd.matrixU() * fix * svd.matrixV().transpose();
+}
+
+// The same rotation as the orthogonal polar factor of m by the scaled Newton iteration
+// X ← ½(γX + γ⁻¹X⁻ᵀ) (Higham 1986, "Computing the polar decomposition — with applications", SIAM J.
+// Sci. Stat. Comput. 7(4), Frobenius-norm scaling γ), several times faster than a 3×3 Jacobi SVD and
+// equal to it up to rounding. With det m ≤ 0 (the polar factor is then improper) or no convergence the
+// SVD is used.
+Mat3 properRotation(const Mat3& m) {
+    Mat3 x = m;
+    const double scale2 = x.squaredNorm();
+    bool scaled = true, last = false;
+    for (int it = 0; it < 30; ++it) {
+        // X⁻ᵀ = cof(X) / det X; the cofactor columns are cross products of X's columns.
+        Mat3 inverseT;
+        inverseT.col(0) = x.col(1).cross(x.col(2));
+        inverseT.col(1) = x.col(2).cross(x.col(0));
+        inverseT.col(2) = x.col(0).cross(x.col(1));
+        const double det = x.col(0).dot(inverseT.col(0));
+        if (it == 0 ? !(det * det > 1e-24 * scale2 * scale2 * scale2) : !(det > 0.0)) break;
+        inverseT *= 1.0 / det;
+        // γ = (‖X⁻¹‖_F / ‖X‖_F)^½; 1 near convergence, where the plain iteration is quadratic.
+        const double gamma = scaled ? std::sqrt(std::sqrt(inverseT.squaredNorm() / x.squaredNorm())) : 1.0;
+        const Mat3 next = 0.5 * (gamma * x + (1.0 / gamma) * inverseT);
+        if (last) return next;
+        const double change2 = (next - x).squaredNorm();
+        x = next;
+        if (it == 0 && det < 0.0) break;  // improper polar factor: the SVD handles the reflection
+        if (change2 < 1e-6) scaled = false;
+        // The error after a plain step is about half the square of the change before it.
+        if (!scaled && change2 < 1e-16) last = true;
+    }
+    return properRotationSvd(m);
+}
+
+// SLERP from a to b (Shoemake 1985) for many t: the angle and its sine once per pair, and one sincos
+// per sample (sin((1−t)θ) = sin θ cos tθ − cos θ sin tθ); equal to math::slerp up to rounding.
+class SlerpSegment {
+public:
+    SlerpSegment(const Quat& a, const Quat& b) : a_(a.coeffs()), b_(b.coeffs()) {
+        double d = a.dot(b);
+        if (d < 0.0) {  // shorter arc
+            b_ = -b_;
+            d = -d;
+        }
+        linear_ = d > 1.0 - 1e-12;
+        if (!linear_) {
+            theta_ = std::acos(d);
+            cotTheta_ = d / std::sin(theta_);
+            invSin_ = 1.0 / std::sin(theta_);
+        }
+    }
+    Quat at(double t) const {
+        Quat r;
+        if (linear_) {
+            r.coeffs() = (1.0 - t) * a_ + t * b_;
+            return r.normalized();
+        }
+        const double st = std::sin(t * theta_), ct = std::cos(t * theta_);
+        r.coeffs() = (ct - cotTheta_ * st) * a_ + (st * invSin_) * b_;
+        return r;
+    }
+
+private:
+    Vec4 a_, b_;  // Eigen's coefficient order (x, y, z, w)
+    bool linear_ = false;
+    double theta_ = 0.0, cotTheta_ = 0.0, invSin_ = 0.0;
+};
+
 // Heading (rotation about earth z) that best turns the horizontal parts of u onto those of v.
 double bestHeading(const std::vector<Vec3>& u, const std::vector<Vec3>& v) {
     double s = 0.0, c = 0.0;
@@ -191,12 +266,8 @@ bool DriftReduction::windowedWahba(const std::vector<Vec3>& from, const std::vec
         // Wahba's problem: R maximising tr(Rᵀ B) (Markley 1988: SVD solution). A weak pull towards the
         // identity (+λI) keeps R defined when all vectors of the window are parallel (at rest they are
         // all gravity, and the rotation about them is unobservable): then R is the smallest rotation.
-        const Eigen::JacobiSVD<Mat3> svd(bm + prior * bm.norm() * Mat3::Identity(),
-                                         Eigen::ComputeFullU | Eigen::ComputeFullV);
-        Mat3 fix = Mat3::Identity();
-        fix(2, 2) = svd.matrixU().determinant() * svd.matrixV().determinant() < 0.0 ? -1.0 : 1.0;
         at.push_back(k);
-        rotation.push_back(Quat(Mat3(svd.matrixU() * fix * svd.matrixV().transpose())).normalized());
+        rotation.push_back(Quat(properRotation(bm + prior * bm.norm() * Mat3::Identity())).normalized());
     }
     if (at.empty()) return false;
     std::size_t j = 0;
@@ -259,19 +330,19 @@ DriftReduction::Result DriftReduction::run(const std::vector<Segment>& segments,
             }
             result.restIntervals[s] = static_cast<int>(anchor.size());
             if (anchor.empty()) continue;
-            std::size_t j = 0;
-            for (std::size_t k = 0; k < n; ++k) {
-                while (j + 1 < anchor.size() && anchor[j + 1] <= k) ++j;
-                Quat d;
-                if (k <= anchor.front())
-                    d = anchorDelta.front();
-                else if (j + 1 >= anchor.size())
-                    d = anchorDelta.back();
-                else
-                    d = math::slerp(anchorDelta[j], anchorDelta[j + 1],
-                                    double(k - anchor[j]) / double(anchor[j + 1] - anchor[j]));
-                result.q[s][k] = (d * result.q[s][k]).normalized();
+            std::vector<Quat>& q = result.q[s];
+            const auto apply = [&](std::size_t from, std::size_t to, const Quat& d) {
+                for (std::size_t k = from; k < to; ++k) q[k] = (d * q[k]).normalized();
+            };
+            apply(0, std::min(n, anchor.front() + 1), anchorDelta.front());
+            for (std::size_t j = 0; j + 1 < anchor.size(); ++j) {
+                const SlerpSegment segment(anchorDelta[j], anchorDelta[j + 1]);
+                const double span = double(anchor[j + 1] - anchor[j]);
+                for (std::size_t k = anchor[j] + 1; k < anchor[j + 1]; ++k)
+                    q[k] = (segment.at(double(k - anchor[j]) / span) * q[k]).normalized();
+                q[anchor[j + 1]] = (anchorDelta[j + 1] * q[anchor[j + 1]]).normalized();
             }
+            apply(anchor.back() + 1, n, anchorDelta.back());
         }
     }
     if (!report(0.1)) return cancelled();
@@ -343,32 +414,39 @@ DriftReduction::Result DriftReduction::run(const std::vector<Segment>& segments,
                 blockStart.push_back(i);
         if (blockStart.size() > 1 && c.size() - blockStart.back() < 10) blockStart.pop_back();
         blockStart.push_back(c.size());
-        std::vector<Vec3> ap(c.size()), ad(c.size());
-        std::vector<Mat3> bp(c.size()), bd(c.size());
-        for (std::size_t i = 0; i < c.size(); ++i) {
-            const std::size_t k = c[i];
+        // Structure of arrays (one column per sample) so that the cost, evaluated a few hundred times,
+        // runs as vectorised Eigen expressions: ã^G = A + Σ_j B_j r_j with A = R a and B_j the j-th
+        // column of R K (Eq. 5.4), stacked as rows 3j … 3j + 2.
+        const auto m = static_cast<Eigen::Index>(c.size());
+        using Rows3 = Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::RowMajor>;
+        using Rows9 = Eigen::Matrix<double, 9, Eigen::Dynamic, Eigen::RowMajor>;
+        Rows3 ap(3, m), ad(3, m), up(3, m), ud(3, m), residual(3, m);
+        Rows9 bp(9, m), bd(9, m);
+        for (Eigen::Index i = 0; i < m; ++i) {
+            const std::size_t k = c[static_cast<std::size_t>(i)];
             const Mat3 rp = result.q[ip][k].toRotationMatrix(), rd = result.q[id][k].toRotationMatrix();
-            ap[i] = rp * segments[ip].acc[k];
-            ad[i] = rd * segments[id].acc[k];
-            bp[i] = rp * kin[ip].k(k);
-            bd[i] = rd * kin[id].k(k);
+            ap.col(i) = rp * segments[ip].acc[k];
+            ad.col(i) = rd * segments[id].acc[k];
+            bp.col(i) = (rp * kin[ip].k(k)).reshaped();
+            bd.col(i) = (rd * kin[id].k(k)).reshaped();
         }
-        std::vector<Vec3> up(c.size()), ud(c.size());
         const auto cost = [&](const Eigen::VectorXd& x) {
-            const Vec3 rP = x.head<3>(), rD = x.tail<3>();
+            up = ap + bp.middleRows<3>(0) * x[0] + bp.middleRows<3>(3) * x[1] + bp.middleRows<3>(6) * x[2];
+            ud = ad + bd.middleRows<3>(0) * x[3] + bd.middleRows<3>(3) * x[4] + bd.middleRows<3>(6) * x[5];
             double e = 0.0;
             for (std::size_t b = 0; b + 1 < blockStart.size(); ++b) {
-                Mat3 h = Mat3::Zero();
-                for (std::size_t i = blockStart[b]; i < blockStart[b + 1]; ++i) {
-                    up[i] = ap[i] + bp[i] * rP;
-                    ud[i] = ad[i] + bd[i] * rD;
-                    h.noalias() += ud[i] * up[i].transpose();
-                }
-                const Eigen::JacobiSVD<Mat3> svd(h, Eigen::ComputeFullU | Eigen::ComputeFullV);
-                Mat3 fix = Mat3::Identity();
-                fix(2, 2) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0.0 ? -1.0 : 1.0;
-                const Mat3 turn = svd.matrixV() * fix * svd.matrixU().transpose();  // ud → up (Kabsch)
-                for (std::size_t i = blockStart[b]; i < blockStart[b + 1]; ++i) e += (turn * ud[i] - up[i]).norm();
+                const auto from = static_cast<Eigen::Index>(blockStart[b]);
+                const auto len = static_cast<Eigen::Index>(blockStart[b + 1]) - from;
+                const auto bu = up.middleCols(from, len);
+                const auto bv = ud.middleCols(from, len);
+                Mat3 h;  // Σ ud upᵀ, as nine vectorised dot products over the block
+                for (int i = 0; i < 3; ++i)
+                    for (int j = 0; j < 3; ++j) h(i, j) = bv.row(i).dot(bu.row(j));
+                const Mat3 turn = properRotation(h.transpose());  // ud → up (Kabsch)
+                auto r = residual.middleCols(from, len);
+                r.noalias() = turn * bv;
+                r -= bu;
+                e += (r.row(0).array().square() + r.row(1).array().square() + r.row(2).array().square()).sqrt().sum();
             }
             return e / double(c.size());
         };
@@ -396,7 +474,6 @@ DriftReduction::Result DriftReduction::run(const std::vector<Segment>& segments,
     const auto halfWidth = static_cast<std::size_t>(std::lround(p.window / ts));
     std::vector<Quat> delta(n), smoothed(n);
     std::vector<unsigned char> valid(n);
-    std::vector<Vec3> fromBuf(p.estimator == Estimator::Wahba ? n : 0), toBuf(fromBuf.size());
     const int minCount =
         std::max(p.minWindowSamples, static_cast<int>(std::lround(p.minWindowShare * double(2 * halfWidth + 1))));
     const auto wahbaStep = static_cast<std::size_t>(std::max(1L, std::lround(p.wahbaStep / ts)));
@@ -415,17 +492,13 @@ DriftReduction::Result DriftReduction::run(const std::vector<Segment>& segments,
             // Opposite vectors leave the axis undefined; they are not drift.
             if (ok && u.dot(v) < -0.5 * nu * nv) ok = false;
             valid[k] = ok;
-            if (p.estimator == Estimator::Markley) {
-                delta[k] = ok ? Quat::FromTwoVectors(u, v) : Quat::Identity();
-            } else {
-                fromBuf[k] = u;
-                toBuf[k] = v;
-            }
+            if (p.estimator == Estimator::Markley) delta[k] = ok ? Quat::FromTwoVectors(u, v) : Quat::Identity();
             used += ok;
         }
         const bool any = p.estimator == Estimator::Markley
                              ? windowedMean(delta, valid, halfWidth, minCount, out)
-                             : windowedWahba(fromBuf, toBuf, valid, halfWidth, wahbaStep, minCount, horizontal, out);
+                             // The azimuth pass's Wahba solution uses only the horizontal components.
+                             : windowedWahba(from, to, valid, halfWidth, wahbaStep, minCount, horizontal, out);
         if (!any) out.assign(n, Quat::Identity());
         return double(used) / double(n);
     };
@@ -457,12 +530,24 @@ DriftReduction::Result DriftReduction::run(const std::vector<Segment>& segments,
                 std::vector<Quat>& r = q[static_cast<std::size_t>(root)];
                 Vec4 previous;
                 for (std::size_t k = 0; k < n; ++k) {
-                    Mat4 m = Mat4::Zero();
-                    for (const auto& d : rootDrifts) {
-                        const Vec4 v = toVec(d[k]);
-                        m += v * v.transpose();
+                    Vec4 v;
+                    if (rootDrifts.size() <= 2) {
+                        // Closed form: for unit q₁, q₂ the eigenvectors of q₁q₁ᵀ + q₂q₂ᵀ in their plane are
+                        // q₁ ± q₂ with eigenvalues 1 ± q₁·q₂, so the mean is q₁ + sign(q₁·q₂) q₂.
+                        v = toVec(rootDrifts.front()[k]);
+                        if (rootDrifts.size() == 2) {
+                            const Vec4 w = toVec(rootDrifts.back()[k]);
+                            v += v.dot(w) < 0.0 ? Vec4(-w) : w;
+                        }
+                        v.normalize();
+                    } else {
+                        Mat4 m = Mat4::Zero();
+                        for (const auto& d : rootDrifts) {
+                            const Vec4 x = toVec(d[k]);
+                            m += x * x.transpose();
+                        }
+                        v = dominantEigenvector(m, k > 0 ? &previous : nullptr);
                     }
-                    Vec4 v = dominantEigenvector(m, k > 0 ? &previous : nullptr);
                     if (k > 0 && v.dot(previous) < 0.0) v = -v;
                     previous = v;
                     r[k] = (toQuat(v) * r[k]).normalized();

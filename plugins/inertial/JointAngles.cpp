@@ -91,16 +91,24 @@ double longAxisAngle(const Quat& proximalSegment, const Quat& distalSegment) {
 }
 
 JointAngles::Sample JointAngles::update(const Quat& proximalSensor, const Quat& distalSensor) const {
+    return sample(proximalSensor, distalSensor, math::headingRotation(params_.headingOffset));
+}
+
+// One sample with the heading rotation given (constant over a batch, so its sine and cosine are
+// computed once); each segment's long axis y is rotated once and shared by the three 2D angles.
+JointAngles::Sample JointAngles::sample(const Quat& proximalSensor, const Quat& distalSensor,
+                                        const Quat& heading) const {
     const Quat proximal = (proximalSensor * params_.proximalMount).normalized();
-    const Quat distal =
-        (math::headingRotation(params_.headingOffset) * distalSensor * params_.distalMount).normalized();
+    const Quat distal = (heading * distalSensor * params_.distalMount).normalized();
     Sample s;
-    s.relative = math::canonical((proximal.conjugate() * distal).normalized());
+    s.relative = (proximal.conjugate() * distal).normalized();
+    if (s.relative.w() < 0.0) s.relative.coeffs() = -s.relative.coeffs();  // canonical: w ≥ 0
     s.cardan = math::eulerFromQuaternion(s.relative, zxy());
     s.angles = anatomicalFromCardan(s.cardan, params_.joint, params_.side);
-    s.longAxisAngle = longAxisAngle(proximal, distal);
-    s.proximalInclination = segmentInclination(proximal);
-    s.distalInclination = segmentInclination(distal);
+    const Vec3 yp = proximal * Vec3::UnitY(), yd = distal * Vec3::UnitY();
+    s.longAxisAngle = clampedAcos(yp.dot(yd));
+    s.proximalInclination = clampedAcos(yp.z());
+    s.distalInclination = clampedAcos(yd.z());
     return s;
 }
 
@@ -109,10 +117,11 @@ std::vector<JointAngles::Sample> JointAngles::updateBatch(std::span<const Quat> 
     const std::size_t n = std::min(proximalSensor.size(), distalSensor.size());
     std::vector<Sample> out;
     out.reserve(n);
+    const Quat heading = math::headingRotation(params_.headingOffset);
     const double nan = std::numeric_limits<double>::quiet_NaN();
     for (std::size_t k = 0; k < n; ++k) {
         if (proximalSensor[k].coeffs().allFinite() && distalSensor[k].coeffs().allFinite()) {
-            out.push_back(update(proximalSensor[k], distalSensor[k]));
+            out.push_back(sample(proximalSensor[k], distalSensor[k], heading));
         } else {
             // A gap in either input (e.g. outside the other stream's span) is a gap in the angles.
             Sample s;

@@ -102,6 +102,8 @@ public:
                                         const math::Quat& distalMount);
 
 private:
+    Sample sample(const math::Quat& proximalSensor, const math::Quat& distalSensor, const math::Quat& heading) const;
+
     Params params_;
 };
 
