@@ -8,11 +8,11 @@
 //                                  kept by mutual information, ranked inside each fold; 0: all)
 #include "plugins/activity/ActivitySimulator.h"
 #include "plugins/activity/ActivityTraining.h"
+#include "tools/eval/ClassifierComparison.h"
 
 #include "core/processing/OutputStreams.h"
 
 #include <QCoreApplication>
-#include <QElapsedTimer>
 #include <cstdio>
 #include <map>
 
@@ -87,38 +87,9 @@ int main(int argc, char** argv) {
     }
     std::printf("%d simulated people, %zu windows of 3 s (step 1.5 s), %lld features, %lld classes\n\n", people,
                 dataset->labels.size(), qlonglong(dataset->features.size()), qlonglong(dataset->classes.size()));
-    if (selections.empty())
-        std::printf(
-            "| classifier | balanced accuracy (leave-one-subject-out) | accuracy | time (s) |\n|---|---|---|---|\n");
-    else
-        std::printf(
-            "| classifier | features (top K by MI; 0: all) | balanced accuracy (leave-one-subject-out) | "
-            "accuracy | time (s) |\n|---|---|---|---|---|\n");
-    auto groups = foldGroups(*dataset, sources, options);
-    const std::vector<int> ks = selections.empty() ? std::vector<int>{-1} : selections;
-    for (const QString& kind : classifiers)
-        for (int k : ks) {
-            TrainingOptions o = options;
-            o.classifier.kind = kind;
-            o.selectFeatures = std::max(0, k);
-            QElapsedTimer timer;
-            timer.start();
-            auto e = crossValidate(*dataset, *groups, o);
-            if (!e) {
-                std::printf("| %s | %d | failed: %s | | |\n", qPrintable(kind), k, qPrintable(e.message()));
-                continue;
-            }
-            if (k < 0)
-                std::printf("| %s | %.3f | %.3f | %.1f |\n", qPrintable(kind), e->balancedAccuracy, e->accuracy,
-                            double(timer.elapsed()) / 1000.0);
-            else
-                std::printf("| %s | %s | %.3f | %.3f | %.1f |\n", qPrintable(kind),
-                            k > 0 && k < dataset->samples.cols
-                                ? qPrintable(QString::number(k))
-                                : qPrintable(QStringLiteral("all %1").arg(dataset->samples.cols)),
-                            e->balancedAccuracy, e->accuracy, double(timer.elapsed()) / 1000.0);
-            std::fflush(stdout);
-        }
+    if (printClassifierComparison(*dataset, sources, options, classifiers, selections,
+                                  "balanced accuracy (leave-one-subject-out)") != 0)
+        return 1;
 
     // The judged path: the default model on everyone above, classify-actions on unseen people.
     auto model = trainModel(*dataset, options);

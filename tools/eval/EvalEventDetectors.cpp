@@ -9,6 +9,7 @@
 //                                         [--select-features K1,K2]   (a row per classifier and number of
 //                                         features kept by mutual information, ranked inside each fold; 0: all)
 #include "plugins/activity/ActivityTraining.h"
+#include "tools/eval/ClassifierComparison.h"
 #include "plugins/activity/CnnTraining.h"
 #include "plugins/activity/EventDetectors.h"
 #include "plugins/activity/EventSimulator.h"
@@ -16,7 +17,6 @@
 #include "core/processing/OutputStreams.h"
 
 #include <QCoreApplication>
-#include <QElapsedTimer>
 #include <cmath>
 #include <cstdio>
 
@@ -120,38 +120,7 @@ int main(int argc, char** argv) {
     }
     auto dataset = buildDataset(sources, options);
     if (!dataset) return std::fprintf(stderr, "%s\n", qPrintable(dataset.message())), 1;
-    auto groups = foldGroups(*dataset, sources, options);
     std::printf("%zu event windows, %lld classes, leave-one-player-out:\n\n", dataset->labels.size(),
                 qlonglong(dataset->classes.size()));
-    if (selections.empty())
-        std::printf("| classifier | balanced accuracy | accuracy | time (s) |\n|---|---|---|---|\n");
-    else
-        std::printf(
-            "| classifier | features (top K by MI; 0: all) | balanced accuracy | accuracy | time (s) "
-            "|\n|---|---|---|---|---|\n");
-    const std::vector<int> ks = selections.empty() ? std::vector<int>{-1} : selections;
-    for (const QString& kind : classifiers)
-        for (int k : ks) {
-            TrainingOptions o = options;
-            o.classifier.kind = kind;
-            o.selectFeatures = std::max(0, k);
-            QElapsedTimer timer;
-            timer.start();
-            auto e = crossValidate(*dataset, *groups, o);
-            if (!e) {
-                std::printf("| %s | %d | failed: %s | | |\n", qPrintable(kind), k, qPrintable(e.message()));
-                continue;
-            }
-            if (k < 0)
-                std::printf("| %s | %.3f | %.3f | %.1f |\n", qPrintable(kind), e->balancedAccuracy, e->accuracy,
-                            double(timer.elapsed()) / 1000.0);
-            else
-                std::printf("| %s | %s | %.3f | %.3f | %.1f |\n", qPrintable(kind),
-                            k > 0 && k < dataset->samples.cols
-                                ? qPrintable(QString::number(k))
-                                : qPrintable(QStringLiteral("all %1").arg(dataset->samples.cols)),
-                            e->balancedAccuracy, e->accuracy, double(timer.elapsed()) / 1000.0);
-            std::fflush(stdout);
-        }
-    return 0;
+    return printClassifierComparison(*dataset, sources, options, classifiers, selections, "balanced accuracy");
 }
