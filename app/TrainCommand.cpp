@@ -195,6 +195,12 @@ int cmdTrain(const QStringList& args) {
     p.addOption({QStringLiteral("impact-threshold"),
                  QStringLiteral("events:impact: ε_impact in m/s² (default 5.1, seed 000 §5.2)."), QStringLiteral("A"),
                  QStringLiteral("5.1")});
+    p.addOption({QStringLiteral("detection-recall"),
+                 QStringLiteral("events:impact: recall of the annotated actions the cost-sensitive detection tree on "
+                                "the impact and swing indicators must keep, chosen by a leave-one-athlete-out grid "
+                                "search over the FN:FP cost ratio (default 0.99, seed 000 §5.2); 0: no tree, every "
+                                "candidate goes to the classifier."),
+                 QStringLiteral("R"), QStringLiteral("0.99")});
     p.addOption({QStringLiteral("tackle-recall"),
                  QStringLiteral("events:tackle: share of the annotated events the fitted threshold detects "
                                 "(default 1: all, seed 000 §5.1)."),
@@ -260,6 +266,11 @@ int cmdTrain(const QStringList& args) {
     options.segmentation.tackle.targetRecall = cl.value(QStringLiteral("tackle-recall")).toDouble(&ok);
     if (!ok || !(options.segmentation.tackle.targetRecall > 0) || options.segmentation.tackle.targetRecall > 1)
         return fail(QStringLiteral("--tackle-recall: a share above 0, at most 1"), Usage);
+    const double detectionRecall = cl.value(QStringLiteral("detection-recall")).toDouble(&ok);
+    if (!ok || detectionRecall < 0 || detectionRecall > 1)
+        return fail(QStringLiteral("--detection-recall: a share from 0 (no detection tree) to 1"), Usage);
+    options.segmentation.useDetectionTree = detectionRecall > 0;
+    if (detectionRecall > 0) options.segmentation.detection.targetRecall = detectionRecall;
     options.rawLength = cl.value(QStringLiteral("window-samples")).toInt(&ok);
     if (!ok || options.rawLength < 0 || options.rawLength > 100000)
         return fail(QStringLiteral("--window-samples: an integer from 0 to 100000"), Usage);
@@ -328,6 +339,14 @@ int cmdTrain(const QStringList& args) {
                     qUtf8Printable(dataset->segmentation.kind), options.window,
                     dataset->segmentation.kind == u"events:tackle" ? dataset->segmentation.tackle.threshold
                                                                    : dataset->segmentation.impact.threshold);
+    if (const auto& tree = dataset->segmentation.detectionTree; tree) {
+        const DetectionTree::Fit& f = tree->fit();
+        std::printf(
+            "detection tree (impact, swing): FN:FP cost %g, %d folds by athlete: keeps %.1f %% of %d annotated "
+            "candidates, drops %.1f %% of %d null candidates%s\n",
+            f.costRatio, f.groups, 100.0 * f.recall, f.relevant, 100.0 * f.nullRejected, f.nulls,
+            f.targetReached ? "" : " at the largest cost, below the target recall: no tree, every candidate kept");
+    }
 
     QJsonObject validation{{QStringLiteral("scheme"), options.validation}};
     if (validate) {

@@ -54,9 +54,38 @@ QStringList trainingClasses(const std::vector<TrainingSource>& sources, const Tr
     return classes;
 }
 
+namespace {
+// The impact candidates of every source labelled relevant (inside an annotation of one of `classes`
+// other than the null label) or not, grouped by athlete, and the detection tree trained on them.
+Expected<Segmentation> fitDetectionTree(const std::vector<TrainingSource>& sources, Segmentation s,
+                                        const QStringList& classes) {
+    if (!s.useDetectionTree || s.detectionTree) return s;
+    std::vector<DetectionTree::Sample> samples;
+    std::map<QString, int> athletes;
+    for (const TrainingSource& source : sources) {
+        auto events = ImpactDetector::detect(source.info, *source.data, s.impact);
+        if (!events)
+            return makeError(QStringLiteral("%1/%2: %3").arg(source.recording, source.info.name, events.message()));
+        const int group = athletes.emplace(source.athlete, int(athletes.size())).first->second;
+        for (const DetectedEvent& e : *events) {
+            bool relevant = false;
+            for (const Annotation& a : source.annotations)
+                relevant = relevant || (a.tStart <= e.t && e.t <= a.tEnd && a.label != s.nullLabel &&
+                                        (classes.isEmpty() || classes.contains(a.label)));
+            samples.push_back({e.impact, e.swing, relevant, group});
+        }
+    }
+    auto tree = DetectionTree::train(samples, s.detection);
+    if (!tree) return makeError(QStringLiteral("events:impact: ") + tree.message());
+    s.detectionTree = std::move(*tree);
+    return s;
+}
+}  // namespace
+
 Expected<Segmentation> fitSegmentation(const std::vector<TrainingSource>& sources, const TrainingOptions& options,
                                        const QStringList& classes) {
     Segmentation s = options.segmentation;
+    if (s.kind == QLatin1String("events:impact")) return fitDetectionTree(sources, std::move(s), classes);
     if (s.kind != QLatin1String("events:tackle") || s.tackle.threshold > 0) return s;
     std::vector<double> peaks;
     for (const TrainingSource& source : sources) {

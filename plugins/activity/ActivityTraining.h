@@ -56,7 +56,8 @@ struct LabelledWindow {
 Expected<std::vector<LabelledWindow>> labelledWindows(const TrainingSource& source, const TrainingOptions& options,
                                                       const Segmentation& segmentation, const QStringList& classes);
 // options.segmentation ready to use: the tackle detector's threshold fitted on the annotations of
-// `classes` (other than the null label) so that it reaches its target recall.
+// `classes` (other than the null label) so that it reaches its target recall; for events:impact the
+// cost-sensitive detection tree trained on the candidates (DetectionTree.h).
 Expected<Segmentation> fitSegmentation(const std::vector<TrainingSource>& sources, const TrainingOptions& options,
                                        const QStringList& classes);
 // The classes: options.classes, else every ground-truth label of the sources (sorted; with event

@@ -30,6 +30,11 @@ QJsonObject Segmentation::toJson() const {
                                                   {QStringLiteral("target_recall"), tackle.targetRecall},
                                                   {QStringLiteral("margin"), tackle.margin},
                                                   {QStringLiteral("min_separation_s"), tackle.minSeparation}};
+    if (kind == QLatin1String("events:impact")) {
+        o[QStringLiteral("use_detection_tree")] = useDetectionTree;
+        o[QStringLiteral("detection_target_recall")] = detection.targetRecall;
+        if (detectionTree) o[QStringLiteral("detection_tree")] = detectionTree->toJson();
+    }
     if (events()) o[QStringLiteral("null_label")] = nullLabel;
     return o;
 }
@@ -52,6 +57,14 @@ Expected<Segmentation> Segmentation::fromJson(const QJsonValue& json) {
     s->tackle.margin = t.value(QStringLiteral("margin")).toDouble(s->tackle.margin);
     s->tackle.minSeparation = t.value(QStringLiteral("min_separation_s")).toDouble(s->tackle.minSeparation);
     s->nullLabel = o.value(QStringLiteral("null_label")).toString(s->nullLabel);
+    // A model from before the detection tree has none and keeps every candidate, as it was trained.
+    s->useDetectionTree = o.value(QStringLiteral("use_detection_tree")).toBool(false);
+    s->detection.targetRecall = o.value(QStringLiteral("detection_target_recall")).toDouble(s->detection.targetRecall);
+    if (const QJsonValue tree = o.value(QStringLiteral("detection_tree")); tree.isObject()) {
+        auto t = DetectionTree::fromJson(tree.toObject());
+        if (!t) return makeError(QStringLiteral("segmentation: ") + t.message());
+        s->detectionTree = std::move(*t);
+    }
     if (!(s->impact.highPass > 0 && s->impact.lowPass > 0 && s->impact.threshold > 0 && s->tackle.lowPass > 0 &&
           s->tackle.minSeparation >= 0))
         return makeError(QStringLiteral("segmentation: a detector parameter is not positive"));
@@ -61,7 +74,12 @@ Expected<Segmentation> Segmentation::fromJson(const QJsonValue& json) {
 }
 
 Expected<std::vector<DetectedEvent>> Segmentation::detect(const StreamInfo& info, const StreamData& data) const {
-    if (kind == QLatin1String("events:impact")) return ImpactDetector::detect(info, data, impact);
+    if (kind == QLatin1String("events:impact")) {
+        auto events = ImpactDetector::detect(info, data, impact);
+        if (!events || !useDetectionTree || !detectionTree) return events;
+        std::erase_if(*events, [&](const DetectedEvent& e) { return !detectionTree->keep(e.impact, e.swing); });
+        return events;
+    }
     if (kind == QLatin1String("events:tackle")) return TackleDetector::detect(info, data, tackle);
     return std::vector<DetectedEvent>{};
 }

@@ -5,11 +5,13 @@
 // classify-actions cuts new recordings exactly as training did.
 #include "core/model/Stream.h"
 #include "core/util/Expected.h"
+#include "plugins/activity/DetectionTree.h"
 #include "plugins/activity/EventDetectors.h"
 #include "plugins/activity/Windows.h"
 
 #include <QJsonObject>
 #include <QJsonValue>
+#include <optional>
 
 namespace athlos::activity {
 
@@ -17,6 +19,12 @@ struct Segmentation {
     QString kind = QStringLiteral("sliding");  // sliding, events:impact, events:tackle
     ImpactDetector::Params impact;
     TackleDetector::Params tackle;
+    // events:impact: the cost-sensitive detection tree on the impact and swing indicators (§5.2), fitted
+    // by training to keep detection.targetRecall of the annotated actions; off when useDetectionTree is
+    // false (every candidate goes to the classifier, whose null class sorts them).
+    bool useDetectionTree = true;
+    DetectionTree::Params detection;
+    std::optional<DetectionTree> detectionTree;
     // Events not inside an annotation are trained as this class (the detector's false alarms, the
     // thesis's "Null"); a predicted null is not written as an annotation.
     QString nullLabel = QStringLiteral("null");
@@ -28,7 +36,7 @@ struct Segmentation {
     // An object, a kind name, or nothing (a model from before segmentations: sliding).
     static Expected<Segmentation> fromJson(const QJsonValue& json);
 
-    // Detected events (empty for sliding).
+    // Detected events (empty for sliding); impact candidates the detection tree rejects are left out.
     Expected<std::vector<DetectedEvent>> detect(const StreamInfo& info, const StreamData& data) const;
     // Windows: sliding (length, step), or `length` s centred on each event.
     Expected<std::vector<Window>> windows(const StreamInfo& info, const StreamData& data, double length,

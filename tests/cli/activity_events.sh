@@ -35,12 +35,16 @@ expect_fail "bad segmentation" "--segmentation 'events:serve': use one of slidin
   "$ATHLOS" train "$P" --model e --input imu --sensors acc --segmentation events:serve
 expect_fail "bad recall" "--tackle-recall: a share above 0, at most 1" \
   "$ATHLOS" train "$P" --model e --input imu --sensors acc --segmentation events:tackle --tackle-recall 1.5
+expect_fail "bad detection recall" "--detection-recall: a share from 0 .no detection tree. to 1" \
+  "$ATHLOS" train "$P" --model e --input imu --sensors acc --segmentation events:impact --detection-recall 2
 cmp -s "$P" "$WORK/before.athlos" || fail "a refused command changed the project"
 
 expect_ok "train events:impact" "$ATHLOS" train "$P" --model e --input imu --sensors acc --window 4 \
   --segmentation events:impact --classes spike,dig,null --cv leave-one-recording-out --trees 50
 grep -q "^segmentation events:impact: windows of 4 s centred on detected events (threshold 5.1 m/s²)" "$WORK/out" \
   || fail "no segmentation line: $(head -3 "$WORK/out")"
+grep -qE "^detection tree \(impact, swing\): FN:FP cost [0-9.e+]+, [0-9]+ folds by athlete: keeps" "$WORK/out" \
+  || fail "no detection tree line: $(head -4 "$WORK/out")"
 grep -qE "^stored model 'e' \(random-forest, [23] classes" "$WORK/out" || fail "not stored: $(tail -1 "$WORK/out")"
 ba=$(awk '/^balanced accuracy/ {print $3; exit}' "$WORK/out" | tr -d ,)
 awk -v a="$ba" 'BEGIN { exit !(a >= 0.9) }' || fail "cross-validated balanced accuracy $ba < 0.9"
