@@ -339,14 +339,8 @@ int cmdTrain(const QStringList& args) {
                     qUtf8Printable(dataset->segmentation.kind), options.window,
                     dataset->segmentation.kind == u"events:tackle" ? dataset->segmentation.tackle.threshold
                                                                    : dataset->segmentation.impact.threshold);
-    if (const auto& tree = dataset->segmentation.detectionTree; tree) {
-        const DetectionTree::Fit& f = tree->fit();
-        std::printf(
-            "detection tree (impact, swing): FN:FP cost %g, %d folds by athlete: keeps %.1f %% of %d annotated "
-            "candidates, drops %.1f %% of %d null candidates%s\n",
-            f.costRatio, f.groups, 100.0 * f.recall, f.relevant, 100.0 * f.nullRejected, f.nulls,
-            f.targetReached ? "" : " at the largest cost, below the target recall: no tree, every candidate kept");
-    }
+    if (const auto& tree = dataset->segmentation.detectionTree; tree)
+        std::printf("%s", qUtf8Printable(tree->summary()));
 
     QJsonObject validation{{QStringLiteral("scheme"), options.validation}};
     if (validate) {

@@ -161,6 +161,21 @@ bool DetectionTree::keep(double impact, double swing) const {
     return int(std::lround(tree_->predict(features(impact, swing)))) == kRelevant;
 }
 
+QString DetectionTree::summary() const {
+    return QStringLiteral(
+               "detection tree (impact, swing): FN:FP cost %1, %2 folds by athlete: keeps %3 % of %4 "
+               "annotated candidates, drops %5 % of %6 null candidates%7\n")
+        .arg(fit_.costRatio)
+        .arg(fit_.groups)
+        .arg(100.0 * fit_.recall, 0, 'f', 1)
+        .arg(fit_.relevant)
+        .arg(100.0 * fit_.nullRejected, 0, 'f', 1)
+        .arg(fit_.nulls)
+        .arg(fit_.targetReached ? QString()
+                                : QStringLiteral(" at the largest cost, below the target recall: no tree, every "
+                                                 "candidate kept"));
+}
+
 QJsonObject DetectionTree::toJson() const {
     QJsonObject o{{QStringLiteral("cost_ratio"), fit_.costRatio},
                   {QStringLiteral("cv_recall"), fit_.recall},

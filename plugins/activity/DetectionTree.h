@@ -55,6 +55,8 @@ public:
 
     bool keep(double impact, double swing) const;
     const Fit& fit() const { return fit_; }
+    // One line, as `athlos train` and the Train classifier wizard show it.
+    QString summary() const;
 
     QJsonObject toJson() const;
     // The error names what is wrong; nothing in it is executed (the tree is data read by OpenCV).

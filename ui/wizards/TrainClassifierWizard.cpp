@@ -71,6 +71,7 @@ std::shared_ptr<TrainClassifierWizard::Result> train(std::vector<TrainingSource>
                   .arg(sources.size())
                   .arg(dataset->features.size())
                   .arg(dataset->classes.join(QStringLiteral(", ")));
+    if (dataset->segmentation.detectionTree) r->text += dataset->segmentation.detectionTree->summary();
     if (options.validation != QLatin1String("none")) {
         auto groups = foldGroups(*dataset, sources, options);
         if (!groups) {
