@@ -131,7 +131,7 @@ int cmdTrain(const QStringList& args) {
     CommandParser p(
         QStringLiteral("train <project> --model NAME --input STREAM [--recordings R1,R2…] [--classes C1,C2…] "
                        "[--window S] [--step S] [--classifier C] [--cv SCHEME] [--folds K] [--export-windows DIR] "
-                       "[--classifier cnn --onnx FILE]"),
+                       "[--segmentation events:tackle --interaction k=3] [--classifier cnn --onnx FILE]"),
         QStringLiteral("Train an activity classifier on sliding windows of STREAM in every recording that has it and "
                        "annotations (manual or imported), print its cross-validated balanced accuracy, per-class "
                        "recall and precision and the confusion matrix, then train on all windows and store the model "
@@ -140,7 +140,10 @@ int cmdTrain(const QStringList& args) {
     p.addPositional(QStringLiteral("project"), QStringLiteral("The .athlos file."));
     p.addOption({QStringLiteral("model"), QStringLiteral("Name of the model to store (replaces one of that name)."),
                  QStringLiteral("NAME")});
-    p.addOption({QStringLiteral("input"), QStringLiteral("Stream name inside each recording, e.g. imu."),
+    p.addOption({QStringLiteral("input"),
+                 QStringLiteral("Stream name inside each recording, e.g. imu, or a wildcard pattern (e.g. 'sim-imu-*': "
+                                "every matching stream of a recording is trained on, one per player of a team "
+                                "session, with the recording's annotations)."),
                  QStringLiteral("STREAM")});
     p.addOption({QStringLiteral("recordings"), QStringLiteral("Only these recordings (default: every one)."),
                  QStringLiteral("R1,R2")});
@@ -205,6 +208,23 @@ int cmdTrain(const QStringList& args) {
                  QStringLiteral("events:tackle: share of the annotated events the fitted threshold detects "
                                 "(default 1: all, seed 000 §5.1)."),
                  QStringLiteral("R"), QStringLiteral("1")});
+    p.addOption({QStringLiteral("interaction"),
+                 QStringLiteral("Multi-athlete interaction features (seed 000 §5.1.2) added to each event window: the "
+                                "player's torso pitch and speed and the distance, speed and torso pitch of the k "
+                                "nearest opponents. The session is the input stream's recording: athletes are its IMU "
+                                "streams with an 'athlete' attribute, their positions the 'trajectory' (else "
+                                "'lps-position') stream of the same athlete, opponents those of another 'team' "
+                                "attribute (as simulate-rugby writes them). classify-actions gathers the same. "
+                                "Optional keys: speed_span (s), reference_start, reference_duration (s, the standing "
+                                "period of the torso pitch), up_axis, cutoff (Hz)."),
+                 QStringLiteral("k=N[,KEY=V…]")});
+    p.addOption({QStringLiteral("actors"),
+                 QStringLiteral("Event segmentation in a team session (several --input streams of one recording share "
+                                "its annotations, which do not say whose action it was): an annotated event is the "
+                                "action of the N streams whose detector signal peaks highest inside it; the other "
+                                "athletes' candidates inside it are not trained on (default 2: a tackle's carrier "
+                                "and tackler)."),
+                 QStringLiteral("N"), QStringLiteral("2")});
     p.addOption({QStringLiteral("export-windows"),
                  QStringLiteral("Write the labelled raw windows (windows.npy N×C×L float32, labels.npy, groups.npy, "
                                 "meta.json) into DIR for scripts/train_cnn.py, and stop (nothing is trained or "
@@ -306,6 +326,18 @@ int cmdTrain(const QStringList& args) {
             options.classifier.voteWeights.push_back(weight);
         }
     }
+    if (cl.isSet(QStringLiteral("interaction"))) {
+        auto interaction = InteractionOptions::parse(cl.value(QStringLiteral("interaction")));
+        if (!interaction) return fail(interaction.message(), Usage);
+        if (!options.segmentation.events())
+            return fail(QStringLiteral("--interaction goes with event segmentation (--segmentation events:tackle)"),
+                        Usage);
+        if (cnn) return fail(QStringLiteral("--interaction goes with the feature classifiers, not the cnn"), Usage);
+        options.interaction = *interaction;
+    }
+    options.actors = cl.value(QStringLiteral("actors")).toInt(&ok);
+    if (!ok || options.actors < 1 || options.actors > 100)
+        return fail(QStringLiteral("--actors: an integer from 1 to 100"), Usage);
     const bool validate = options.validation != u"none";
 
     auto project = openForChange(p.positional()[0]);
@@ -329,10 +361,24 @@ int cmdTrain(const QStringList& args) {
         return Ok;
     }
     if (cnn) return importCnnModel(**project, cl, modelName, stream, *sources, options, progress, bar);
-    auto dataset = buildDataset(*sources, options, progress.sub(0.0, 0.2));
+    if (options.interaction)
+        if (Status s = attachInteraction(**project, *sources, *options.interaction, progress.sub(0.0, 0.05)); !s)
+            return fail(s.message(), s.message() == u"cancelled" ? Cancelled : Failed);
+    auto dataset = buildDataset(*sources, options, progress.sub(0.05, 0.2));
     if (!dataset) return fail(dataset.message(), dataset.message() == u"cancelled" ? Cancelled : Failed);
-    std::printf("%lld windows of %g s (step %g s) from %lld recordings, %lld features, classes: %s\n",
-                qlonglong(dataset->labels.size()), options.window, options.step, qlonglong(sources->size()),
+    if (options.interaction)
+        std::printf(
+            "interaction features: torso pitch and speed of the player, distance, speed and torso pitch of "
+            "the %d nearest opponents\n",
+            options.interaction->neighbours);
+    std::set<QString> recordingNames;
+    for (const TrainingSource& s : *sources) recordingNames.insert(s.recording);
+    const QString from =
+        recordingNames.size() == sources->size()
+            ? QStringLiteral("%1 recordings").arg(sources->size())
+            : QStringLiteral("%1 streams of %2 recordings").arg(sources->size()).arg(recordingNames.size());
+    std::printf("%lld windows of %g s (step %g s) from %s, %lld features, classes: %s\n",
+                qlonglong(dataset->labels.size()), options.window, options.step, qUtf8Printable(from),
                 qlonglong(dataset->features.size()), qUtf8Printable(dataset->classes.join(QStringLiteral(", "))));
     if (dataset->segmentation.events())
         std::printf("segmentation %s: windows of %g s centred on detected events (threshold %.3g m/s²)\n",
@@ -382,7 +428,7 @@ int cmdTrain(const QStringList& args) {
     for (std::size_t i = 0; i < sources->size(); ++i) {
         const TrainingSource& s = (*sources)[i];
         training.append(QJsonObject{{QStringLiteral("recording"), s.recording},
-                                    {QStringLiteral("stream"), stream},
+                                    {QStringLiteral("stream"), s.info.name},
                                     {QStringLiteral("athlete"), s.athlete},
                                     {QStringLiteral("content_hash"), QString::fromLatin1(s.data->contentHash())},
                                     {QStringLiteral("windows"), double(windowsPerSource[i])}});
@@ -391,6 +437,10 @@ int cmdTrain(const QStringList& args) {
     model->provenance[QStringLiteral("input")] = stream;
     model->provenance[QStringLiteral("parameters")] = parameters;
     model->provenance[QStringLiteral("training")] = training;
+    if (options.interaction)
+        model->provenance[QStringLiteral("interaction_streams")] = interactionStreams(*sources);
+    else
+        model->provenance.remove(QStringLiteral("interaction_streams"));
     model->provenance[QStringLiteral("windows")] = double(dataset->labels.size());
     model->provenance[QStringLiteral("cross_validation")] = validation;
     model->provenance[QStringLiteral("app_version")] = appVersion();

@@ -17,18 +17,25 @@ QByteArray canonical(const QJsonObject& parameters) {
 }
 
 // Why the stored provenance does not match the step, or an empty string when it does.
-QString mismatch(const Provenance& stored, const Processor& processor, const QByteArray& parameters,
-                 const std::vector<ProvenanceInput>& inputs) {
+QString mismatch(const Project& project, const Provenance& stored, const Processor& processor,
+                 const QByteArray& parameters, const std::vector<ProvenanceInput>& inputs) {
     if (stored.processorId != processor.id())
         return QStringLiteral("made by '%1', not '%2'").arg(stored.processorId, processor.id());
     if (stored.processorVersion != processor.version())
         return QStringLiteral("made by version %1, now %2").arg(stored.processorVersion, processor.version());
     if (canonical(stored.parameters) != parameters) return QStringLiteral("made with other parameters");
-    if (stored.inputs.size() != inputs.size()) return QStringLiteral("made from other inputs");
+    if (stored.inputs.size() < inputs.size()) return QStringLiteral("made from other inputs");
     for (std::size_t i = 0; i < inputs.size(); ++i) {
         if (stored.inputs[i].name != inputs[i].name) return QStringLiteral("made from other inputs");
         if (stored.inputs[i].hash != inputs[i].hash)
             return QStringLiteral("input '%1' changed since").arg(inputs[i].name);
+    }
+    // Streams the run read besides its declared inputs (RunContext::recordRead): compared as they are now.
+    for (std::size_t i = inputs.size(); i < stored.inputs.size(); ++i) {
+        const Stream* s = project.stream(stored.inputs[i].name);
+        if (!s) return QStringLiteral("made from '%1', which is gone").arg(stored.inputs[i].name);
+        if (s->info().contentHash != stored.inputs[i].hash)
+            return QStringLiteral("input '%1' changed since").arg(stored.inputs[i].name);
     }
     return {};
 }
@@ -88,7 +95,7 @@ Expected<PipelineCheck> checkPipelineDone(const Project& project, const QJsonObj
                 continue;
             }
             ++present;
-            if (const QString why = mismatch(stored, *processor, parameters, inputs); !why.isEmpty())
+            if (const QString why = mismatch(project, stored, *processor, parameters, inputs); !why.isEmpty())
                 return notDone(i, QStringLiteral("'%1' was %2").arg(path, why));
         }
         if (present == 0) return notDone(i, QStringLiteral("'%1' is not computed yet").arg(request.output));

@@ -53,6 +53,14 @@ Expected<InputSamples> RunContext::samples(int index) const {
     return InputSamples{s, std::move(data).value(), inputPath(index), inputRole(index)};
 }
 
+void RunContext::recordRead(const QString& path, const QByteArray& hash) const {
+    for (const QString& declared : inputPaths_)
+        if (declared == path) return;
+    for (const ProvenanceInput& read : extraReads_)
+        if (read.name == path) return;
+    extraReads_.push_back({path, hash});
+}
+
 Expected<const Table*> RunContext::requireTable(int index) const {
     const Table* t = table(index);
     if (!t) return makeError(QStringLiteral("input '%1' was not given").arg(inputRole(index)));

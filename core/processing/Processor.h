@@ -97,6 +97,12 @@ public:
     bool flag(const QString& name) const { return parameters_.value(name).toBool(); }
     QString text(const QString& name) const { return parameters_.value(name).toString(); }
 
+    // Records a stream read besides the declared inputs (e.g. the other athletes' streams of a session),
+    // "rec/stream" with its content hash now, so that its provenance lists it and `athlos batch` sees it
+    // change. Appended to the run's provenance inputs after the declared ones; a path is recorded once.
+    void recordRead(const QString& path, const QByteArray& hash) const;
+    const std::vector<ProvenanceInput>& extraReads() const { return extraReads_; }
+
     const Progress& progress() const { return progress_; }
     void report(double fraction, const QString& message = {}) const { progress_.report(fraction, message); }
     bool isCancelled() const { return progress_.isCancelled(); }
@@ -110,6 +116,7 @@ private:
     QVariantMap parameters_;
     QString outputPath_;
     Progress progress_;
+    mutable std::vector<ProvenanceInput> extraReads_;
 };
 
 class Processor {

@@ -162,6 +162,7 @@ Expected<ComputedRun> computeRun(const Project& project, const Processor& proces
     provenance.processorVersion = processor.version();
     provenance.parameters = QJsonObject::fromVariantMap(*params);
     provenance.inputs = provenanceInputs;
+    for (const ProvenanceInput& read : context.extraReads()) provenance.inputs.push_back(read);
     provenance.appVersion = appVersion();
     provenance.time = QDateTime::currentDateTimeUtc();
     progress.report(1.0, QStringLiteral("done"));

@@ -101,6 +101,14 @@ Expected<ActivityModel> ActivityModel::fromStored(const TrainedModel& stored) {
         return m;
     }
     if (m.features.isEmpty()) return refuse(QStringLiteral("it lists no features"));
+    if (d.contains(QStringLiteral("interaction"))) {
+        auto interaction = InteractionOptions::fromJson(d.value(QStringLiteral("interaction")).toObject());
+        if (!interaction) return refuse(interaction.message());
+        const QStringList names = interaction->names();
+        if (m.features.size() <= names.size() || m.features.mid(m.features.size() - names.size()) != names)
+            return refuse(QStringLiteral("its features do not end with its interaction features"));
+        m.interaction = std::move(*interaction);
+    }
     if (!(m.window > 0) || !(m.step > 0)) return refuse(QStringLiteral("its window or step is not positive"));
     if (d.contains(QStringLiteral("feature_selection"))) {
         auto selection =
@@ -176,6 +184,10 @@ Expected<TrainedModel> ActivityModel::toStored(const QString& name) const {
         d[QStringLiteral("feature_selection")] = selection->toJson();
     else
         d.remove(QStringLiteral("feature_selection"));
+    if (interaction)
+        d[QStringLiteral("interaction")] = interaction->toJson();
+    else
+        d.remove(QStringLiteral("interaction"));
     d[QStringLiteral("segmentation")] = segmentation.toJson();
     d[QStringLiteral("classifier")] = classifier->kind();
     t.description = d;
@@ -191,10 +203,11 @@ void ActivityModel::probabilities(cv::Mat samples, cv::Mat& out) const {
 Status ActivityModel::checkStream(const StreamInfo& info) const {
     auto extractor = FeatureExtractor::create(info, sensors);
     if (!extractor) return extractor.error();
-    if (extractor->inputColumns() != inputColumns || (!cnn && extractor->names() != features))
+    const QStringList own = interaction ? features.mid(0, features.size() - interaction->names().size()) : features;
+    if (extractor->inputColumns() != inputColumns || (!cnn && extractor->names() != own))
         return makeError(QStringLiteral("the model reads columns %1 with %2 features; this stream gives %3 with %4")
                              .arg(inputColumns.join(QStringLiteral(", ")))
-                             .arg(features.size())
+                             .arg(own.size())
                              .arg(extractor->inputColumns().join(QStringLiteral(", ")))
                              .arg(extractor->size()));
     for (const QString& column : inputColumns) {
@@ -209,8 +222,8 @@ Status ActivityModel::checkStream(const StreamInfo& info) const {
 }
 
 Status ActivityModel::windowProbabilities(const StreamInfo& info, const StreamData& data,
-                                          const std::vector<Window>& windows, cv::Mat& out,
-                                          const Progress& progress) const {
+                                          const std::vector<Window>& windows, cv::Mat& out, const Progress& progress,
+                                          const PlayerContext* player) const {
     if (cnn) {
         std::vector<int> columns;
         for (const QString& c : inputColumns) {
@@ -227,9 +240,16 @@ Status ActivityModel::windowProbabilities(const StreamInfo& info, const StreamDa
     }
     auto extractor = FeatureExtractor::create(info, sensors);
     if (!extractor) return extractor.error();
-    cv::Mat samples(int(windows.size()), extractor->size(), CV_32F);
+    if (interaction && !(player && player->session && player->player >= 0))
+        return makeError(
+            QStringLiteral("the model uses interaction features; the other athletes' streams of the "
+                           "session were not gathered"));
+    const int own = extractor->size();
+    cv::Mat samples(int(windows.size()), own + (interaction ? int(interaction->names().size()) : 0), CV_32F);
     for (std::size_t i = 0; i < windows.size(); ++i) {
         extractor->compute(data, windows[i].begin, windows[i].end, samples.ptr<float>(int(i)));
+        if (interaction)
+            interactionFeatures(*player, *interaction, window, windows[i].centre(), samples.ptr<float>(int(i)) + own);
         if (i % 2000 == 1999) {
             if (progress.isCancelled()) return makeError(QStringLiteral("cancelled"));
             progress.report(0.8 * double(i) / double(windows.size()), QStringLiteral("features"));
@@ -279,7 +299,7 @@ Annotations intervalsFromWindows(const std::vector<double>& centres, const cv::M
 }
 
 Expected<Annotations> ActivityModel::classify(const StreamInfo& info, const StreamData& data, int smoothing,
-                                              const Progress& progress) const {
+                                              const Progress& progress, const PlayerContext* player) const {
     if (Status s = checkStream(info); !s) return s.error();
     if (segmentation.events()) {
         auto windows = segmentation.windows(info, data, window, step);
@@ -287,7 +307,7 @@ Expected<Annotations> ActivityModel::classify(const StreamInfo& info, const Stre
         Annotations out;
         if (windows->empty()) return out;
         cv::Mat p;
-        if (Status s = windowProbabilities(info, data, *windows, p, progress); !s) return s.error();
+        if (Status s = windowProbabilities(info, data, *windows, p, progress, player); !s) return s.error();
         for (int i = 0; i < p.rows; ++i) {
             const float* row = p.ptr<float>(i);
             const auto best = int(std::max_element(row, row + p.cols) - row);
@@ -308,7 +328,7 @@ Expected<Annotations> ActivityModel::classify(const StreamInfo& info, const Stre
     centres.reserve(windows.size());
     for (const Window& w : windows) centres.push_back(w.centre());
     cv::Mat p;
-    if (Status s = windowProbabilities(info, data, windows, p, progress); !s) return s.error();
+    if (Status s = windowProbabilities(info, data, windows, p, progress, player); !s) return s.error();
     progress.report(0.95, QStringLiteral("classified"));
     return intervalsFromWindows(centres, p, classes, data.t.front(), data.t.back(), std::max(0, smoothing));
 }

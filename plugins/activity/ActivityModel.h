@@ -12,6 +12,7 @@
 #include "plugins/activity/Classifier.h"
 #include "plugins/activity/CnnClassifier.h"
 #include "plugins/activity/FeatureSelection.h"
+#include "plugins/activity/InteractionGathering.h"
 #include "plugins/activity/Segmentation.h"
 
 #include <QJsonObject>
@@ -46,6 +47,9 @@ public:
     // The features the classifier reads (mutual-information selection, --select-features K); absent: all
     // of `features` (models stored before the selection existed have none). Scaling is of these columns.
     std::optional<FeatureSelection> selection;
+    // Multi-athlete interaction features (InteractionGathering.h): their names end `features`; the
+    // stream's own features come first. Classifying needs the player's session (PlayerContext).
+    std::optional<InteractionOptions> interaction;
     RobustScaling scaling;
     std::optional<Classifier> classifier;  // features → OpenCV ml
     std::optional<CnnClassifier> cnn;      // or: raw windows of inputColumns → ONNX network (no features)
@@ -58,8 +62,10 @@ public:
     // Class probabilities of each window (rows) of `samples` (every raw feature; selected and scaled here).
     void probabilities(cv::Mat samples, cv::Mat& out) const;
     // Class probabilities of `windows` of a stream: features and the classifier, or raw windows and the CNN.
+    // `player`: the session of the stream, required when the model has interaction features.
     Status windowProbabilities(const StreamInfo& info, const StreamData& data, const std::vector<Window>& windows,
-                               cv::Mat& out, const Progress& progress = {}) const;
+                               cv::Mat& out, const Progress& progress = {},
+                               const PlayerContext* player = nullptr) const;
 
     // Refuses a stream whose columns or sensors do not match what the model was trained on.
     Status checkStream(const StreamInfo& info) const;
@@ -70,7 +76,7 @@ public:
     // stream. Events: one annotation of kEventSpan s centred on each detected event whose class is
     // not the null label.
     Expected<Annotations> classify(const StreamInfo& info, const StreamData& data, int smoothing,
-                                   const Progress& progress = {}) const;
+                                   const Progress& progress = {}, const PlayerContext* player = nullptr) const;
 };
 
 // Intervals from window centres and their class probabilities (rows): exposed for tests.

@@ -4,6 +4,7 @@
 #include "plugins/activity/Windows.h"
 
 #include <QJsonArray>
+#include <QRegularExpression>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -12,34 +13,121 @@
 
 namespace athlos::activity {
 
+bool isGroundTruth(const Annotation& annotation) {
+    return annotation.source == QLatin1String("manual") || annotation.source == QLatin1String("import") ||
+           annotation.source.startsWith(QLatin1String("simulate-"));
+}
+
 Expected<std::vector<TrainingSource>> trainingSources(const Project& project, const QString& stream,
                                                       const QStringList& recordings) {
     std::vector<TrainingSource> sources;
     for (const QString& name : recordings)
         if (!project.recording(name)) return makeError(QStringLiteral("--recordings: no recording '%1'").arg(name));
+    const bool pattern = stream.contains(QLatin1Char('*')) || stream.contains(QLatin1Char('?'));
+    const QRegularExpression glob(QRegularExpression::wildcardToRegularExpression(stream));
     for (const auto& [name, rec] : project.recordings()) {
         if (!recordings.isEmpty() && !recordings.contains(name)) continue;
-        auto it = rec.streams.find(stream);
-        if (it == rec.streams.end()) continue;
         Annotations truth;
         for (const Annotation& a : rec.annotations)
-            if ((a.source == QLatin1String("manual") || a.source == QLatin1String("import")) && a.tEnd > a.tStart)
-                truth.push_back(a);
+            if (isGroundTruth(a) && a.tEnd > a.tStart) truth.push_back(a);
         if (truth.empty()) continue;
-        auto data = it->second.data();
-        if (!data) return makeError(QStringLiteral("%1/%2: %3").arg(name, stream, data.message()));
-        TrainingSource s;
-        s.recording = name;
-        s.athlete = rec.metadata.value(QStringLiteral("athlete")).toString(name);
-        if (s.athlete.isEmpty()) s.athlete = name;
-        s.info = it->second.info();
-        s.data = *data;
-        s.annotations = std::move(truth);
-        sources.push_back(std::move(s));
+        for (const auto& [streamName, s] : rec.streams) {
+            if (pattern ? !glob.match(streamName).hasMatch() : streamName != stream) continue;
+            auto data = s.data();
+            if (!data) return makeError(QStringLiteral("%1/%2: %3").arg(name, streamName, data.message()));
+            TrainingSource source;
+            source.recording = name;
+            source.athlete = s.info().attributes.value(QStringLiteral("athlete")).toString();
+            if (source.athlete.isEmpty()) source.athlete = rec.metadata.value(QStringLiteral("athlete")).toString(name);
+            if (source.athlete.isEmpty()) source.athlete = name;
+            source.info = s.info();
+            source.info.name = streamName;
+            source.data = *data;
+            source.annotations = truth;
+            sources.push_back(std::move(source));
+        }
     }
     if (sources.empty())
         return makeError(QStringLiteral("no recording has both a stream '%1' and annotations to train on").arg(stream));
     return sources;
+}
+
+Expected<std::vector<TrainingSource>> attributeSessionEvents(std::vector<TrainingSource> sources,
+                                                             const TrainingOptions& options) {
+    const Segmentation& seg = options.segmentation;
+    if (!seg.events()) return sources;
+    std::map<QString, std::vector<std::size_t>> byRecording;
+    for (std::size_t i = 0; i < sources.size(); ++i) byRecording[sources[i].recording].push_back(i);
+    for (const auto& [recording, members] : byRecording) {
+        if (members.size() < 2 || int(members.size()) <= options.actors) continue;
+        // peaks[m][a]: the detector signal's maximum of member m inside annotation a.
+        std::vector<std::vector<double>> peaks;
+        for (std::size_t m : members) {
+            const TrainingSource& s = sources[m];
+            auto signal = seg.kind == QLatin1String("events:tackle")
+                              ? TackleDetector::signal(s.info, *s.data, seg.tackle)
+                              : ImpactDetector::signal(s.info, *s.data, seg.impact);
+            if (!signal) return makeError(QStringLiteral("%1/%2: %3").arg(s.recording, s.info.name, signal.message()));
+            peaks.push_back(TackleDetector::annotationPeaks(*s.data, *signal, s.annotations));
+        }
+        const Annotations shared = sources[members.front()].annotations;
+        std::vector<Annotations> kept(members.size()), excluded(members.size());
+        for (std::size_t a = 0; a < shared.size(); ++a) {
+            if (shared[a].label == seg.nullLabel) {
+                for (auto& k : kept) k.push_back(shared[a]);
+                continue;
+            }
+            std::vector<std::size_t> order(members.size());
+            for (std::size_t m = 0; m < order.size(); ++m) order[m] = m;
+            const auto peak = [&](std::size_t m) { return std::isfinite(peaks[m][a]) ? peaks[m][a] : -1.0; };
+            std::stable_sort(order.begin(), order.end(),
+                             [&](std::size_t x, std::size_t y) { return peak(x) > peak(y); });
+            for (std::size_t r = 0; r < order.size(); ++r)
+                (int(r) < options.actors ? kept : excluded)[order[r]].push_back(shared[a]);
+        }
+        for (std::size_t m = 0; m < members.size(); ++m) {
+            sources[members[m]].annotations = std::move(kept[m]);
+            sources[members[m]].excluded = std::move(excluded[m]);
+        }
+    }
+    return sources;
+}
+
+Status attachInteraction(const Project& project, std::vector<TrainingSource>& sources,
+                         const InteractionOptions& options, const Progress& progress) {
+    std::map<QString, std::shared_ptr<const InteractionSession>> sessions;
+    for (std::size_t i = 0; i < sources.size(); ++i) {
+        TrainingSource& s = sources[i];
+        const Recording* rec = project.recording(s.recording);
+        if (!rec) return makeError(QStringLiteral("no recording '%1'").arg(s.recording));
+        auto& session = sessions[s.recording];
+        if (!session) {
+            auto player = gatherPlayer(*rec, s.info.name, options);
+            if (!player) return player.error();
+            session = player->session;
+        }
+        s.interaction.session = session;
+        s.interaction.player = session->playerOf(s.info.name);
+        if (s.interaction.player < 0)
+            return makeError(QStringLiteral("interaction features: stream '%1/%2' has no 'athlete' attribute naming "
+                                            "whose IMU it is")
+                                 .arg(s.recording, s.info.name));
+        if (progress.isCancelled()) return makeError(QStringLiteral("cancelled"));
+        progress.report(double(i + 1) / double(sources.size()), QStringLiteral("interaction"));
+    }
+    return {};
+}
+
+QJsonArray interactionStreams(const std::vector<TrainingSource>& sources) {
+    QJsonArray out;
+    std::set<const InteractionSession*> seen;
+    for (const TrainingSource& s : sources) {
+        if (!s.interaction.session || !seen.insert(s.interaction.session.get()).second) continue;
+        for (const ProvenanceInput& read : s.interaction.session->streams)
+            out.append(QJsonObject{{QStringLiteral("stream"), read.name},
+                                   {QStringLiteral("content_hash"), QString::fromLatin1(read.hash)}});
+    }
+    return out;
 }
 
 QStringList trainingClasses(const std::vector<TrainingSource>& sources, const TrainingOptions& options) {
@@ -119,6 +207,9 @@ Expected<std::vector<LabelledWindow>> labelledWindows(const TrainingSource& sour
         return makeError(QStringLiteral("%1/%2: %3").arg(source.recording, source.info.name, windows.message()));
     for (const Window& w : *windows) {
         const double t = w.centre();
+        if (std::any_of(source.excluded.begin(), source.excluded.end(),
+                        [t](const Annotation& a) { return a.tStart <= t && t <= a.tEnd; }))
+            continue;  // another athlete's annotated event: this candidate is neither that class nor null
         QString label = segmentation.nullLabel;
         for (const Annotation& a : source.annotations)
             if (a.tStart <= t && t <= a.tEnd && a.label != segmentation.nullLabel &&
@@ -132,12 +223,20 @@ Expected<std::vector<LabelledWindow>> labelledWindows(const TrainingSource& sour
     return out;
 }
 
-Expected<Dataset> buildDataset(const std::vector<TrainingSource>& sources, const TrainingOptions& options,
+Expected<Dataset> buildDataset(const std::vector<TrainingSource>& given, const TrainingOptions& options,
                                const Progress& progress) {
+    if (options.actors < 1) return makeError(QStringLiteral("--actors must be at least 1"));
+    auto attributed = attributeSessionEvents(given, options);
+    if (!attributed) return attributed.error();
+    const std::vector<TrainingSource>& sources = *attributed;
     Dataset d;
     d.sensors = options.sensors;
     if (!(options.window > 0) || !(options.step > 0))
         return makeError(QStringLiteral("--window and --step must be positive (s)"));
+    if (options.interaction && !options.segmentation.events())
+        return makeError(
+            QStringLiteral("--interaction goes with event segmentation (--segmentation events:tackle): "
+                           "the features describe the opponents at a detected event"));
     d.classes = trainingClasses(sources, options);
     auto segmentation = fitSegmentation(sources, options, d.classes);
     if (!segmentation) return segmentation.error();
@@ -150,6 +249,7 @@ Expected<Dataset> buildDataset(const std::vector<TrainingSource>& sources, const
             return makeError(QStringLiteral("%1/%2: %3").arg(s.recording, s.info.name, extractor.message()));
         if (d.features.isEmpty()) {
             d.features = extractor->names();
+            if (options.interaction) d.features << options.interaction->names();
             d.inputColumns = extractor->inputColumns();
             for (const QString& c : d.inputColumns)
                 d.units[c] = s.info.columns[std::size_t(s.info.columnIndex(c))].unit;
@@ -161,11 +261,19 @@ Expected<Dataset> buildDataset(const std::vector<TrainingSource>& sources, const
                                          .arg(s.recording, s.info.name, c, unit, d.units.value(c).toString()));
             }
         }
-        std::vector<float> features(std::size_t(extractor->size()));
+        if (options.interaction && !s.interaction.session)
+            return makeError(QStringLiteral("%1/%2: the interaction features were not gathered (attachInteraction)")
+                                 .arg(s.recording, s.info.name));
+        const int imuCount = extractor->size();
+        std::vector<float> features(
+            std::size_t(imuCount + (options.interaction ? options.interaction->names().size() : 0)));
         auto windows = labelledWindows(s, options, d.segmentation, d.classes);
         if (!windows) return windows.error();
         for (const LabelledWindow& lw : *windows) {
             extractor->compute(*s.data, lw.window.begin, lw.window.end, features.data());
+            if (options.interaction)
+                interactionFeatures(s.interaction, *options.interaction, options.window, lw.window.centre(),
+                                    features.data() + imuCount);
             rows.insert(rows.end(), features.begin(), features.end());
             d.labels.push_back(lw.label);
             d.source.push_back(int(si));
@@ -362,6 +470,7 @@ Expected<ActivityModel> trainModel(const Dataset& dataset, const TrainingOptions
     if (!classifier) return classifier.error();
     m.classifier = std::move(*classifier);
     m.segmentation = dataset.segmentation;
+    m.interaction = options.interaction;
     m.provenance[QStringLiteral("units")] = dataset.units;
     return m;
 }
@@ -384,6 +493,8 @@ QJsonObject trainingParameters(const TrainingOptions& options) {
         {QStringLiteral("select_features"), options.selectFeatures},
         {QStringLiteral("mi_bins"), options.miBins},
         {QStringLiteral("seed"), double(c.seed)}};
+    if (options.interaction) parameters[QStringLiteral("interaction")] = options.interaction->toJson();
+    if (options.segmentation.events()) parameters[QStringLiteral("actors")] = options.actors;
     if (c.kind == QLatin1String("vote")) {
         QJsonArray members;
         for (qsizetype i = 0; i < c.voteMembers.size(); ++i)

@@ -7,6 +7,7 @@
 #include "core/util/Progress.h"
 #include "plugins/activity/ActivityModel.h"
 #include "plugins/activity/Classifier.h"
+#include "plugins/activity/InteractionGathering.h"
 #include "plugins/activity/Segmentation.h"
 #include "plugins/activity/Windows.h"
 
@@ -20,10 +21,14 @@ namespace athlos::activity {
 // One annotated recording to learn from.
 struct TrainingSource {
     QString recording;
-    QString athlete;  // metadata "athlete", else the recording name
+    QString athlete;  // the stream's attribute "athlete", else the recording's metadata "athlete", else its name
     StreamInfo info;
     std::shared_ptr<const StreamData> data;
-    Annotations annotations;  // ground truth (manual or imported)
+    Annotations annotations;    // ground truth (manual or imported)
+    PlayerContext interaction;  // the other athletes of the session (attachInteraction), with interaction features
+    // Team sessions with event segmentation (attributeSessionEvents): annotated events of other athletes of
+    // the recording; no candidate inside them is trained on (neither as their class nor as null).
+    Annotations excluded;
 };
 
 struct TrainingOptions {
@@ -43,6 +48,13 @@ struct TrainingOptions {
     // fold never chooses its features) and on all windows for the stored model; 0: every feature.
     int selectFeatures = 0;
     int miBins = FeatureSelection::kDefaultBins;
+    // Multi-athlete interaction features (InteractionGathering.h, --interaction k=3): appended to each
+    // window's IMU features; event segmentation only (the thesis's tackle candidates, seed 000 §5.1.2).
+    std::optional<InteractionOptions> interaction;
+    // Team sessions (several sources in one recording share its annotations, which do not say whose
+    // action it was): an annotated event is the action of the `actors` sources whose detector signal
+    // peaks highest inside it (2: a tackle's carrier and tackler, seed 000 §5.1.2).
+    int actors = 2;
 };
 
 // A window of a source with its label (index into the classes).
@@ -84,10 +96,26 @@ struct Evaluation {
     QString toText() const;
 };
 
+// Ground truth: annotations made by hand ("manual"), imported ("import") or written by a simulator as
+// the truth of what it simulated (processor id "simulate-…", e.g. simulate-rugby's tackles); predictions
+// (classify-actions, detect-scrums, …) are never trained on.
+bool isGroundTruth(const Annotation& annotation);
 // Sources in `project`: recordings (all when `recordings` is empty) that have stream `stream` and
-// ground-truth annotations (source "manual" or "import"; predictions are never trained on).
+// ground-truth annotations (isGroundTruth). `stream` may
+// be a wildcard pattern (`sim-imu-*`): every matching stream of a recording is a source of its own (one
+// per player of a team session; they share the recording's annotations).
 Expected<std::vector<TrainingSource>> trainingSources(const Project& project, const QString& stream,
                                                       const QStringList& recordings);
+// With event segmentation, each annotated event of a recording shared by several sources kept only on
+// the options.actors sources whose detector signal peaks highest inside it (others get it in `excluded`).
+Expected<std::vector<TrainingSource>> attributeSessionEvents(std::vector<TrainingSource> sources,
+                                                             const TrainingOptions& options);
+// Gathers each source's session (the other athletes' positions and torso pitch, InteractionGathering.h),
+// once per recording; the error names what is missing.
+Status attachInteraction(const Project& project, std::vector<TrainingSource>& sources,
+                         const InteractionOptions& options, const Progress& progress = {});
+// The streams read for the interaction features of `sources` ("rec/stream", content hash), for provenance.
+QJsonArray interactionStreams(const std::vector<TrainingSource>& sources);
 
 Expected<Dataset> buildDataset(const std::vector<TrainingSource>& sources, const TrainingOptions& options,
                                const Progress& progress = {});

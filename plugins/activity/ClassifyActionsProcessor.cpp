@@ -27,6 +27,20 @@ Expected<ActivityModel> loadModel(const RunContext& c) {
             QStringLiteral("model: '%1' does not fit input '%2': %3").arg(name, c.inputPath(0), s.message()));
     return model;
 }
+
+// The session of the input stream (the other athletes' positions and torso pitch) for a model with
+// interaction features; every stream read is recorded in the run's provenance.
+Expected<PlayerContext> gatherFor(const RunContext& c, const ActivityModel& model) {
+    const ItemPath path = ItemPath::parse(c.inputPath(0));
+    const Recording* rec = c.project().recording(path.recording);
+    if (!rec) return c.inputError(0, QStringLiteral("no recording '%1'").arg(path.recording));
+    auto player = gatherPlayer(*rec, path.item, *model.interaction);
+    if (!player)
+        return c.inputError(0, QStringLiteral("model '%1' needs the session's other athletes: %2")
+                                   .arg(c.text(QStringLiteral("model")), player.message()));
+    for (const ProvenanceInput& read : player->session->streams) c.recordRead(read.name, read.hash);
+    return player;
+}
 }  // namespace
 
 QString ClassifyActionsProcessor::name() const { return tr("Classify actions (trained model)"); }
@@ -37,7 +51,9 @@ QString ClassifyActionsProcessor::description() const {
         "writes the activities as predicted annotations with confidence: consecutive windows of one class merge "
         "into one interval and the intervals cover the whole stream. A model trained on detected events "
         "(--segmentation events:impact or events:tackle) runs its detector and writes one annotation per "
-        "event that is not classified as null.");
+        "event that is not classified as null. A model with interaction features (athlos train --interaction) also "
+        "reads the other athletes' IMU and positions streams of the input's recording (athlete and team "
+        "attributes, as simulate-rugby writes them).");
 }
 
 ParameterSpecs ClassifyActionsProcessor::parameters() const {
@@ -64,15 +80,26 @@ QList<OutputSpec> ClassifyActionsProcessor::outputs() const {
     return {OutputSpec{QString(), false, QString(), tr("Activities as predicted annotations with confidence."), true}};
 }
 
-Status ClassifyActionsProcessor::prepare(const RunContext& context) const { return statusOf(loadModel(context)); }
+Status ClassifyActionsProcessor::prepare(const RunContext& context) const {
+    auto model = loadModel(context);
+    if (!model) return model.error();
+    if (model->interaction) return statusOf(gatherFor(context, *model));
+    return {};
+}
 
 Expected<std::vector<ProcessorOutput>> ClassifyActionsProcessor::run(const RunContext& context) const {
     auto model = loadModel(context);
     if (!model) return model.error();
     auto input = context.samples(0);
     if (!input) return input.error();
-    auto annotations =
-        model->classify(input->info(), *input->data, context.integer(QStringLiteral("smoothing")), context.progress());
+    std::optional<PlayerContext> player;
+    if (model->interaction) {
+        auto gathered = gatherFor(context, *model);
+        if (!gathered) return gathered.error();
+        player = std::move(*gathered);
+    }
+    auto annotations = model->classify(input->info(), *input->data, context.integer(QStringLiteral("smoothing")),
+                                       context.progress(), player ? &*player : nullptr);
     if (!annotations) {
         if (annotations.message() == u"cancelled") return cancelledError();
         return input->error(annotations.message());

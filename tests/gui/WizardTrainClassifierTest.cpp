@@ -5,6 +5,8 @@
 #include "WizardTestSupport.h"
 
 #include "core/processing/OutputStreams.h"
+#include "core/processing/ProcessorRunner.h"
+#include "core/processing/ProcessorRegistry.h"
 #include "ui/wizards/TrainClassifierWizard.h"
 
 #include <QAbstractButton>
@@ -117,6 +119,57 @@ private slots:
     // Class balancing and mutual-information feature selection go through to the training, as
     // `athlos train --balance smote --select-features 12`: the stored model reads the 12 selected
     // features and records the choices in its parameters.
+    // Multi-athlete interaction features as `athlos train --input 'sim-imu-*' --segmentation events:tackle
+    // --interaction k=3`: the wizard offers the team session's stream pattern, the opponents spin box is
+    // enabled with event segmentation, and the stored model describes its interaction features.
+    void interactionFeaturesOfATeamSession() {
+        auto simulate = ProcessorRegistry::instance().find(QStringLiteral("simulate-rugby"));
+        QVERIFY2(simulate, "activity plugin not found; build athlos_plugin_activity");
+        for (int m = 1; m <= 2; ++m) {
+            auto run = athlos::runProcessor(*project_, *simulate,
+                                            RunRequest{simulate->id(),
+                                                       {},
+                                                       QStringLiteral("m%1/sim").arg(m),
+                                                       {{QStringLiteral("seed"), m},
+                                                        {QStringLiteral("duration"), 255.0},
+                                                        {QStringLiteral("scrums"), 0},
+                                                        {QStringLiteral("tackles"), 4},
+                                                        {QStringLiteral("contacts"), 3},
+                                                        {QStringLiteral("falls"), 2},
+                                                        {QStringLiteral("imu_rate"), 100.0},
+                                                        {QStringLiteral("position_rate"), 20.0}}});
+            QVERIFY2(run.ok(), qPrintable(run.message()));
+        }
+        TestWorkspace workspace(project_.get());
+        TrainClassifierWizard wizard(workspace);
+        wizard.show();
+        QVERIFY(wizard.streamCombo()->findText(QStringLiteral("sim-imu-*")) >= 0);
+        wizard.streamCombo()->setCurrentText(QStringLiteral("sim-imu-*"));
+        QCOMPARE(wizard.recordingList()->count(), 2);
+        QVERIFY(!wizard.interactionSpin()->isEnabled());
+        wizard.next();
+        wizard.segmentationCombo()->setCurrentText(QStringLiteral("events:tackle"));
+        QVERIFY(wizard.interactionSpin()->isEnabled());
+        wizard.interactionSpin()->setValue(3);
+        wizard.windowSpin()->setValue(4.0);
+        QSignalSpy finished(&wizard, &TrainClassifierWizard::evaluationFinished);
+        wizard.next();
+        QVERIFY(finished.count() == 1 || finished.wait(120000));
+        QVERIFY2(finished.first().first().toBool(), qPrintable(wizard.metricsText()));
+        QVERIFY2(wizard.metricsText().contains(QStringLiteral("253 features")), qPrintable(wizard.metricsText()));
+        wizard.next();
+        wizard.nameEdit()->setText(QStringLiteral("tackles"));
+        wizard.button(QWizard::FinishButton)->click();
+        const TrainedModel* stored = project_->model(QStringLiteral("tackles"));
+        QVERIFY(stored);
+        QCOMPARE(stored->description.value(QStringLiteral("interaction"))
+                     .toObject()
+                     .value(QStringLiteral("neighbours"))
+                     .toInt(),
+                 3);
+        QCOMPARE(stored->description.value(QStringLiteral("interaction_streams")).toArray().size(), 56);
+    }
+
     void balancingAndFeatureSelection() {
         TestWorkspace workspace(project_.get());
         TrainClassifierWizard wizard(workspace);

@@ -18,6 +18,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QPointer>
+#include <QRegularExpression>
 #include <QSpinBox>
 #include <QVBoxLayout>
 #include <QtConcurrent>
@@ -52,8 +53,15 @@ void addCheckable(QListWidget* list, const QString& text) {
     item->setCheckState(Qt::Checked);
 }
 
-bool isGroundTruth(const Annotation& a) {
-    return (a.source == QLatin1String("manual") || a.source == QLatin1String("import")) && a.tEnd > a.tStart;
+bool isTrainable(const Annotation& a) { return activity::isGroundTruth(a) && a.tEnd > a.tStart; }
+
+// The streams of a recording that the stream field names: a name, or a wildcard pattern (sim-imu-*).
+bool matchesStream(const Recording& rec, const QString& stream) {
+    if (!stream.contains(QLatin1Char('*')) && !stream.contains(QLatin1Char('?'))) return rec.streams.count(stream);
+    const QRegularExpression glob(QRegularExpression::wildcardToRegularExpression(stream));
+    for (const auto& [name, s] : rec.streams)
+        if (glob.match(name).hasMatch()) return true;
+    return false;
 }
 
 // The whole training as `athlos train` runs it, on the worker: dataset, cross-validation, final model.
@@ -113,6 +121,7 @@ std::shared_ptr<TrainClassifierWizard::Result> train(std::vector<TrainingSource>
                                     {QStringLiteral("content_hash"), QString::fromLatin1(s.data->contentHash())}});
     model->provenance[QStringLiteral("parameters")] = trainingParameters(options);
     model->provenance[QStringLiteral("training")] = training;
+    if (options.interaction) model->provenance[QStringLiteral("interaction_streams")] = interactionStreams(sources);
     model->provenance[QStringLiteral("windows")] = double(dataset->labels.size());
     model->provenance[QStringLiteral("cross_validation")] =
         r->evaluation ? r->evaluation->toJson() : QJsonObject{{QStringLiteral("scheme"), QStringLiteral("none")}};
@@ -146,12 +155,28 @@ QWizardPage* TrainClassifierWizard::createDataPage() {
                                "learn from, and the labels to learn."));
     streamCombo_ = new QComboBox(page);
     streamCombo_->setObjectName(QStringLiteral("streamCombo"));
+    // Every IMU stream name, and for a team session (several IMU streams with an athlete attribute in
+    // one recording, as simulate-rugby writes) the pattern of their common prefix: one source per player.
     std::set<QString> names;
     if (const Project* project = workspace_.project())
-        for (const auto& [name, rec] : project->recordings())
-            for (const auto& [stream, s] : rec.streams)
-                if (s.info().kind == QLatin1String("imu")) names.insert(stream);
+        for (const auto& [name, rec] : project->recordings()) {
+            QStringList athletes;
+            for (const auto& [stream, s] : rec.streams) {
+                if (s.info().kind != QLatin1String("imu")) continue;
+                names.insert(stream);
+                if (s.info().attributes.contains(QStringLiteral("athlete"))) athletes << stream;
+            }
+            if (athletes.size() < 2) continue;
+            QString prefix = athletes.front();
+            for (const QString& a : athletes)
+                while (!a.startsWith(prefix)) prefix.chop(1);
+            if (!prefix.isEmpty()) names.insert(prefix + QLatin1Char('*'));
+        }
     for (const QString& n : names) streamCombo_->addItem(n);
+    streamCombo_->setEditable(true);
+    streamCombo_->setToolTip(
+        tr("A stream name, or a pattern such as sim-imu-* (every matching stream of a "
+           "recording is trained on: one per player of a team session)."));
     recordingList_ = new QListWidget(page);
     recordingList_->setObjectName(QStringLiteral("recordingList"));
     classList_ = new QListWidget(page);
@@ -172,10 +197,10 @@ void TrainClassifierWizard::fillRecordings() {
     if (!project) return;
     std::set<QString> labels;
     for (const auto& [name, rec] : project->recordings()) {
-        if (!rec.streams.count(streamCombo_->currentText())) continue;
+        if (!matchesStream(rec, streamCombo_->currentText())) continue;
         bool annotated = false;
         for (const Annotation& a : rec.annotations)
-            if (isGroundTruth(a)) {
+            if (isTrainable(a)) {
                 labels.insert(a.label);
                 annotated = true;
             }
@@ -223,6 +248,16 @@ QWizardPage* TrainClassifierWizard::createSettingsPage() {
     selectFeatures_->setToolTip(
         tr("Keep the K features of highest mutual information with the class, ranked "
            "inside each cross-validation fold (athlos train --select-features K)."));
+    interaction_ = new QSpinBox(page);
+    interaction_->setObjectName(QStringLiteral("interactionSpin"));
+    interaction_->setRange(0, 20);
+    interaction_->setValue(0);
+    interaction_->setSpecialValueText(tr("none"));
+    interaction_->setEnabled(false);
+    interaction_->setToolTip(
+        tr("Multi-athlete interaction features of detected events (athlos train --interaction k=K): the player's "
+           "torso pitch and speed and the distance, speed and torso pitch of the K nearest opponents, from the "
+           "other athletes' IMU and positions streams of the recording (athlete and team attributes)."));
     auto* layout = new QFormLayout(page);
     layout->addRow(tr("Window:"), window_);
     layout->addRow(tr("Step:"), step_);
@@ -231,8 +266,11 @@ QWizardPage* TrainClassifierWizard::createSettingsPage() {
     layout->addRow(tr("Cross-validation:"), validationCombo_);
     layout->addRow(tr("Class balancing:"), balanceCombo_);
     layout->addRow(tr("Features (mutual information):"), selectFeatures_);
-    connect(segmentationCombo_, &QComboBox::currentTextChanged, this,
-            [this](const QString& kind) { step_->setEnabled(kind == QLatin1String("sliding")); });
+    layout->addRow(tr("Nearest opponents (interaction features):"), interaction_);
+    connect(segmentationCombo_, &QComboBox::currentTextChanged, this, [this](const QString& kind) {
+        step_->setEnabled(kind == QLatin1String("sliding"));
+        interaction_->setEnabled(kind != QLatin1String("sliding"));
+    });
     return page;
 }
 
@@ -319,6 +357,17 @@ void TrainClassifierWizard::startTraining() {
     if (segmentation) options.segmentation = *segmentation;
     if (options.segmentation.events() && !options.classes.contains(options.segmentation.nullLabel))
         options.classes << options.segmentation.nullLabel;
+    if (options.segmentation.events() && interaction_->value() > 0) {
+        InteractionOptions interaction;
+        interaction.neighbours = interaction_->value();
+        options.interaction = interaction;
+        // The other athletes' streams, gathered here as classify-actions gathers them (once per recording).
+        if (Status s = attachInteraction(*project, *sources, interaction); !s) {
+            metrics_->setPlainText(s.message());
+            emit evaluationFinished(false);
+            return;
+        }
+    }
     cancel_ = CancelToken();
     QPointer<QProgressBar> bar = progressBar_;
     Progress progress(

@@ -1,7 +1,8 @@
 #pragma once
 // "Train classifier…": the GUI face of `athlos train` (same library calls, plugins/activity):
 // recordings and classes from the project's annotations, window and segmentation, classifier, class
-// balancing (oversample / SMOTE / none) and mutual-information feature selection (K), and a
+// balancing (oversample / SMOTE / none), mutual-information feature selection (K) and the multi-athlete
+// interaction features of detected events (k nearest opponents, --interaction), and a
 // cross-validation run on a worker thread (progress, Cancel) whose confusion matrix is shown as a
 // heat map; Finish stores the model trained on every window in the project (/models/<name>).
 #include "core/util/Progress.h"
@@ -45,6 +46,7 @@ public:
     QComboBox* segmentationCombo() const { return segmentationCombo_; }
     QComboBox* balanceCombo() const { return balanceCombo_; }
     QSpinBox* selectFeaturesSpin() const { return selectFeatures_; }
+    QSpinBox* interactionSpin() const { return interaction_; }
     QDoubleSpinBox* windowSpin() const { return window_; }
     QDoubleSpinBox* stepSpin() const { return step_; }
     QLineEdit* nameEdit() const { return nameEdit_; }
@@ -91,6 +93,7 @@ private:
     QComboBox* validationCombo_ = nullptr;
     QComboBox* balanceCombo_ = nullptr;
     QSpinBox* selectFeatures_ = nullptr;
+    QSpinBox* interaction_ = nullptr;  // nearest opponents of the interaction features; 0: none
     QProgressBar* progressBar_ = nullptr;
     QPushButton* cancelButton_ = nullptr;
     QPlainTextEdit* metrics_ = nullptr;
