@@ -173,6 +173,12 @@ int cmdTrain(const QStringList& args) {
                  QStringLiteral("acc,gyr,mag"), QStringLiteral("acc,gyr")});
     p.addOption({QStringLiteral("trees"), QStringLiteral("Trees of the random forest (default 100)."),
                  QStringLiteral("N"), QStringLiteral("100")});
+    p.addOption(
+        {QStringLiteral("forest-rows"),
+         QStringLiteral("Random forest: windows each part of 10 trees trains on at most, a stratified subsample "
+                        "of the class-balanced windows when there are more (subbagging, Bühlmann & Yu 2002; "
+                        "default 15000; 0: every window). The parts train in parallel."),
+         QStringLiteral("N"), QStringLiteral("15000")});
     p.addOption({QStringLiteral("balance"),
                  QStringLiteral("Class balancing of the training windows: oversample (default: smaller classes drawn "
                                 "with replacement), smote (their missing windows synthesised by SMOTE, Chawla et al. "
@@ -302,6 +308,9 @@ int cmdTrain(const QStringList& args) {
     options.classifier.trees = cl.value(QStringLiteral("trees")).toInt(&ok);
     if (!ok || options.classifier.trees < 1 || options.classifier.trees > 2000)
         return fail(QStringLiteral("--trees: an integer from 1 to 2000"), Usage);
+    options.classifier.forestMaxRows = cl.value(QStringLiteral("forest-rows")).toInt(&ok);
+    if (!ok || options.classifier.forestMaxRows < 0)
+        return fail(QStringLiteral("--forest-rows: an integer of at least 0 (0: every window)"), Usage);
     options.selectFeatures = cl.value(QStringLiteral("select-features")).toInt(&ok);
     if (!ok || options.selectFeatures < 0 || options.selectFeatures > 100000)
         return fail(QStringLiteral("--select-features: an integer from 0 (every feature) to 100000"), Usage);
@@ -402,7 +411,7 @@ int cmdTrain(const QStringList& args) {
         validation[QStringLiteral("scheme")] = options.validation;
         if (options.validation == u"k-fold") validation[QStringLiteral("folds")] = options.folds;
     }
-    auto model = trainModel(*dataset, options);
+    auto model = trainModel(*dataset, options, progress.sub(0.85, 1.0));
     if (!model) return fail(model.message());
     if (progress.isCancelled()) return fail(QStringLiteral("cancelled"), Cancelled);
     bar.finish();

@@ -195,7 +195,8 @@ Expected<TrainedModel> ActivityModel::toStored(const QString& name) const {
 }
 
 void ActivityModel::probabilities(cv::Mat samples, cv::Mat& out) const {
-    if (selection) samples = selection->apply(samples);
+    // A cv::Mat passed by value shares the caller's rows: scale a copy, never the caller's features.
+    samples = selection ? selection->apply(samples) : samples.clone();
     scaling.apply(samples);
     classifier->probabilities(samples, out);
 }

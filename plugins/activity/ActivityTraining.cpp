@@ -436,7 +436,14 @@ Expected<Evaluation> crossValidate(const Dataset& dataset, const std::vector<int
         const RobustScaling scaling = RobustScaling::fit(train);
         scaling.apply(train);
         scaling.apply(test);
-        auto classifier = Classifier::train(train, trainLabels, int(dataset.classes.size()), options.classifier);
+        // The fold's classifier reports inside this fold's share of the progress.
+        const double begin = double(done) / double(ids.size()), end = double(done + 1) / double(ids.size());
+        const Progress fold(
+            [&progress, begin, end](double f, const QString&) {
+                progress.report(begin + (end - begin) * f, QStringLiteral("cross-validation"));
+            },
+            progress.token());
+        auto classifier = Classifier::train(train, trainLabels, int(dataset.classes.size()), options.classifier, fold);
         if (!classifier) return classifier.error();
         cv::Mat p;
         classifier->probabilities(test, p);
@@ -450,7 +457,7 @@ Expected<Evaluation> crossValidate(const Dataset& dataset, const std::vector<int
     return evaluate(dataset.labels, predicted, dataset.classes);
 }
 
-Expected<ActivityModel> trainModel(const Dataset& dataset, const TrainingOptions& options) {
+Expected<ActivityModel> trainModel(const Dataset& dataset, const TrainingOptions& options, const Progress& progress) {
     ActivityModel m;
     m.classes = dataset.classes;
     m.sensors = dataset.sensors;
@@ -466,7 +473,8 @@ Expected<ActivityModel> trainModel(const Dataset& dataset, const TrainingOptions
     }
     m.scaling = RobustScaling::fit(samples);
     m.scaling.apply(samples);
-    auto classifier = Classifier::train(samples, dataset.labels, int(dataset.classes.size()), options.classifier);
+    auto classifier =
+        Classifier::train(samples, dataset.labels, int(dataset.classes.size()), options.classifier, progress);
     if (!classifier) return classifier.error();
     m.classifier = std::move(*classifier);
     m.segmentation = dataset.segmentation;
@@ -495,6 +503,11 @@ QJsonObject trainingParameters(const TrainingOptions& options) {
         {QStringLiteral("seed"), double(c.seed)}};
     if (options.interaction) parameters[QStringLiteral("interaction")] = options.interaction->toJson();
     if (options.segmentation.events()) parameters[QStringLiteral("actors")] = options.actors;
+    if (c.kind == QLatin1String("random-forest") ||
+        (c.kind == QLatin1String("vote") && c.voteMembers.contains(QStringLiteral("random-forest")))) {
+        parameters[QStringLiteral("forest_trees_per_part")] = c.forestTreesPerPart;
+        parameters[QStringLiteral("forest_max_rows")] = c.forestMaxRows;
+    }
     if (c.kind == QLatin1String("vote")) {
         QJsonArray members;
         for (qsizetype i = 0; i < c.voteMembers.size(); ++i)

@@ -130,7 +130,9 @@ Expected<Evaluation> crossValidate(const Dataset& dataset, const std::vector<int
 Expected<std::vector<int>> foldGroups(const Dataset& dataset, const std::vector<TrainingSource>& sources,
                                       const TrainingOptions& options);
 
-Expected<ActivityModel> trainModel(const Dataset& dataset, const TrainingOptions& options);
+// progress: the random forest's parts (cancellation stops between them).
+Expected<ActivityModel> trainModel(const Dataset& dataset, const TrainingOptions& options,
+                                   const Progress& progress = {});
 
 // Every feature of the dataset ranked by mutual information with the class (on all its windows).
 FeatureSelection rankFeatures(const Dataset& dataset, const TrainingOptions& options);

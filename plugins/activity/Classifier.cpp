@@ -1,5 +1,7 @@
 #include "plugins/activity/Classifier.h"
 
+#include "plugins/activity/ParallelForest.h"
+
 #include <opencv2/flann.hpp>
 
 #include <algorithm>
@@ -116,15 +118,6 @@ cv::Mat labelColumn(const std::vector<int>& labels, const std::vector<int>& rows
 }
 
 cv::Ptr<StatModel> makeModel(const QString& kind, const ClassifierOptions& o, int samples) {
-    if (kind == QLatin1String("random-forest")) {
-        auto m = RTrees::create();
-        m->setMaxDepth(o.maxDepth);
-        m->setMinSampleCount(2);
-        m->setActiveVarCount(0);  // √F variables per split (Breiman's default)
-        m->setCalculateVarImportance(false);
-        m->setTermCriteria({cv::TermCriteria::MAX_ITER, o.trees, 0});
-        return m;
-    }
     if (kind == QLatin1String("decision-tree")) {
         auto m = DTrees::create();
         m->setMaxDepth(o.maxDepth);
@@ -213,7 +206,7 @@ QStringList Classifier::kinds() {
 }
 
 Expected<Classifier> Classifier::train(const cv::Mat& samples, const std::vector<int>& labels, int classCount,
-                                       const ClassifierOptions& options) {
+                                       const ClassifierOptions& options, const Progress& progress) {
     Classifier c;
     c.kind_ = options.kind;
     c.classCount_ = classCount;
@@ -230,7 +223,7 @@ Expected<Classifier> Classifier::train(const cv::Mat& samples, const std::vector
                 ClassifierOptions member = options;
                 member.kind = options.voteMembers[i];
                 if (member.kind == QLatin1String("vote")) return makeError(QStringLiteral("a vote cannot hold a vote"));
-                auto trained = train(samples, labels, classCount, member);
+                auto trained = train(samples, labels, classCount, member, progress);
                 if (!trained) return trained.error();
                 c.members_.push_back(std::move(*trained));
                 c.weights_.push_back(std::size_t(i) < options.voteWeights.size() ? options.voteWeights[std::size_t(i)]
@@ -249,6 +242,20 @@ Expected<Classifier> Classifier::train(const cv::Mat& samples, const std::vector
             y = labelColumn(labels, rows);
         }
         cv::theRNG().state = options.seed;
+        if (options.kind == QLatin1String("random-forest")) {
+            ParallelForest::Params params;
+            params.trees = options.trees;
+            params.maxDepth = options.maxDepth;
+            params.treesPerPart = options.forestTreesPerPart;
+            params.maxRows = options.forestMaxRows;
+            params.seed = options.seed;
+            params.threads = options.threads;
+            auto parts =
+                ParallelForest::train(x, std::vector<int>(y.begin<int>(), y.end<int>()), classCount, params, progress);
+            if (!parts) return parts.error();
+            for (auto& part : *parts) c.models_.push_back(part);
+            return c;
+        }
         if (options.kind == QLatin1String("boosted-trees")) {
             for (int k = 0; k < classCount; ++k) {
                 cv::Mat binary(y.rows, 1, CV_32S);
@@ -312,16 +319,8 @@ void Classifier::probabilities(const cv::Mat& samples, cv::Mat& out) const {
         return;
     }
     if (kind_ == QLatin1String("random-forest")) {
-        // Fraction of trees voting for each class (first row of getVotes: the class labels).
-        cv::Mat votes;
-        models_.front().dynamicCast<RTrees>()->getVotes(samples, votes, 0);
-        out = cv::Mat::zeros(samples.rows, classCount_, CV_32F);
-        for (int j = 0; j < votes.cols; ++j) {
-            const int c = votes.at<int>(0, j);
-            if (c < 0 || c >= classCount_) continue;
-            for (int i = 0; i < samples.rows; ++i) out.at<float>(i, c) = float(votes.at<int>(i + 1, j));
-        }
-        normaliseRows(out);
+        // Fraction of the trees of all parts voting for each class.
+        ParallelForest::probabilities(models_, samples, classCount_, out);
         return;
     }
     if (kind_ == QLatin1String("boosted-trees")) {
@@ -434,7 +433,8 @@ Expected<Classifier> Classifier::read(const cv::FileNode& node, int classCount) 
             c.models_.push_back(model);
         }
         const std::size_t expected = c.kind_ == QLatin1String("boosted-trees") ? std::size_t(classCount) : 1;
-        if (c.models_.size() != expected)
+        const bool forest = c.kind_ == QLatin1String("random-forest");  // one part or more
+        if (forest ? c.models_.empty() : c.models_.size() != expected)
             return makeError(QStringLiteral("the %1 model has %2 parts, expected %3")
                                  .arg(c.kind_)
                                  .arg(c.models_.size())

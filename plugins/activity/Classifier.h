@@ -5,6 +5,7 @@
 // logistic regression and a weighted vote of several of them. Serialized as cv::FileStorage text
 // (YAML) only: a stored model is data that OpenCV parses, never code.
 #include "core/util/Expected.h"
+#include "core/util/Progress.h"
 
 #include <opencv2/core.hpp>
 #include <opencv2/ml.hpp>
@@ -30,6 +31,11 @@ struct ClassifierOptions {
     QStringList voteMembers{QStringLiteral("random-forest"), QStringLiteral("svm"), QStringLiteral("knn")};
     std::vector<double> voteWeights;  // empty: equal weights
     unsigned seed = 1;
+    // Random forest as parallel sub-forests (ParallelForest.h): trees per part, rows a part trains on at
+    // most (stratified subsample; 0: all), worker threads (0: one per core; the forest does not depend on it).
+    int forestTreesPerPart = 10;
+    int forestMaxRows = 15000;
+    int threads = 0;
 };
 
 // SMOTE (Chawla, Bowyer, Hall & Kegelmeyer, JAIR 16:321, 2002): `count` synthetic rows of the class
@@ -43,8 +49,9 @@ public:
     static QStringList kinds();
 
     // samples: N × F CV_32F (scaled features); labels: class index 0..classCount−1 per row.
+    // progress: the random forest's parts report and stop on cancel (the other classifiers only at the end).
     static Expected<Classifier> train(const cv::Mat& samples, const std::vector<int>& labels, int classCount,
-                                      const ClassifierOptions& options);
+                                      const ClassifierOptions& options, const Progress& progress = {});
     static Expected<Classifier> read(const cv::FileNode& node, int classCount);
     void write(cv::FileStorage& fs) const;
 
@@ -57,8 +64,10 @@ public:
 private:
     QString kind_;
     int classCount_ = 0;
-    std::vector<cv::Ptr<cv::ml::StatModel>> models_;  // one, or one per class (boosted trees)
-    std::vector<Classifier> members_;                 // vote
+    // one; one per class (boosted trees); one per part (random forest: models stored before the parts
+    // have one RTrees with every tree)
+    std::vector<cv::Ptr<cv::ml::StatModel>> models_;
+    std::vector<Classifier> members_;  // vote
     std::vector<double> weights_;
     int neighbours_ = 7;
     cv::Mat knnSamples_, knnResponses_;  // kNN: its training windows (scaled) and classes

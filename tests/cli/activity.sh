@@ -109,6 +109,7 @@ expect_fail "unknown model" "model: the project has no model 'nope' \(models: m,
 expect_fail "no model name" "train needs --model NAME" "$ATHLOS" train "$P" --input imu
 expect_fail "bad balance" "--balance 'magic'" "$ATHLOS" train "$P" --model x --input imu --balance magic
 expect_fail "bad selection" "--select-features: an integer" "$ATHLOS" train "$P" --model x --input imu --select-features -3
+expect_fail "bad forest rows" "--forest-rows: an integer of at least 0" "$ATHLOS" train "$P" --model x --input imu --forest-rows -1
 expect_fail "no such stream" "no recording has both a stream 'gps' and annotations" "$ATHLOS" train "$P" --model x --input gps
 expect_fail "bad classifier" "--classifier 'forest': use one of random-forest" "$ATHLOS" train "$P" --model x --input imu --classifier forest
 cmp -s "$P" "$WORK/before.athlos" || fail "a refused command changed the project"

@@ -6,6 +6,7 @@
 //   build/bin/athlos-eval-activity [--people N] [--segments S] [--test-people M] [--classifiers C1,C2]
 //                                  [--select-features K1,K2]   (a row per classifier and number of features
 //                                  kept by mutual information, ranked inside each fold; 0: all)
+//                                  [--forest-rows N]   (random forest: rows per part of 10 trees at most; 0: all)
 #include "plugins/activity/ActivitySimulator.h"
 #include "plugins/activity/ActivityTraining.h"
 #include "tools/eval/ClassifierComparison.h"
@@ -55,11 +56,13 @@ int main(int argc, char** argv) {
     int people = 10, segments = 14, testPeople = 4;
     QStringList classifiers = Classifier::kinds();
     std::vector<int> selections;  // empty: the classifier table with every feature
+    int forestRows = ClassifierOptions{}.forestMaxRows;
     const QStringList args = app.arguments();
     for (qsizetype i = 1; i + 1 < args.size(); i += 2) {
         if (args[i] == u"--people") people = args[i + 1].toInt();
         if (args[i] == u"--segments") segments = args[i + 1].toInt();
         if (args[i] == u"--test-people") testPeople = args[i + 1].toInt();
+        if (args[i] == u"--forest-rows") forestRows = args[i + 1].toInt();
         if (args[i] == u"--classifiers") classifiers = args[i + 1].split(QLatin1Char(','), Qt::SkipEmptyParts);
         if (args[i] == u"--select-features")
             for (const QString& k : args[i + 1].split(QLatin1Char(','), Qt::SkipEmptyParts))
@@ -80,6 +83,7 @@ int main(int argc, char** argv) {
         sources.push_back(std::move(s));
     }
     TrainingOptions options;
+    options.classifier.forestMaxRows = forestRows;
     auto dataset = buildDataset(sources, options);
     if (!dataset) {
         std::fprintf(stderr, "%s\n", qPrintable(dataset.message()));

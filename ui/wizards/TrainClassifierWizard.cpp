@@ -99,7 +99,7 @@ std::shared_ptr<TrainClassifierWizard::Result> train(std::vector<TrainingSource>
         r->error = QStringLiteral("cancelled");
         return r;
     }
-    auto model = trainModel(*dataset, options);
+    auto model = trainModel(*dataset, options, progress.sub(0.85, 1.0));
     if (!model) {
         r->error = model.message();
         return r;

@@ -48,7 +48,7 @@ TEST(InteractionFeatures, WorkedExample) {
 }
 
 TEST(InteractionFeatures, TackleClassificationOnSimulatedMatches) {
-    const auto r = compareTackleFeatures(1, 1, 600.0, 50);
+    const auto r = compareTackleFeatures(1, 1, 600.0, 100);
     ASSERT_EQ(r.rows.size(), 5u);
     std::printf("threshold %.2f m/s², %d/%d test player tackles found, %d candidates\n", r.threshold, r.testFound,
                 r.testPlayerTackles, r.testCandidates);
