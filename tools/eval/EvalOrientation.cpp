@@ -1,15 +1,22 @@
-// athlos-eval-orientation <broad folder> [--algorithms a,b,...] [--offline]
+// athlos-eval-orientation <broad folder> [--algorithms a,b,...] [--offline] [--ref-shift s]
 // --offline: vqf also runs in offline mode (whole-recording smoothing), printed as vqf-offline.
+// --ref-shift: diagnostic only, not a result: compares the estimate at t with the reference at t − s
+// (slerp between samples), to measure how much of the error a clock offset between the IMU and the
+// optical system explains (BROAD: the IMU lags by ≈ 2.6 ms, docs/validation/inertial.md §1b).
+// --sync: prints, per trial, that clock offset measured from the accelerometer and the optical
+// positions alone (tools/eval/ImuClockOffset.h) and exits.
 // Runs every orientation algorithm (6D and 9D) on every BROAD trial (*.hdf5) of a folder and prints
 // the benchmark's RMS errors (deg) per trial and the mean over trials, as defined in
 // shared/data/README.md: 9D judged on total, 6D on inclination. One parameter set for all trials.
 #include "core/io/Importer.h"
 #include "core/math/OrientationError.h"
 #include "plugins/inertial/OrientationEstimation.h"
+#include "tools/eval/ImuClockOffset.h"
 
 #include <QCoreApplication>
 #include <QDir>
 #include <cstdio>
+#include <limits>
 
 using namespace athlos;
 using namespace athlos::inertial;
@@ -19,7 +26,7 @@ namespace {
 struct Trial {
     QString name;
     std::shared_ptr<const StreamData> imu, ref;
-    int acc = -1, gyr = -1, mag = -1, qw = -1, movement = -1;
+    int acc = -1, gyr = -1, mag = -1, qw = -1, movement = -1, pos = -1;
     double ts = 0.0;
 };
 
@@ -45,6 +52,7 @@ Expected<Trial> loadTrial(const QString& file) {
             trial.ref = *data;
             trial.qw = s->info().columnIndex(QStringLiteral("qw"));
             trial.movement = s->info().columnIndex(QStringLiteral("movement"));
+            trial.pos = s->info().columnIndex(QStringLiteral("pos_x"));
         }
     }
     if (!trial.imu || !trial.ref || trial.acc < 0 || trial.gyr < 0 || trial.mag < 0 || trial.qw < 0 ||
@@ -61,7 +69,8 @@ int main(int argc, char** argv) {
     const QStringList args = app.arguments();
     if (args.size() < 2) {
         std::fprintf(stderr,
-                     "usage: athlos-eval-orientation <broad folder> [--algorithms vqf,madgwick,...] [--offline]\n");
+                     "usage: athlos-eval-orientation <broad folder> [--algorithms vqf,madgwick,...] [--offline] "
+                     "[--ref-shift s]\n");
         return 2;
     }
     QStringList algorithms = orientationAlgorithmNames();
@@ -69,6 +78,10 @@ int main(int argc, char** argv) {
     if (ai > 0 && ai + 1 < args.size()) algorithms = args.at(ai + 1).split(QLatin1Char(','));
     if (args.contains(QStringLiteral("--offline")) && algorithms.contains(QStringLiteral("vqf")))
         algorithms.insert(algorithms.indexOf(QStringLiteral("vqf")) + 1, QStringLiteral("vqf-offline"));
+    double refShift = 0.0;
+    const int si = args.indexOf(QStringLiteral("--ref-shift"));
+    if (si > 0 && si + 1 < args.size()) refShift = args.at(si + 1).toDouble();
+    if (refShift != 0.0) std::printf("DIAGNOSTIC: reference shifted by %g s (not a result)\n", refShift);
     QDir dir(args.at(1));
     const QStringList files =
         dir.entryList({QStringLiteral("*.hdf5"), QStringLiteral("*.h5")}, QDir::Files, QDir::Name);
@@ -85,6 +98,30 @@ int main(int argc, char** argv) {
         }
         trials.push_back(std::move(*t));
     }
+    if (args.contains(QStringLiteral("--sync"))) {
+        std::printf("%-38s %14s %10s %12s\n", "trial", "acc lag (smp)", "(ms)", "rms (m/s^2)");
+        double sum = 0.0;
+        for (const Trial& trial : trials) {
+            if (trial.pos < 0) continue;
+            const auto& imu = *trial.imu;
+            const auto& ref = *trial.ref;
+            std::vector<math::Vec3> acc(imu.rows()), pos(ref.rows());
+            std::vector<math::Quat> q(ref.rows());
+            for (std::size_t r = 0; r < imu.rows(); ++r)
+                acc[r] = math::Vec3(imu.at(r, trial.acc), imu.at(r, trial.acc + 1), imu.at(r, trial.acc + 2));
+            for (std::size_t r = 0; r < ref.rows(); ++r) {
+                q[r] = math::Quat(ref.at(r, trial.qw), ref.at(r, trial.qw + 1), ref.at(r, trial.qw + 2),
+                                  ref.at(r, trial.qw + 3));
+                pos[r] = math::Vec3(ref.at(r, trial.pos), ref.at(r, trial.pos + 1), ref.at(r, trial.pos + 2));
+            }
+            const eval::ClockOffset c = eval::imuClockOffset(acc, q, pos, trial.ts);
+            std::printf("%-38s %14.2f %10.2f %12.3f\n", qPrintable(trial.name), c.samples,
+                        1000.0 * c.samples * trial.ts, c.rms);
+            sum += c.samples * trial.ts;
+        }
+        std::printf("%-38s %14s %10.2f\n", "MEAN", "", 1000.0 * sum / static_cast<double>(trials.size()));
+        return 0;
+    }
     std::printf("%-38s %-10s %8s %8s %8s | %8s\n", "trial", "algorithm", "9D tot", "9D head", "9D incl", "6D incl");
     for (const QString& name : algorithms) {
         const bool offline = name == QLatin1String("vqf-offline");
@@ -100,9 +137,22 @@ int main(int argc, char** argv) {
                            imu.rows(), static_cast<std::size_t>(imu.columns)};
             std::vector<math::Quat> ref(trial.ref->rows());
             std::vector<bool> maskVec(trial.ref->rows());
+            const auto refAt = [&](std::size_t r) {
+                return math::Quat(trial.ref->at(r, trial.qw), trial.ref->at(r, trial.qw + 1),
+                                  trial.ref->at(r, trial.qw + 2), trial.ref->at(r, trial.qw + 3));
+            };
             for (std::size_t r = 0; r < ref.size(); ++r) {
-                ref[r] = math::Quat(trial.ref->at(r, trial.qw), trial.ref->at(r, trial.qw + 1),
-                                    trial.ref->at(r, trial.qw + 2), trial.ref->at(r, trial.qw + 3));
+                ref[r] = refAt(r);
+                if (refShift != 0.0) {
+                    const double t = static_cast<double>(r) - refShift / trial.ts;
+                    if (t < 0.0 || t > static_cast<double>(ref.size() - 1)) {
+                        ref[r].coeffs().setConstant(std::numeric_limits<double>::quiet_NaN());
+                    } else {
+                        const auto r0 = static_cast<std::size_t>(t);
+                        const std::size_t r1 = std::min(r0 + 1, ref.size() - 1);
+                        ref[r] = math::slerp(refAt(r0), refAt(r1), t - static_cast<double>(r0));
+                    }
+                }
                 maskVec[r] = trial.ref->at(r, trial.movement) != 0.0;
             }
             std::unique_ptr<bool[]> mask(new bool[ref.size()]);
