@@ -184,7 +184,7 @@ VelocityReset::Result VelocityReset::run(const std::vector<Quat>& q, const std::
     if (p_.refine && phases.size() >= 2) {
         if (!keepGoing(0.6)) return {};
         // Step 5: the thrust is where the corrected speed and the inertial acceleration are small (Fasel
-        // 2017 Table 3.1), grown from each candidate, never into a neighbour.
+        // 2017 Table 3.1), never reaching into a neighbour.
         const std::size_t n = q.size();
         const auto still = [&](std::size_t k) {
             const Vec3& v = out.velocity[k];
@@ -193,7 +193,10 @@ VelocityReset::Result VelocityReset::run(const std::vector<Quat>& q, const std::
         std::vector<Phase> refined;
         for (std::size_t i = 0; i < phases.size(); ++i) {
             const std::size_t lo = i == 0 ? 0 : phases[i - 1].end, hi = i + 1 < phases.size() ? phases[i + 1].begin : n;
-            std::size_t b = phases[i].begin, e = phases[i].end;
+            // From the candidate's centre (anchored, so still) outwards: shrinks a candidate that began
+            // while the ski was still slowing down and grows one that the detector's window cut short.
+            const std::size_t c = centre(phases[i]);
+            std::size_t b = c, e = c + 1;
             while (b > lo && still(b - 1)) --b;
             while (e < hi && still(e)) ++e;
             if (refined.empty() || b >= refined.back().end) refined.push_back({b, e, Vec3::Zero(), 0.0});

@@ -112,6 +112,7 @@ TEST(VelocityReset, CrossCountrySkiThrustsAndCycleSpeeds) {
     ASSERT_EQ(score.cycleSpeedPct.v.size(), 19u);
     EXPECT_LT(score.cycleSpeedPct.meanAbs(), 0.5);
     EXPECT_LT(score.cycleSpeedPct.maxAbs(), 1.5);
+    EXPECT_LT(std::abs(score.thrustStart.mean()), 0.01);
     EXPECT_LT(std::abs(score.thrustEnd.mean()), 0.01);
     EXPECT_LT(score.speedRmse, 0.05);
     // The resets are what makes it right: the same acceleration integrated without them drifts.
