@@ -1,5 +1,5 @@
-// athlos-eval-velocity-reset [--seeds N] [--cycles N] [--gaitmap <folder> [--param k=v …]]
-// (--param: velocity-reset parameters for the gaitmap runs)
+// athlos-eval-velocity-reset [--seeds N] [--cycles N] [--no-bridge] [--gaitmap <folder> [--param k=v …]]
+// (--no-bridge: gyro_bridge=false everywhere; --param: velocity-reset parameters for the gaitmap runs)
 // Velocity resets (velocity-reset, plugins/inertial/VelocityReset.h) on 6D VQF orientation, the figures
 // of docs/validation/drift-reduction.md ("Velocity resets"):
 //  - cross-country diagonal stride on SkiingSimulator (xc-ski mode): thrusts found, thrust start/end,
@@ -32,28 +32,33 @@ int main(int argc, char** argv) {
     int seeds = 5, cycles = 40;
     QString gaitmap;
     QVariantMap footParameters;
+    bool bridge = true;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--seeds") && i + 1 < argc) {
             seeds = std::atoi(argv[++i]);
         } else if (!std::strcmp(argv[i], "--cycles") && i + 1 < argc) {
             cycles = std::atoi(argv[++i]);
+        } else if (!std::strcmp(argv[i], "--no-bridge")) {
+            bridge = false;
+            footParameters.insert(QStringLiteral("gyro_bridge"), QStringLiteral("false"));
         } else if (!std::strcmp(argv[i], "--param") && i + 1 < argc) {
             const QString kv = QString::fromLocal8Bit(argv[++i]);
             footParameters.insert(kv.section(QLatin1Char('='), 0, 0), kv.section(QLatin1Char('='), 1));
         } else if (!std::strcmp(argv[i], "--gaitmap") && i + 1 < argc) {
             gaitmap = QString::fromLocal8Bit(argv[++i]);
         } else {
-            std::fprintf(
-                stderr,
-                "usage: athlos-eval-velocity-reset [--seeds N] [--cycles N] [--gaitmap <folder> [--param k=v …]]\n");
+            std::fprintf(stderr,
+                         "usage: athlos-eval-velocity-reset [--seeds N] [--cycles N] [--no-bridge] [--gaitmap <folder> "
+                         "[--param k=v …]]\n");
             return 2;
         }
     }
 
+    VelocityReset::Params xc = VelocityReset::crossCountrySki(), foot = VelocityReset::foot();
+    xc.gyroBridge = foot.gyroBridge = bridge;
     for (const bool strapdown : {false, true}) {
         SkiVelocityScore ski;
-        for (int s = 0; s < seeds; ++s)
-            ski.add(evaluateSkiVelocity(unsigned(101 + s), cycles, VelocityReset::crossCountrySki(), strapdown));
+        for (int s = 0; s < seeds; ++s) ski.add(evaluateSkiVelocity(unsigned(101 + s), cycles, xc, strapdown));
         std::printf("cross-country diagonal stride (SkiingSimulator, %d seeds × %d cycles, 200 Hz), mode xc-ski, %s\n",
                     seeds, cycles, strapdown ? "strap-down orientation" : "6D VQF orientation");
         std::printf("    thrusts matched              %d / %d (extra phases %d)\n", ski.matchedThrusts,
@@ -68,21 +73,21 @@ int main(int argc, char** argv) {
     }
 
     for (const double bias : {0.0, 0.3}) {
-        FootVelocityScore foot;
+        FootVelocityScore walk;
         for (int s = 0; s < seeds; ++s) {
             events::SimConfig c = footWalkConfig(unsigned(11 + s));
             c.accBias += Eigen::Vector3d(bias, -bias, 0.5 * bias);
-            foot.add(evaluateFootVelocity(c, VelocityReset::foot()));
+            walk.add(evaluateFootVelocity(c, foot));
         }
         std::printf(
             "level walking (FootMotionSimulator, %d seeds × 12 strides, 102.4 Hz), mode foot, accelerometer "
             "bias +%.1f m/s²\n",
             seeds, bias);
-        std::printf("    stances matched once         %d / %d (extra phases %d)\n", foot.matchedStances,
-                    foot.truthStrides, foot.extraPhases);
-        line("stride length", foot.strideLength, 1.0, "m");
-        line("stride length (%)", foot.strideLengthPct, 1.0, "%");
-        line("stride length, no resets (%)", foot.strideLengthNoResetPct, 1.0, "%");
+        std::printf("    stances matched once         %d / %d (extra phases %d)\n", walk.matchedStances,
+                    walk.truthStrides, walk.extraPhases);
+        line("stride length", walk.strideLength, 1.0, "m");
+        line("stride length (%)", walk.strideLengthPct, 1.0, "%");
+        line("stride length, no resets (%)", walk.strideLengthNoResetPct, 1.0, "%");
     }
 
     if (!gaitmap.isEmpty()) {
