@@ -199,6 +199,9 @@ VelocityReset::Result VelocityReset::run(const std::vector<Quat>& q, const std::
             std::size_t b = c, e = c + 1;
             while (b > lo && still(b - 1)) --b;
             while (e < hi && still(e)) ++e;
+            // Before the first and after the last centre nothing is anchored: keep the candidate's ends.
+            if (i == 0) b = std::min(b, phases[i].begin);
+            if (i + 1 == phases.size()) e = std::max(e, phases[i].end);
             if (refined.empty() || b >= refined.back().end) refined.push_back({b, e, Vec3::Zero(), 0.0});
         }
         phases = std::move(refined);
