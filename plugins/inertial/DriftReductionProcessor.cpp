@@ -138,8 +138,8 @@ QString DriftReductionProcessor::description() const {
         "must see the same joint-centre acceleration; sensor-to-joint vectors by Nelder–Mead, the drift between the "
         "two virtual accelerations estimated over ±1.25 s windows, corrected from the sacrum to the thighs, "
         "shanks and feet and to the sternum, then a second pass on horizontal components for the azimuth. Inputs: "
-        "(orientation, imu) per segment in the order of `segments`. Velocity resets for foot/ski sensors are not "
-        "done.");
+        "(orientation, imu) per segment in the order of `segments`. Velocity resets for foot/ski sensors: "
+        "velocity-reset, on any of the outputs.");
 }
 
 ParameterSpecs DriftReductionProcessor::parameters() const {

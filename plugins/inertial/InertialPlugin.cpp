@@ -10,6 +10,7 @@
 #include "plugins/inertial/SimulateBodyProcessor.h"
 #include "plugins/inertial/SimulateImuGnssProcessor.h"
 #include "plugins/inertial/SimulateLimbProcessor.h"
+#include "plugins/inertial/VelocityResetProcessor.h"
 
 namespace athlos::inertial {
 
@@ -23,7 +24,8 @@ std::vector<std::shared_ptr<const Processor>> InertialPlugin::processors() const
             std::make_shared<SegmentCalibrationProcessor>(),
             std::make_shared<SimulateBodyProcessor>(),
             std::make_shared<DriftReductionProcessor>(),
-            std::make_shared<FunctionalCalibrationProcessor>()};
+            std::make_shared<FunctionalCalibrationProcessor>(),
+            std::make_shared<VelocityResetProcessor>()};
 }
 
 }  // namespace athlos::inertial
