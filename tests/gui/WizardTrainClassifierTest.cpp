@@ -138,7 +138,7 @@ private slots:
                                                         {QStringLiteral("falls"), 2},
                                                         {QStringLiteral("imu_rate"), 100.0},
                                                         {QStringLiteral("position_rate"), 20.0}}});
-            QVERIFY2(run.ok(), qPrintable(run.message()));
+            if (!run.ok()) QFAIL(qPrintable(run.message()));
         }
         TestWorkspace workspace(project_.get());
         TrainClassifierWizard wizard(workspace);

@@ -323,7 +323,9 @@ void TrainClassifierWizard::initializePage(int id) {
 }
 
 bool TrainClassifierWizard::validateCurrentPage() {
-    if (currentId() == DataPage) return !checkedItems(recordingList_).isEmpty() && checkedItems(classList_).size() >= 2;
+    // One class is enough with event segmentation (chosen on the next page): the detector's other events are
+    // the null class; a sliding-window training with one class is refused with its reason by the training.
+    if (currentId() == DataPage) return !checkedItems(recordingList_).isEmpty() && !checkedItems(classList_).isEmpty();
     if (currentId() == EvaluationPage) return !watcher_.isRunning() && result_ && result_->model;
     if (currentId() == SavePage) return saveModel();
     return QWizard::validateCurrentPage();
