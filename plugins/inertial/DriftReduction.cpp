@@ -2,6 +2,7 @@
 
 #include "plugins/inertial/LowPass2.h"
 #include "plugins/inertial/NelderMead.h"
+#include "plugins/inertial/ProperRotation.h"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/SVD>
@@ -18,6 +19,7 @@ using Mat3 = Eigen::Matrix3d;
 using Mat4 = Eigen::Matrix4d;
 using Vec4 = Eigen::Vector4d;
 using Estimator = DriftReduction::Params::Estimator;
+using HeadingStatus = DriftReduction::HeadingStatus;
 
 namespace {
 
@@ -71,47 +73,6 @@ Quat nlerp(const Quat& a, const Quat& b, double t) {
     return Quat((1.0 - t) * a.coeffs() + sign * t * b.coeffs()).normalized();
 }
 
-// The rotation R maximising tr(Rᵀ m), i.e. U diag(1, 1, det UVᵀ) Vᵀ for m = U S Vᵀ (the solution of
-// Wahba's problem and of Kabsch's, Markley 1988), by SVD.
-Mat3 properRotationSvd(const Mat3& m) {
-    const Eigen::JacobiSVD<Mat3> svd(m, Eigen::ComputeFullU | Eigen::ComputeFullV);
-    Mat3 fix = Mat3::Identity();
-    fix(2, 2) = svd.matrixU().determinant() * svd.matrixV().determinant() < 0.0 ? -1.0 : 1.0;
-    return svd.matrixU() * fix * svd.matrixV().transpose();
-}
-
-// The same rotation as the orthogonal polar factor of m by the scaled Newton iteration
-// X ← ½(γX + γ⁻¹X⁻ᵀ) (Higham 1986, "Computing the polar decomposition — with applications", SIAM J.
-// Sci. Stat. Comput. 7(4), Frobenius-norm scaling γ), several times faster than a 3×3 Jacobi SVD and
-// equal to it up to rounding. With det m ≤ 0 (the polar factor is then improper) or no convergence the
-// SVD is used.
-Mat3 properRotation(const Mat3& m) {
-    Mat3 x = m;
-    const double scale2 = x.squaredNorm();
-    bool scaled = true, last = false;
-    for (int it = 0; it < 30; ++it) {
-        // X⁻ᵀ = cof(X) / det X; the cofactor columns are cross products of X's columns.
-        Mat3 inverseT;
-        inverseT.col(0) = x.col(1).cross(x.col(2));
-        inverseT.col(1) = x.col(2).cross(x.col(0));
-        inverseT.col(2) = x.col(0).cross(x.col(1));
-        const double det = x.col(0).dot(inverseT.col(0));
-        if (it == 0 ? !(det * det > 1e-24 * scale2 * scale2 * scale2) : !(det > 0.0)) break;
-        inverseT *= 1.0 / det;
-        // γ = (‖X⁻¹‖_F / ‖X‖_F)^½; 1 near convergence, where the plain iteration is quadratic.
-        const double gamma = scaled ? std::sqrt(std::sqrt(inverseT.squaredNorm() / x.squaredNorm())) : 1.0;
-        const Mat3 next = 0.5 * (gamma * x + (1.0 / gamma) * inverseT);
-        if (last) return next;
-        const double change2 = (next - x).squaredNorm();
-        x = next;
-        if (it == 0 && det < 0.0) break;  // improper polar factor: the SVD handles the reflection
-        if (change2 < 1e-6) scaled = false;
-        // The error after a plain step is about half the square of the change before it.
-        if (!scaled && change2 < 1e-16) last = true;
-    }
-    return properRotationSvd(m);
-}
-
 // SLERP from a to b (Shoemake 1985) for many t: the angle and its sine once per pair, and one sincos
 // per sample (sin((1−t)θ) = sin θ cos tθ − cos θ sin tθ); equal to math::slerp up to rounding.
 class SlerpSegment {
@@ -146,14 +107,32 @@ private:
     double theta_ = 0.0, cotTheta_ = 0.0, invSin_ = 0.0;
 };
 
-// Heading (rotation about earth z) that best turns the horizontal parts of u onto those of v.
-double bestHeading(const std::vector<Vec3>& u, const std::vector<Vec3>& v) {
-    double s = 0.0, c = 0.0;
+// Heading (rotation about earth z) that best turns the horizontal parts of u onto those of v, from the
+// samples whose horizontal parts both exceed minNorm (the azimuth pass's signal-to-noise condition,
+// Fasel 2017 Eqs. 6.12–6.13): ψ = atan2(Σ (u × v)_z, Σ u·v). Also the coherence ρ = |Σ |u||v| e^{iθ}| /
+// Σ |u||v| of the per-sample heading differences θ (the weighted mean resultant length of circular
+// statistics, Mardia & Jupp 2000 §2.3): 1 when one heading explains every sample, near 0 when the
+// horizontal parts are unrelated.
+struct HeadingFit {
+    double psi = 0.0, coherence = 0.0;
+    std::size_t samples = 0;
+};
+HeadingFit bestHeading(const std::vector<Vec3>& u, const std::vector<Vec3>& v, double minNorm) {
+    double s = 0.0, c = 0.0, w = 0.0;
+    HeadingFit f;
     for (std::size_t i = 0; i < u.size(); ++i) {
+        const double nu = u[i].head<2>().norm(), nv = v[i].head<2>().norm();
+        if (!(nu > minNorm && nv > minNorm)) continue;
         s += u[i].x() * v[i].y() - u[i].y() * v[i].x();
         c += u[i].x() * v[i].x() + u[i].y() * v[i].y();
+        w += nu * nv;
+        ++f.samples;
     }
-    return (s == 0.0 && c == 0.0) ? 0.0 : std::atan2(s, c);
+    if (w > 0.0) {
+        f.psi = std::atan2(s, c);
+        f.coherence = std::hypot(s, c) / w;
+    }
+    return f;
 }
 
 }  // namespace
@@ -430,22 +409,35 @@ DriftReduction::Result DriftReduction::run(const std::vector<Segment>& segments,
             bp.col(i) = (rp * kin[ip].k(k)).reshaped();
             bd.col(i) = (rd * kin[id].k(k)).reshaped();
         }
+        std::vector<Mat3> profile(blockStart.size() - 1);
         const auto cost = [&](const Eigen::VectorXd& x) {
             up = ap + bp.middleRows<3>(0) * x[0] + bp.middleRows<3>(3) * x[1] + bp.middleRows<3>(6) * x[2];
             ud = ad + bd.middleRows<3>(0) * x[3] + bd.middleRows<3>(3) * x[4] + bd.middleRows<3>(6) * x[5];
-            double e = 0.0;
+            // Σ up udᵀ per block, as nine vectorised dot products over the block, and their sum.
+            Mat3 total = Mat3::Zero();
             for (std::size_t b = 0; b + 1 < blockStart.size(); ++b) {
                 const auto from = static_cast<Eigen::Index>(blockStart[b]);
                 const auto len = static_cast<Eigen::Index>(blockStart[b + 1]) - from;
                 const auto bu = up.middleCols(from, len);
                 const auto bv = ud.middleCols(from, len);
-                Mat3 h;  // Σ ud upᵀ, as nine vectorised dot products over the block
+                Mat3& h = profile[b];
                 for (int i = 0; i < 3; ++i)
-                    for (int j = 0; j < 3; ++j) h(i, j) = bv.row(i).dot(bu.row(j));
-                const Mat3 turn = properRotation(h.transpose());  // ud → up (Kabsch)
+                    for (int j = 0; j < 3; ++j) h(i, j) = bu.row(i).dot(bv.row(j));
+                total += h;
+            }
+            // Each block's rotation ud → up (Kabsch) with a weak pull towards the common rotation of all
+            // blocks (the drift changes little from one block to the next): where a block's vectors are
+            // nearly parallel (all close to gravity: walking), the rotation about them follows the others.
+            const Mat3 common = p.fitPrior > 0.0 ? properRotation(total) : Mat3::Identity();
+            double e = 0.0;
+            for (std::size_t b = 0; b + 1 < blockStart.size(); ++b) {
+                const auto from = static_cast<Eigen::Index>(blockStart[b]);
+                const auto len = static_cast<Eigen::Index>(blockStart[b + 1]) - from;
+                const Mat3& h = profile[b];
+                const Mat3 turn = properRotation(p.fitPrior > 0.0 ? Mat3(h + p.fitPrior * h.norm() * common) : h);
                 auto r = residual.middleCols(from, len);
-                r.noalias() = turn * bv;
-                r -= bu;
+                r.noalias() = turn * ud.middleCols(from, len);
+                r -= up.middleCols(from, len);
                 e += (r.row(0).array().square() + r.row(1).array().square() + r.row(2).array().square()).sqrt().sum();
             }
             return e / double(c.size());
@@ -509,12 +501,30 @@ DriftReduction::Result DriftReduction::run(const std::vector<Segment>& segments,
         if (p.alignHeading) {
             for (std::size_t l : order) {
                 virtualAccelerations(q, links[l], result.links[l]);
-                const double psi = bestHeading(gd, gp);
-                const Quat turn = math::headingRotation(psi);
+                const HeadingFit fit = bestHeading(gd, gp, p.azimuthMinNorm);
+                LinkResult& lr = result.links[l];
+                lr.headingSamples = static_cast<int>(fit.samples);
+                lr.headingCoherence = fit.coherence;
+                lr.heading = fit.samples < static_cast<std::size_t>(minCount) ? HeadingStatus::TooFewSamples
+                             : fit.coherence < p.minHeadingCoherence          ? HeadingStatus::Incoherent
+                                                                              : HeadingStatus::Aligned;
+                if (lr.heading != HeadingStatus::Aligned) continue;
+                const Quat turn = math::headingRotation(fit.psi);
                 for (Quat& x : q[static_cast<std::size_t>(links[l].distal)]) x = (turn * x).normalized();
-                result.links[l].headingOffset = psi;
+                lr.headingOffset = fit.psi;
             }
         }
+        // A link whose heading could not be aligned is not corrected: its distal segment turns with the
+        // proximal one (the correction of the proximal in each pass), so the joint keeps the relative
+        // orientation of its input, and it does not take part in the root's mean drift.
+        const auto headingKept = [&](std::size_t l) {
+            const HeadingStatus h = result.links[l].heading;
+            return h == HeadingStatus::TooFewSamples || h == HeadingStatus::Incoherent;
+        };
+        std::vector<unsigned char> keepsCorrection(segments.size(), 0);
+        for (std::size_t l = 0; l < links.size(); ++l)
+            if (headingKept(l)) keepsCorrection[static_cast<std::size_t>(links[l].proximal)] = 1;
+        std::vector<std::vector<Quat>> passCorrection(segments.size());
         const std::size_t passes = (p.azimuthPass ? 2 : 1) * static_cast<std::size_t>(std::max(1, p.iterations));
         for (std::size_t pass = 0; pass < passes; ++pass) {
             const bool horizontal = p.azimuthPass && pass % 2 == 1;
@@ -522,10 +532,13 @@ DriftReduction::Result DriftReduction::run(const std::vector<Segment>& segments,
             std::vector<std::vector<Quat>> rootDrifts;
             for (std::size_t l = 0; l < links.size(); ++l) {
                 if (links[l].proximal != root) continue;
+                if (headingKept(l)) continue;
                 virtualAccelerations(q, links[l], result.links[l]);
                 rootDrifts.emplace_back();
                 smoothedDrift(gp, gd, horizontal, rootDrifts.back());
             }
+            std::vector<Quat>& rootCorrection = passCorrection[static_cast<std::size_t>(root)];
+            if (keepsCorrection[static_cast<std::size_t>(root)]) rootCorrection.assign(n, Quat::Identity());
             if (!rootDrifts.empty()) {
                 std::vector<Quat>& r = q[static_cast<std::size_t>(root)];
                 Vec4 previous;
@@ -550,22 +563,32 @@ DriftReduction::Result DriftReduction::run(const std::vector<Segment>& segments,
                     }
                     if (k > 0 && v.dot(previous) < 0.0) v = -v;
                     previous = v;
-                    r[k] = (toQuat(v) * r[k]).normalized();
+                    const Quat c = toQuat(v);
+                    r[k] = (c * r[k]).normalized();
+                    if (!rootCorrection.empty()) rootCorrection[k] = c;
                 }
             }
             // Then proximal to distal (Eq. 5.14).
             for (std::size_t l : order) {
-                virtualAccelerations(q, links[l], result.links[l]);
-                const double share = smoothedDrift(gd, gp, horizontal, smoothed);
+                const auto ip = static_cast<std::size_t>(links[l].proximal);
+                const auto id = static_cast<std::size_t>(links[l].distal);
+                std::vector<Quat>& d = q[id];
                 LinkResult& lr = result.links[l];
-                (horizontal ? lr.azimuthValidShare : lr.validShare) = share;
-                std::vector<Quat>& d = q[static_cast<std::size_t>(links[l].distal)];
+                if (headingKept(l)) {
+                    smoothed = passCorrection[ip];
+                    (horizontal ? lr.azimuthValidShare : lr.validShare) = 0.0;
+                } else {
+                    virtualAccelerations(q, links[l], lr);
+                    const double share = smoothedDrift(gd, gp, horizontal, smoothed);
+                    (horizontal ? lr.azimuthValidShare : lr.validShare) = share;
+                }
                 double angle = 0.0;
                 for (std::size_t k = 0; k < n; ++k) {
                     d[k] = (smoothed[k] * d[k]).normalized();
                     angle += 2.0 * std::acos(std::clamp(std::abs(smoothed[k].w()), 0.0, 1.0));
                 }
                 lr.meanCorrection += angle / double(n);
+                if (keepsCorrection[id]) passCorrection[id] = smoothed;
             }
         }
     };

@@ -29,7 +29,12 @@
 // - Before the passes, a constant heading offset per joint is removed in chain order (least-squares
 //   rotation about the vertical between the horizontal parts of ã_d^G and ã_p^G over the recording,
 //   the principle of Fasel 2017 ch. 7 for the arms' azimuths): 6D orientations from `orientation`
-//   have independent headings.
+//   have independent headings. The heading is fitted only on the samples whose horizontal ã exceed
+//   the azimuth pass's threshold (Eqs. 6.12–6.13): in walking the hip joint centre's horizontal
+//   acceleration is below it on ~99 % of samples, and a heading fitted on all of them came out
+//   110–170° wrong. A joint with too few such samples, or whose samples disagree (coherence below
+//   minHeadingCoherence), has an unobservable heading and is left uncorrected (LinkResult::heading).
+// - In the r fit each block's rotation is pulled weakly towards the blocks' common rotation (fitPrior).
 #include "core/math/Angles.h"
 #include "core/math/QuaternionOps.h"
 #include "plugins/inertial/RestDetector.h"
@@ -51,6 +56,14 @@ public:
         double window = 1.25;                       // s, half width of the Markley mean (ch. 5)
         bool azimuthPass = true;                    // second pass on horizontal components (ch. 6)
         double azimuthMinNorm = 0.6;                // m/s², threshold of the azimuth pass (Eqs. 6.12–6.13)
+        // The constant heading of a joint (alignHeading) is fitted on the samples whose horizontal ã both
+        // exceed azimuthMinNorm (the azimuth pass's condition) and accepted only with at least as many of
+        // them as a window needs (minWindowSamples, minWindowShare) and a weighted mean resultant length
+        // of their heading differences (circular statistics, Mardia & Jupp 2000 §2.3) of at least this:
+        // 0.5 ≈ a circular standard deviation of 68° per sample. Otherwise the joint's heading is
+        // unobservable: it keeps the relative heading of its input (align it at the start, joint-angles
+        // heading=align-start) and only its inclination drift is corrected.
+        double minHeadingCoherence = 0.5;
         // Repetitions of the (3D, azimuth) passes. The drift of one sample is the smallest rotation between
         // two vectors, blind to the part about the vectors themselves, so one pass removes only part of
         // the drift; repeating converges (an addition to Fasel 2017, which applies each pass once).
@@ -70,6 +83,11 @@ public:
         int maxOptimisationSamples = 3000;  // evenly thinned set for the Nelder–Mead cost
         double fitBlock = 2.5;              // s, blocks with their own rotation in the r fit (see .cpp)
         int maxFitBlocks = 60;              // at most this many blocks (the cost of the fit grows with them)
+        // Pull of each block's rotation towards the blocks' common rotation, relative to the block's
+        // ‖Σ ud upᵀ‖ (the same weak prior as the window solution's pull to the identity): a block whose
+        // vectors are all close to gravity leaves the rotation about them free, and in walking r then
+        // fell into a second minimum 15 cm from the truth (docs/validation/drift-reduction.md).
+        double fitPrior = 0.01;
         bool jointCorrection = true;
         // Static correction (Fasel 2017 ch. 2; rest detection as in VQF).
         bool staticCorrection = true;
@@ -91,6 +109,12 @@ public:
     struct Link {
         int proximal = 0, distal = 0;  // indices into the segment list
     };
+    enum class HeadingStatus {
+        NotAligned,     // alignHeading off
+        Aligned,        // constant heading offset removed, headings corrected by the passes
+        TooFewSamples,  // too few samples with horizontal ã above azimuthMinNorm: heading kept
+        Incoherent      // their heading differences disagree (coherence < minHeadingCoherence): heading kept
+    };
     struct LinkResult {
         math::Vec3 proximalToJoint = math::Vec3::Zero(), distalToJoint = math::Vec3::Zero();  // sensor frames (m)
         double headingOffset = 0.0;      // rad, removed from the distal segment before the passes
@@ -100,6 +124,9 @@ public:
         int optimisationSamples = 0;
         bool distalExcitation = false;  // the fit also used samples where only the distal segment turned
         double optimisationCost = 0.0;  // m/s², mean |ã_d^G − ã_p^G| at the optimum
+        HeadingStatus heading = HeadingStatus::NotAligned;
+        int headingSamples = 0;         // samples the heading was fitted on
+        double headingCoherence = 0.0;  // their weighted mean resultant length (0–1)
     };
     struct Result {
         std::vector<std::vector<math::Quat>> q;  // corrected, same layout as the input

@@ -76,6 +76,7 @@ Expected<Plan> makePlan(const RunContext& c) {
     num("min_norm", p.minNorm);
     num("window", p.window);
     num("azimuth_min_norm", p.azimuthMinNorm);
+    num("min_heading_coherence", p.minHeadingCoherence);
     num("rest_th_gyr", p.rest.thGyr);
     num("rest_th_acc", p.rest.thAcc);
     const auto flag = [&](const char* name, bool& value) {
@@ -176,6 +177,13 @@ ParameterSpecs DriftReductionProcessor::parameters() const {
         ParameterSpec::boolean(QStringLiteral("align_heading"), d.alignHeading,
                                tr("Remove a constant heading offset per joint first (needed for 6D orientations, "
                                   "whose headings are independent).")),
+        ParameterSpec::number(
+            QStringLiteral("min_heading_coherence"), d.minHeadingCoherence, 0.0, 1.0, QStringLiteral("1"),
+            tr("The joint heading is fitted on samples whose horizontal ã exceed azimuth_min_norm (Eqs. 6.12–6.13); "
+               "below this weighted mean resultant length of their heading differences (circular statistics, "
+               "Mardia & Jupp 2000; 0.5 ≈ 68° circular SD), or with fewer samples than a window needs, the "
+               "heading is unobservable and the joint is left uncorrected (attribute heading_aligned=false: align "
+               "it with joint-angles heading=align-start).")),
         ParameterSpec::boolean(QStringLiteral("static_correction"), d.staticCorrection,
                                tr("Correct the inclination at rest instants, spread by SLERP (Fasel 2017 Eq. 2.7).")),
         ParameterSpec::boolean(QStringLiteral("joint_correction"), d.jointCorrection,
@@ -305,6 +313,26 @@ Expected<std::vector<ProcessorOutput>> DriftReductionProcessor::run(const RunCon
             attributes.insert(QStringLiteral("azimuth_valid_share"), lr.azimuthValidShare);
             attributes.insert(QStringLiteral("mean_correction"), lr.meanCorrection);
             attributes.insert(QStringLiteral("joint_fit_residual"), lr.optimisationCost);
+            attributes.insert(QStringLiteral("heading_aligned"),
+                              lr.heading == DriftReduction::HeadingStatus::Aligned ||
+                                  lr.heading == DriftReduction::HeadingStatus::NotAligned);
+            attributes.insert(QStringLiteral("heading_samples"), lr.headingSamples);
+            attributes.insert(QStringLiteral("heading_coherence"), lr.headingCoherence);
+            const QString joint = plan->segments[plan->links[l].proximal] + QStringLiteral(" → ") + plan->segments[i];
+            if (lr.heading == DriftReduction::HeadingStatus::TooFewSamples)
+                attributes.insert(QStringLiteral("heading_unobservable"),
+                                  QStringLiteral("joint %1: only %2 samples with horizontal joint accelerations above "
+                                                 "azimuth_min_norm; the joint is left uncorrected")
+                                      .arg(joint)
+                                      .arg(lr.headingSamples));
+            else if (lr.heading == DriftReduction::HeadingStatus::Incoherent)
+                attributes.insert(QStringLiteral("heading_unobservable"),
+                                  QStringLiteral("joint %1: the heading differences of its %2 samples disagree "
+                                                 "(coherence %3 < min_heading_coherence); the joint is left "
+                                                 "uncorrected")
+                                      .arg(joint)
+                                      .arg(lr.headingSamples)
+                                      .arg(lr.headingCoherence, 0, 'f', 2));
         }
         s.info().attributes = attributes;
         out.push_back({i == 0 ? QString() : plan->segments[i], std::move(s)});

@@ -58,6 +58,17 @@ for side in right left; do
   done
 done
 
+# A joint whose heading is unobservable (here forced: no coherence is ever 1) is left uncorrected and says why.
+expect_ok "info" "$ATHLOS" info "$P" --json
+grep -q '"heading_aligned": true' "$WORK/out" || fail "no heading_aligned attribute after drift-reduction"
+expect_ok "drift-reduction unobservable heading" "$ATHLOS" run "$P" drift-reduction \
+  --input "ski/q,ski/imu,ski/q-sternum,ski/imu-sternum,ski/q-right-thigh,ski/imu-right-thigh" \
+  --output ski/dr1 --param segments=sacrum,sternum,right-thigh --param min_heading_coherence=1
+expect_ok "info after" "$ATHLOS" info "$P" --json
+grep -q '"heading_aligned": false' "$WORK/out" || fail "heading_aligned=false missing for an unobservable heading"
+grep -q '"heading_unobservable": "joint sacrum → right-thigh: the heading differences' "$WORK/out" ||
+  fail "no reason for the unobservable heading: $(grep -o '"heading_unobservable": "[^"]*"' "$WORK/out" | head -2)"
+
 expect_fail "odd input count" "pairs" "$ATHLOS" run "$P" drift-reduction \
   --input "ski/q,ski/imu,ski/q-sternum,ski/imu-sternum,ski/q-right-thigh" --output ski/x
 expect_fail "root first" "sacrum" "$ATHLOS" run "$P" drift-reduction --input "ski/q-sternum,ski/imu-sternum,ski/q,ski/imu" \

@@ -84,6 +84,11 @@ DriftEvaluation evaluateDriftReduction(const DriftEvaluationOptions& options) {
         DriftReduction::Result r = DriftReduction(options.reduction).run(segments, links, ts);
         result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         for (int s = 0; s < kBodySegments; ++s) segments[s].q = std::move(r.q[s]);
+        for (int j = 0; j < kBodyJoints; ++j) {
+            const DriftReduction::HeadingStatus h = r.links[static_cast<std::size_t>(j)].heading;
+            result.headingKept[j] =
+                h == DriftReduction::HeadingStatus::TooFewSamples || h == DriftReduction::HeadingStatus::Incoherent;
+        }
     }
 
     // Joint angles as the joint-angles processor computes them (heading aligned over the first 2 s).
@@ -97,12 +102,14 @@ DriftEvaluation evaluateDriftReduction(const DriftEvaluationOptions& options) {
         jp.side = info.side;
         jp.proximalMount = mounts[p];
         jp.distalMount = mounts[d];
-        // After drift reduction the headings are aligned already (joint-angles --param heading=none);
-        // without it, the 6D headings are aligned at the start (heading=align-start).
-        jp.headingOffset = options.driftReduction ? 0.0
-                                                  : JointAngles::estimateHeadingOffset(
-                                                        std::span(segments[p].q).first(align),
-                                                        std::span(segments[d].q).first(align), mounts[p], mounts[d]);
+        // After drift reduction the headings are aligned already (joint-angles --param heading=none),
+        // except where drift reduction found the joint's heading unobservable and kept the input's
+        // relative heading; without it, the 6D headings are aligned at the start (heading=align-start).
+        jp.headingOffset =
+            options.driftReduction && !result.headingKept[j]
+                ? 0.0
+                : JointAngles::estimateHeadingOffset(std::span(segments[p].q).first(align),
+                                                     std::span(segments[d].q).first(align), mounts[p], mounts[d]);
         const JointAngles angles(jp);
         std::array<double, 3> sum{};
         for (std::size_t k = e0; k < e1; ++k) {

@@ -29,6 +29,9 @@ struct DriftEvaluation {
     std::array<double, inertial::kBodySegments>
         orientationError{};  // rad, mean sensor orientation error (motion phase)
     double seconds = 0.0;    // run time of drift reduction
+    // Joints whose heading drift reduction found unobservable (DriftReduction::HeadingStatus): their
+    // angles use the start alignment, as without drift reduction.
+    std::array<bool, inertial::kBodyJoints> headingKept{};
 };
 
 DriftEvaluation evaluateDriftReduction(const DriftEvaluationOptions& options);
