@@ -83,10 +83,6 @@
         <translation>Aktionen klassifizieren (trainiertes Modell)</translation>
     </message>
     <message>
-        <source>Classifies sliding windows of an IMU stream with a model trained in this project (athlos train) and writes the activities as predicted annotations with confidence: consecutive windows of one class merge into one interval and the intervals cover the whole stream. A model trained on detected events (--segmentation events:impact or events:tackle) runs its detector and writes one annotation per event that is not classified as null.</source>
-        <translation>Klassifiziert gleitende Fenster eines IMU-Datenstroms mit einem in diesem Projekt trainierten Modell (athlos train) und schreibt die Aktivitäten als vorhergesagte Annotationen mit Konfidenz: aufeinanderfolgende Fenster einer Klasse werden zu einem Intervall zusammengefasst, und die Intervalle decken den ganzen Datenstrom ab. Ein auf erkannten Ereignissen trainiertes Modell (--segmentation events:impact oder events:tackle) führt seinen Detektor aus und schreibt je Ereignis, das nicht als null klassifiziert wird, eine Annotation.</translation>
-    </message>
-    <message>
         <source>Name of the trained model in the project (athlos train --model).</source>
         <translation>Name des trainierten Modells im Projekt (athlos train --model).</translation>
     </message>
@@ -101,6 +97,10 @@
     <message>
         <source>Activities as predicted annotations with confidence.</source>
         <translation>Aktivitäten als vorhergesagte Annotationen mit Konfidenz.</translation>
+    </message>
+    <message>
+        <source>Classifies sliding windows of an IMU stream with a model trained in this project (athlos train) and writes the activities as predicted annotations with confidence: consecutive windows of one class merge into one interval and the intervals cover the whole stream. A model trained on detected events (--segmentation events:impact or events:tackle) runs its detector and writes one annotation per event that is not classified as null. A model with interaction features (athlos train --interaction) also reads the other athletes&apos; IMU and positions streams of the input&apos;s recording (athlete and team attributes, as simulate-rugby writes them).</source>
+        <translation>Klassifiziert gleitende Fenster eines IMU-Streams mit einem in diesem Projekt trainierten Modell (athlos train) und schreibt die Aktivitäten als vorhergesagte Annotationen mit Konfidenz: aufeinanderfolgende Fenster einer Klasse werden zu einem Intervall zusammengefasst, und die Intervalle decken den ganzen Stream ab. Ein auf erkannten Ereignissen trainiertes Modell (--segmentation events:impact oder events:tackle) führt seinen Detektor aus und schreibt je Ereignis, das nicht als null klassifiziert wird, eine Annotation. Ein Modell mit Interaktionsmerkmalen (athlos train --interaction) liest zusätzlich die IMU- und Positions-Streams der anderen Athleten in der Aufnahme des Eingangs (Attribute athlete und team, wie simulate-rugby sie schreibt).</translation>
     </message>
 </context>
 <context>
@@ -839,10 +839,6 @@
         <translation>Driftreduktion (Gelenke)</translation>
     </message>
     <message>
-        <source>Reduces the orientation drift of body-worn sensors after the recording (Fasel 2017 ch. 2, 5, 6): inclination at rest instants spread by SLERP between them, then joint drift reduction — two segments linked by a joint must see the same joint-centre acceleration; sensor-to-joint vectors by Nelder–Mead, the drift between the two virtual accelerations estimated over ±1.25 s windows, corrected from the sacrum to the thighs, shanks and feet and to the sternum, then a second pass on horizontal components for the azimuth. Inputs: (orientation, imu) per segment in the order of `segments`. Velocity resets for foot/ski sensors are not done.</source>
-        <translation>Reduziert die Orientierungsdrift am Körper getragener Sensoren nach der Aufnahme (Fasel 2017 Kap. 2, 5, 6): Neigung an Ruhezeitpunkten, dazwischen per SLERP verteilt, dann Gelenk-Driftreduktion — zwei durch ein Gelenk verbundene Segmente müssen dieselbe Gelenkzentrumsbeschleunigung sehen; Sensor-Gelenk-Vektoren per Nelder–Mead, die Drift zwischen den beiden virtuellen Beschleunigungen über Fenster von ±1,25 s geschätzt, korrigiert vom Kreuzbein zu Oberschenkeln, Unterschenkeln und Füßen und zum Brustbein, dann ein zweiter Durchgang auf den horizontalen Komponenten für das Azimut. Eingaben: (orientation, imu) je Segment in der Reihenfolge von `segments`. Geschwindigkeitsrücksetzungen für Fuß-/Skisensoren werden nicht durchgeführt.</translation>
-    </message>
-    <message>
         <source>Segment of each input pair, in order; the first must be sacrum. Links: sacrum → sternum, sacrum → &lt;side&gt;-thigh → &lt;side&gt;-shank → &lt;side&gt;-foot.</source>
         <translation>Segment jedes Eingabepaars, der Reihe nach; das erste muss sacrum sein. Verbindungen: sacrum → sternum, sacrum → &lt;side&gt;-thigh → &lt;side&gt;-shank → &lt;side&gt;-foot.</translation>
     </message>
@@ -921,6 +917,14 @@
     <message>
         <source>Corrected orientation of this segment.</source>
         <translation>Korrigierte Orientierung dieses Segments.</translation>
+    </message>
+    <message>
+        <source>Reduces the orientation drift of body-worn sensors after the recording (Fasel 2017 ch. 2, 5, 6): inclination at rest instants spread by SLERP between them, then joint drift reduction — two segments linked by a joint must see the same joint-centre acceleration; sensor-to-joint vectors by Nelder–Mead, the drift between the two virtual accelerations estimated over ±1.25 s windows, corrected from the sacrum to the thighs, shanks and feet and to the sternum, then a second pass on horizontal components for the azimuth. Inputs: (orientation, imu) per segment in the order of `segments`. Velocity resets for foot/ski sensors: velocity-reset, on any of the outputs.</source>
+        <translation>Verringert nach der Aufnahme die Orientierungsdrift körpergetragener Sensoren (Fasel 2017 Kap. 2, 5, 6): Neigung in Ruhemomenten, per SLERP dazwischen verteilt, dann Gelenk-Driftreduktion — zwei über ein Gelenk verbundene Segmente müssen dieselbe Gelenkzentrumsbeschleunigung sehen; Sensor-Gelenk-Vektoren per Nelder–Mead, die Drift zwischen den beiden virtuellen Beschleunigungen über ±1,25-s-Fenster geschätzt, korrigiert vom Sakrum zu Oberschenkeln, Unterschenkeln und Füßen sowie zum Sternum, danach ein zweiter Durchgang auf den horizontalen Komponenten für den Azimut. Eingänge: (orientation, imu) je Segment in der Reihenfolge von `segments`. Geschwindigkeits-Resets für Fuß-/Skisensoren: velocity-reset, auf jedem der Ausgänge.</translation>
+    </message>
+    <message>
+        <source>The joint heading is fitted on samples whose horizontal ã exceed azimuth_min_norm (Eqs. 6.12–6.13); below this weighted mean resultant length of their heading differences (circular statistics, Mardia &amp; Jupp 2000; 0.5 ≈ 68° circular SD), or with fewer samples than a window needs, the heading is unobservable and the joint is left uncorrected (attribute heading_aligned=false: align it with joint-angles heading=align-start).</source>
+        <translation>Die Gelenk-Kursrichtung wird an Samples angepasst, deren horizontales ã azimuth_min_norm übersteigt (Gl. 6.12–6.13); unterhalb dieser gewichteten mittleren resultierenden Länge ihrer Kursdifferenzen (zirkuläre Statistik, Mardia &amp; Jupp 2000; 0,5 ≈ 68° zirkuläre Standardabweichung) oder mit weniger Samples, als ein Fenster braucht, ist die Kursrichtung nicht beobachtbar und das Gelenk bleibt unkorrigiert (Attribut heading_aligned=false: mit joint-angles heading=align-start ausrichten).</translation>
     </message>
 </context>
 <context>
@@ -1516,6 +1520,89 @@
     <message>
         <source>True mounts (segment, qw..qz).</source>
         <translation>Wahre Montagen (segment, qw..qz).</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::inertial::VelocityResetProcessor</name>
+    <message>
+        <source>Velocity resets (foot or ski sensor)</source>
+        <translation>Geschwindigkeits-Resets (Fuß- oder Skisensor)</translation>
+    </message>
+    <message>
+        <source>Velocity and position of a foot- or ski-mounted sensor in the earth frame (Fasel 2017 ch. 2–4): zero-velocity phases found by gyroscope and accelerometer energy (the foot&apos;s stance; for cross-country skiing the thrust, where the ski stands still on the snow, refined by speed &lt; 0.1 m/s and inertial acceleration &lt; 1 m/s²), the inclination reset at each phase and spread by SLERP, gravity removed, the acceleration integrated, the velocity set to zero in each phase and the linear drift between phases removed. Inputs: orientation and IMU of the same sensor. Outputs: x, y, z, vx, vy, vz (NaN before the first and after the last phase) and the phases as a table (&lt;output&gt;-zero-velocity).</source>
+        <translation>Geschwindigkeit und Position eines am Fuß oder Ski montierten Sensors im Erdsystem (Fasel 2017 Kap. 2–4): Nullgeschwindigkeitsphasen über Gyroskop- und Beschleunigungsenergie gefunden (die Standphase des Fußes; beim Skilanglauf der Abstoß, in dem der Ski auf dem Schnee stillsteht, verfeinert über Geschwindigkeit &lt; 0,1 m/s und Inertialbeschleunigung &lt; 1 m/s²), die Neigung in jeder Phase zurückgesetzt und per SLERP verteilt, die Schwerkraft entfernt, die Beschleunigung integriert, die Geschwindigkeit in jeder Phase auf null gesetzt und die lineare Drift zwischen den Phasen entfernt. Eingänge: Orientierung und IMU desselben Sensors. Ausgänge: x, y, z, vx, vy, vz (NaN vor der ersten und nach der letzten Phase) und die Phasen als Tabelle (&lt;output&gt;-zero-velocity).</translation>
+    </message>
+    <message>
+        <source>foot: stance (mean |ω| &lt; 2 rad/s and acceleration spread &lt; 1 m/s² over 0.1 s, as measured on gaitmap&apos;s real walk); xc-ski: the thrust phase of the diagonal stride (|ω| &lt; 0.2 rad/s, |‖a‖ − g| &lt; 1 m/s² over 0.04 s for ≥ 0.08 s, then refined by speed and acceleration, Fasel 2017 ch. 3 Table 3.1). The parameters below override the mode&apos;s values.</source>
+        <translation>foot: Standphase (mittleres |ω| &lt; 2 rad/s und Streuung der Beschleunigung &lt; 1 m/s² über 0,1 s, gemessen am realen Gehen von gaitmap); xc-ski: die Abstoßphase des Diagonalschritts (|ω| &lt; 0,2 rad/s, |‖a‖ − g| &lt; 1 m/s² über 0,04 s für ≥ 0,08 s, dann über Geschwindigkeit und Beschleunigung verfeinert, Fasel 2017 Kap. 3 Tabelle 3.1). Die Parameter unten überschreiben die Werte des Modus.</translation>
+    </message>
+    <message>
+        <source>Centred moving mean of the detector signals (mode).</source>
+        <translation>Zentrierter gleitender Mittelwert der Detektorsignale (Modus).</translation>
+    </message>
+    <message>
+        <source>Zero velocity: mean gyroscope norm below (mode).</source>
+        <translation>Nullgeschwindigkeit: mittlere Gyroskopnorm unter (Modus).</translation>
+    </message>
+    <message>
+        <source>Zero velocity: mean |‖a‖ − 9.81 m/s²| below, 0 = not used (mode).</source>
+        <translation>Nullgeschwindigkeit: mittleres |‖a‖ − 9,81 m/s²| unter, 0 = nicht verwendet (Modus).</translation>
+    </message>
+    <message>
+        <source>Zero velocity: spread of the acceleration vector over the window below, 0 = not used (mode; the accelerometer term of Skog et al. 2010&apos;s SHOE detector).</source>
+        <translation>Nullgeschwindigkeit: Streuung des Beschleunigungsvektors über das Fenster unter, 0 = nicht verwendet (Modus; der Beschleunigungsterm des SHOE-Detektors von Skog et al. 2010).</translation>
+    </message>
+    <message>
+        <source>Shortest zero-velocity phase (mode).</source>
+        <translation>Kürzeste Nullgeschwindigkeitsphase (Modus).</translation>
+    </message>
+    <message>
+        <source>Phases closer than this are merged (mode: 0.1 s foot, 0 xc-ski).</source>
+        <translation>Näher beieinander liegende Phasen werden zusammengefasst (Modus: 0,1 s foot, 0 xc-ski).</translation>
+    </message>
+    <message>
+        <source>Central share of each phase whose mean integrated velocity is the drift (Fasel 2017 ch. 4: the central 50 %).</source>
+        <translation>Zentraler Anteil jeder Phase, dessen mittlere integrierte Geschwindigkeit die Drift ist (Fasel 2017 Kap. 4: die zentralen 50 %).</translation>
+    </message>
+    <message>
+        <source>Reset the inclination at each phase from the accelerometer and spread it by SLERP (Fasel 2017 Eq. 2.7) before removing gravity.</source>
+        <translation>Die Neigung in jeder Phase aus dem Beschleunigungsmesser zurücksetzen und per SLERP verteilen (Fasel 2017 Gl. 2.7), bevor die Schwerkraft entfernt wird.</translation>
+    </message>
+    <message>
+        <source>Between phases, carry the input orientation of the previous phase by the gyroscope and spread the mismatch at the next (Fasel 2017 ch. 3: integration of the angular velocity between thrusts); an online filter&apos;s inclination is pulled by the accelerations in between.</source>
+        <translation>Zwischen den Phasen die Eingangsorientierung der vorigen Phase mit dem Gyroskop fortführen und die Abweichung bei der nächsten verteilen (Fasel 2017 Kap. 3: Integration der Winkelgeschwindigkeit zwischen Abstößen); die Neigung eines Online-Filters wird von den Beschleunigungen dazwischen verzogen.</translation>
+    </message>
+    <message>
+        <source>Gravity removed; empty = the mean accelerometer norm at the zero-velocity phases.</source>
+        <translation>Entfernte Schwerkraft; leer = die mittlere Beschleunigungsnorm in den Nullgeschwindigkeitsphasen.</translation>
+    </message>
+    <message>
+        <source>Grow each phase while the corrected speed and the inertial acceleration stay below zero_speed and zero_acc (Fasel 2017 ch. 3); on in xc-ski mode.</source>
+        <translation>Jede Phase erweitern, solange die korrigierte Geschwindigkeit und die Inertialbeschleunigung unter zero_speed und zero_acc bleiben (Fasel 2017 Kap. 3); im Modus xc-ski an.</translation>
+    </message>
+    <message>
+        <source>Refinement: speed of a still ski (0.1 m/s, Fasel 2017 ch. 3–4).</source>
+        <translation>Verfeinerung: Geschwindigkeit eines stehenden Skis (0,1 m/s, Fasel 2017 Kap. 3–4).</translation>
+    </message>
+    <message>
+        <source>Refinement: inertial acceleration of a still ski (Fasel 2017 Table 3.1).</source>
+        <translation>Verfeinerung: Inertialbeschleunigung eines stehenden Skis (Fasel 2017 Tabelle 3.1).</translation>
+    </message>
+    <message>
+        <source>Orientation (qw..qz, sensor → earth) of the foot or ski sensor, on the IMU&apos;s time axis.</source>
+        <translation>Orientierung (qw..qz, Sensor → Erde) des Fuß- oder Skisensors auf der Zeitachse der IMU.</translation>
+    </message>
+    <message>
+        <source>IMU stream (acc_x..z in m/s², gyr_x..z in rad/s) of the same sensor.</source>
+        <translation>IMU-Stream (acc_x..z in m/s², gyr_x..z in rad/s) desselben Sensors.</translation>
+    </message>
+    <message>
+        <source>Position x, y, z (m) and velocity vx, vy, vz (m/s) in the orientation&apos;s earth frame, origin at the first zero-velocity phase; zero_velocity 1 inside a phase.</source>
+        <translation>Position x, y, z (m) und Geschwindigkeit vx, vy, vz (m/s) im Erdsystem der Orientierung, Ursprung in der ersten Nullgeschwindigkeitsphase; zero_velocity 1 innerhalb einer Phase.</translation>
+    </message>
+    <message>
+        <source>One row per zero-velocity phase: start, end, duration (s), drift_x..z (m/s, the integrated velocity removed there), tilt (rad, the inclination reset).</source>
+        <translation>Eine Zeile je Nullgeschwindigkeitsphase: start, end, duration (s), drift_x..z (m/s, die dort entfernte integrierte Geschwindigkeit), tilt (rad, der Neigungs-Reset).</translation>
     </message>
 </context>
 <context>
@@ -4869,6 +4956,22 @@
     <message>
         <source>Features (mutual information):</source>
         <translation>Merkmale (Transinformation):</translation>
+    </message>
+    <message>
+        <source>A stream name, or a pattern such as sim-imu-* (every matching stream of a recording is trained on: one per player of a team session).</source>
+        <translation>Ein Stream-Name oder ein Muster wie sim-imu-* (jeder passende Stream einer Aufnahme wird trainiert: einer je Spieler einer Team-Session).</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>Multi-athlete interaction features of detected events (athlos train --interaction k=K): the player&apos;s torso pitch and speed and the distance, speed and torso pitch of the K nearest opponents, from the other athletes&apos; IMU and positions streams of the recording (athlete and team attributes).</source>
+        <translation>Multi-Athleten-Interaktionsmerkmale erkannter Ereignisse (athlos train --interaction k=K): Rumpfneigung und Geschwindigkeit des Spielers sowie Abstand, Geschwindigkeit und Rumpfneigung der K nächsten Gegner, aus den IMU- und Positions-Streams der anderen Athleten der Aufnahme (Attribute athlete und team).</translation>
+    </message>
+    <message>
+        <source>Nearest opponents (interaction features):</source>
+        <translation>Nächste Gegner (Interaktionsmerkmale):</translation>
     </message>
 </context>
 <context>
