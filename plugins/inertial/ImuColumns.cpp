@@ -28,4 +28,25 @@ Expected<ImuColumns> imuColumns(const InputSamples& input, bool requireMag) {
     return c;
 }
 
+Expected<std::vector<math::Quat>> orientationQuaternions(const InputSamples& s) {
+    int col[4];
+    int i = 0;
+    for (const char* name : {"qw", "qx", "qy", "qz"}) {
+        col[i] = s.info().columnIndex(QLatin1String(name));
+        if (col[i] < 0)
+            return s.error(
+                QStringLiteral("no column '%1' (an orientation stream needs qw, qx, qy, qz)").arg(QLatin1String(name)));
+        ++i;
+    }
+    const StreamData& d = *s.data;
+    std::vector<math::Quat> q(d.rows());
+    for (std::size_t k = 0; k < d.rows(); ++k) {
+        q[k] = math::Quat(d.at(k, col[0]), d.at(k, col[1]), d.at(k, col[2]), d.at(k, col[3]));
+        if (!q[k].coeffs().allFinite() || q[k].norm() < 1e-9)
+            return s.error(QStringLiteral("row %1 holds no valid quaternion").arg(k));
+        q[k].normalize();
+    }
+    return q;
+}
+
 }  // namespace athlos::inertial

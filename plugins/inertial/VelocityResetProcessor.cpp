@@ -48,26 +48,6 @@ Expected<VelocityReset::Params> makeParams(const RunContext& c) {
     return p;
 }
 
-Expected<std::vector<math::Quat>> readQuaternions(const InputSamples& s) {
-    int col[4];
-    int i = 0;
-    for (const char* name : {"qw", "qx", "qy", "qz"}) {
-        col[i] = s.info().columnIndex(QLatin1String(name));
-        if (col[i] < 0)
-            return s.error(
-                QStringLiteral("no column '%1' (an orientation stream needs qw, qx, qy, qz)").arg(QLatin1String(name)));
-        ++i;
-    }
-    const StreamData& d = *s.data;
-    std::vector<math::Quat> q(d.rows());
-    for (std::size_t k = 0; k < d.rows(); ++k) {
-        q[k] = math::Quat(d.at(k, col[0]), d.at(k, col[1]), d.at(k, col[2]), d.at(k, col[3]));
-        if (!q[k].coeffs().allFinite() || q[k].norm() < 1e-9)
-            return s.error(QStringLiteral("row %1 holds no valid quaternion").arg(k));
-        q[k].normalize();
-    }
-    return q;
-}
 }  // namespace
 
 QString VelocityResetProcessor::name() const { return tr("Velocity resets (foot or ski sensor)"); }
@@ -157,7 +137,7 @@ Expected<std::vector<ProcessorOutput>> VelocityResetProcessor::run(const RunCont
     if (!o) return o.error();
     auto imu = context.samples(1);
     if (!imu) return imu.error();
-    auto q = readQuaternions(*o);
+    auto q = orientationQuaternions(*o);
     if (!q) return q.error();
     auto columns = imuColumns(*imu, false);
     if (!columns) return columns.error();
