@@ -4,6 +4,7 @@
 #include <QJsonArray>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 
 namespace athlos::activity {
@@ -55,7 +56,13 @@ cv::Ptr<DTrees> DetectionTree::trainTree(const std::vector<Sample>& samples, con
     // MetaCost (Domingos 1999), step 1–2: class probabilities of every training candidate from a bagged
     // ensemble of the same trees (OpenCV's RTrees with both features active at every split is plain
     // bagging), averaged over all members.
-    cv::theRNG().state = 0x5eed;  // bootstrap samples the same on every run
+    // Bootstrap samples the same on every run; the thread's generator is given back as it was.
+    const std::uint64_t callerState = cv::theRNG().state;
+    cv::theRNG().state = 0x5eed;
+    struct Restore {
+        std::uint64_t state;
+        ~Restore() { cv::theRNG().state = state; }
+    } restore{callerState};
     auto bag = cv::ml::RTrees::create();
     bag->setMaxDepth(params.maxDepth);
     bag->setMinSampleCount(params.minSampleCount);
