@@ -116,6 +116,11 @@ Expected<std::vector<ProcessorOutput>> DetectScrumsProcessor::run(const RunConte
     for (std::size_t i = 0; i < plan->imus.size(); ++i) {
         if (c.isCancelled()) return cancelledError();
         const Stream& s = *plan->imus[i];
+        // Every stream of the session is an input of the result: recorded so provenance lists it and
+        // `athlos batch` sees it change (the declared input is one of them; recordRead skips it).
+        const QString rec = ItemPath::parse(c.inputPath(0)).recording;
+        c.recordRead(rec + u'/' + s.name(), s.info().contentHash);
+        if (const Stream* pos = plan->positions[i]) c.recordRead(rec + u'/' + pos->name(), pos->info().contentHash);
         auto data = s.data();
         if (!data) return c.inputError(0, QStringLiteral("stream '%1': %2").arg(s.name(), data.message()));
         auto pitch = TorsoPitch::compute(s.info(), **data, plan->pitch);

@@ -7,8 +7,10 @@
 #include "tools/eval/ScrumEvaluation.h"
 
 #include "core/processing/OutputStreams.h"
+#include "core/processing/PipelineProvenance.h"
 #include "core/processing/ProcessorRunner.h"
 
+#include <QJsonArray>
 #include <QTemporaryDir>
 #include <cmath>
 #include <gtest/gtest.h>
@@ -160,6 +162,31 @@ TEST(DetectScrumsProcessor, SimulatedMatchEndToEnd) {
         EXPECT_NEAR(detected[i].tStart, truth[i].tStart, 1.0);
         EXPECT_NEAR(detected[i].tEnd, truth[i].tEnd, 1.0);
     }
+
+    // Every player's IMU and positions are inputs of the result (provenance; athlos batch's skip rule).
+    const QJsonObject runs =
+        project->recording(QStringLiteral("match"))->metadata.value(QStringLiteral("annotation_provenance")).toObject();
+    const Provenance provenance = Provenance::fromJson(runs.value(QStringLiteral("match/scrums")).toObject());
+    EXPECT_EQ(provenance.inputs.size(), 28u);
+    EXPECT_EQ(provenance.inputs.front().name, QStringLiteral("match/sim-imu-home-01"));
+    const QJsonObject pipeline{
+        {QStringLiteral("steps"),
+         QJsonArray{QJsonObject{{QStringLiteral("processor"), detect.id()},
+                                {QStringLiteral("input"), QStringLiteral("match/sim-imu-home-01")},
+                                {QStringLiteral("output"), QStringLiteral("match/scrums")}}}}};
+    auto done = checkPipelineDone(*project, pipeline);
+    ASSERT_TRUE(done.ok()) << qPrintable(done.message());
+    EXPECT_TRUE(done->done) << qPrintable(done->reason);
+    Stream& other = project->recording(QStringLiteral("match"))->streams.at(QStringLiteral("sim-imu-away-03"));
+    auto otherData = other.data();
+    ASSERT_TRUE(otherData.ok());
+    StreamData changed = **otherData;
+    changed.at(0, 0) += 1.0;
+    project->putStream(QStringLiteral("match/sim-imu-away-03"), Stream(other.info(), std::move(changed)));
+    done = checkPipelineDone(*project, pipeline);
+    ASSERT_TRUE(done.ok()) << qPrintable(done.message());
+    EXPECT_FALSE(done->done);
+    EXPECT_TRUE(done->reason.contains(QStringLiteral("match/sim-imu-away-03"))) << qPrintable(done->reason);
 
     // Fewer IMU streams than averaged players is refused with the parameter named.
     auto refused = runProcessor(*project, detect,
