@@ -314,6 +314,12 @@ Expected<std::vector<ProcessorOutput>> BodyComProcessor::run(const RunContext& c
     auto planned = makePlan(context);
     if (!planned) return planned.error();
     const Plan& plan = *planned;
+    // The sensor and antenna streams the body model names are inputs of the result: recorded so provenance
+    // lists them and `athlos batch` sees them change.
+    for (int s = 0; s < kSegments; ++s)
+        if (plan.stream[s]) context.recordRead(plan.model.sensor[s], plan.stream[s]->info().contentHash);
+    if (plan.antenna)
+        context.recordRead(plan.model.position[plan.model.antennaSegment()], plan.antenna->info().contentHash);
     const BodyCom com(plan.params);
     const StreamData& axis = *plan.data[0];
     const std::size_t n = axis.rows();

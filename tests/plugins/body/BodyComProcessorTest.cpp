@@ -100,6 +100,13 @@ TEST(BodyComProcessor, TrueOrientationsEndToEndAndRefusals) {
                    .squaredNorm();
     }
     EXPECT_LT(std::sqrt(asq / double((*absolute)->rows())), 0.08);
+    // The eight orientation streams and the antenna stream the body model names are inputs of the result
+    // (provenance, athlos batch's skip rule), after the four declared inputs.
+    const auto& inputs = project->stream("ski/com")->info().provenance.inputs;
+    ASSERT_EQ(inputs.size(), 4u + 8u + 1u);
+    EXPECT_EQ(inputs[4].name, QStringLiteral("ski/sacrum-orientation"));
+    EXPECT_EQ(inputs[4].hash, project->stream("ski/sacrum-orientation")->info().contentHash);
+    EXPECT_EQ(inputs.back().name, QStringLiteral("ski/gnss"));
     // Without the sensor-to-joint vectors the table's (different) segment lengths are used: a larger error.
     ASSERT_TRUE(run(*project, com, {"ski/body", "ski/imu-right-mounts", "ski/imu-left-mounts"}, "ski/com-table"));
     auto table = project->stream("ski/com-table")->data();
