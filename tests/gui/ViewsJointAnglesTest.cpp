@@ -23,12 +23,12 @@ constexpr double kRad = std::numbers::pi / 180.0;
 
 // Flexion 30 + 20 sin t, abduction 2 cos t, rotation 5 sin 2t (deg); the estimate adds a constant
 // error (1, −0.5, 2) deg, so the RMSE per angle is exactly that error.
-Stream angleStream(bool reference, double rate = 50.0, int rows = 500) {
+Stream angleStream(bool reference, double rate = 50.0, int rows = 500, const char* side = "right") {
     StreamInfo info;
     info.kind = QStringLiteral("joint-angles");
     info.frame = QStringLiteral("segment");
     info.columns = {{"flexion", "rad"}, {"abduction", "rad"}, {"rotation", "rad"}};
-    info.attributes = QJsonObject{{"joint", "knee"}, {"side", "right"}};
+    info.attributes = QJsonObject{{"joint", "knee"}, {"side", side}};
     if (reference) info.attributes.insert("reference", true);
     StreamData d(std::size_t(rows), 3);
     const double err[3] = {reference ? 0.0 : 1.0, reference ? 0.0 : -0.5, reference ? 0.0 : 2.0};
@@ -146,6 +146,30 @@ private slots:
         for (int y = 0; y < image.height(); y += 4)
             for (int x = 0; x < image.width(); x += 4) colours.insert(image.pixel(x, y));
         QVERIFY(colours.size() > 10);
+    }
+
+    void overlaysTheOtherSide() {
+        auto project = testing::makeProject(dir_.filePath("o.athlos"));
+        addTrial(*project);
+        QVERIFY(JointAnglesView::otherSideFor(*project, "knee/angles").isEmpty());
+        project->putStream("knee/left-angles", angleStream(false, 50.0, 400, "left"));
+        project->putStream("knee/left-reference", angleStream(true, 50.0, 400, "left"));
+        project->putStream("other/left-angles", angleStream(false, 50.0, 400, "left"));  // another recording
+        QCOMPARE(JointAnglesView::otherSideFor(*project, "knee/angles"), QStringLiteral("knee/left-angles"));
+        QCOMPARE(JointAnglesView::otherSideFor(*project, "knee/left-angles"), QStringLiteral("knee/angles"));
+        JointAnglesView view(project.get());
+        QVERIFY(view.setStream("knee/angles").ok());
+        QCOMPARE(view.otherSide(), QStringLiteral("knee/left-angles"));
+        for (int i = 0; i < 3; ++i) {
+            QCOMPARE(view.plot(i)->graphCount(), 3);  // estimate, reference, other side
+            QCOMPARE(view.plot(i)->graph(2)->dataCount(), 400);
+            QCOMPARE(view.plot(i)->graph(2)->name(), QStringLiteral("left knee"));
+        }
+        view.setOtherSideShown(false);
+        QVERIFY(view.otherSide().isEmpty());
+        QCOMPARE(view.plot(0)->graphCount(), 2);
+        view.setOtherSideShown(true);
+        QCOMPARE(view.plot(0)->graphCount(), 3);
     }
 
 private:

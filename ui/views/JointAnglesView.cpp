@@ -8,6 +8,7 @@
 #include "ui/Workspace.h"
 #include "ui/WorkspaceNotifier.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QDockWidget>
@@ -90,6 +91,11 @@ JointAnglesView::JointAnglesView(const Project* project, QWidget* parent) : QWid
     auto* controls = new QHBoxLayout;
     controls->addWidget(new QLabel(tr("Stream:"), this));
     controls->addWidget(streamCombo_, 1);
+    otherSideBox_ = new QCheckBox(tr("Other side"), this);
+    otherSideBox_->setObjectName(QStringLiteral("otherSideBox"));
+    otherSideBox_->setToolTip(tr("Overlay the same joint of the other side (left/right comparison)"));
+    otherSideBox_->setChecked(true);
+    controls->addWidget(otherSideBox_);
     layout->addLayout(controls);
     for (int i = 0; i < 3; ++i) {
         auto* plot = new QCustomPlot(this);
@@ -116,6 +122,7 @@ JointAnglesView::JointAnglesView(const Project* project, QWidget* parent) : QWid
     layout->addWidget(readout_);
     layout->addWidget(note_);
     connect(streamCombo_, &QComboBox::currentTextChanged, this, &JointAnglesView::refresh);
+    connect(otherSideBox_, &QCheckBox::toggled, this, &JointAnglesView::refresh);
     refresh();
 }
 
@@ -143,6 +150,29 @@ QString JointAnglesView::referenceFor(const Project& project, const QString& pat
     }
     return {};
 }
+
+QString JointAnglesView::otherSideFor(const Project& project, const QString& path) {
+    const Stream* stream = project.stream(path);
+    const ItemPath item = ItemPath::parse(path);
+    const Recording* recording = project.recording(item.recording);
+    if (!stream || !recording) return {};
+    const QJsonObject& a = stream->info().attributes;
+    const QString side = a.value(QStringLiteral("side")).toString();
+    const QString other = side == QLatin1String("left")    ? QStringLiteral("right")
+                          : side == QLatin1String("right") ? QStringLiteral("left")
+                                                           : QString();
+    if (other.isEmpty()) return {};
+    for (const auto& [name, candidate] : recording->streams) {
+        const QJsonObject& b = candidate.info().attributes;
+        if (isJointAngles(candidate) && !isReference(candidate) &&
+            b.value(QStringLiteral("joint")) == a.value(QStringLiteral("joint")) &&
+            b.value(QStringLiteral("side")).toString() == other)
+            return item.recording + QLatin1Char('/') + name;
+    }
+    return {};
+}
+
+void JointAnglesView::setOtherSideShown(bool shown) { otherSideBox_->setChecked(shown); }
 
 Status JointAnglesView::setStream(const QString& path) {
     if (streamCombo_->findText(path) < 0)
@@ -174,6 +204,7 @@ QString JointAnglesView::readoutText() const { return readout_->text(); }
 void JointAnglesView::refresh() {
     rmse_.clear();
     reference_.clear();
+    otherSide_.clear();
     t_.clear();
     for (auto& d : deg_) d.clear();
     for (QCustomPlot* plot : plots_) plot->clearGraphs();
@@ -215,6 +246,19 @@ void JointAnglesView::refresh() {
             QPen pen(PlotStyle::seriesColor(1), 1.2, Qt::DashLine);
             refGraph->setPen(pen);
             refGraph->setData(thinned(ref.t, rs), thinned(ref.deg[std::size_t(i)], rs), true);
+        }
+        if (otherSideBox_->isChecked()) otherSide_ = otherSideFor(*project_, streamCombo_->currentText());
+        if (const Stream* o = otherSide_.isEmpty() ? nullptr : project_->stream(otherSide_)) {
+            const Angles other = readAngles(*o);
+            const QJsonObject b = o->info().attributes;
+            const std::size_t os = other.t.size() / kMaxPoints + 1;
+            for (int i = 0; i < 3; ++i) {
+                QCPGraph* graph = plots_[std::size_t(i)]->addGraph();
+                graph->setName(tr("%1 %2").arg(b.value(QStringLiteral("side")).toString(),
+                                               b.value(QStringLiteral("joint")).toString()));
+                graph->setPen(QPen(PlotStyle::seriesColor(2), 1.2));
+                graph->setData(thinned(other.t, os), thinned(other.deg[std::size_t(i)], os), true);
+            }
         }
         note_->setText(reference_.isEmpty() ? tr("No reference angles for this joint in the recording.")
                                             : tr("Reference: %1").arg(reference_));
