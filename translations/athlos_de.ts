@@ -75,6 +75,10 @@
         <source>Functional calibration…</source>
         <translation>Funktionelle Kalibrierung…</translation>
     </message>
+    <message>
+        <source>Stride and cycle table…</source>
+        <translation>Schritt- und Zyklustabelle…</translation>
+    </message>
 </context>
 <context>
     <name>athlos::activity::ClassifyActionsProcessor</name>
@@ -3049,6 +3053,36 @@
     </message>
 </context>
 <context>
+    <name>athlos::ui::CycleTableView</name>
+    <message>
+        <source>Table</source>
+        <translation>Tabelle</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a table with start and end columns</source>
+        <translation>&apos;%1&apos; ist keine Tabelle mit Spalten start und end</translation>
+    </message>
+    <message>
+        <source>No table with start and end columns in this project (run gait-parameters, xc-skiing-cycles or velocity-reset first).</source>
+        <translation>Keine Tabelle mit Spalten start und end in diesem Projekt (zuerst gait-parameters, xc-skiing-cycles oder velocity-reset ausführen).</translation>
+    </message>
+    <message>
+        <source>mean</source>
+        <translation>Mittel</translation>
+    </message>
+    <message>
+        <source>SD</source>
+        <translation>SA</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n row(s); the row under the cursor is selected, a click shows its cycle</source>
+        <translation>
+            <numerusform>%n Zeile; die Zeile unter dem Cursor ist ausgewählt, ein Klick zeigt ihren Zyklus</numerusform>
+            <numerusform>%n Zeilen; die Zeile unter dem Cursor ist ausgewählt, ein Klick zeigt ihren Zyklus</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>athlos::ui::FunctionalCalibrationWizard</name>
     <message>
         <source>Functional calibration</source>
@@ -3626,6 +3660,14 @@
     <message>
         <source>t = %1 s: flexion %2°, abduction %3°, rotation %4°</source>
         <translation>t = %1 s: Flexion %2°, Abduktion %3°, Rotation %4°</translation>
+    </message>
+    <message>
+        <source>Other side</source>
+        <translation>Andere Seite</translation>
+    </message>
+    <message>
+        <source>Overlay the same joint of the other side (left/right comparison)</source>
+        <translation>Dasselbe Gelenk der anderen Seite überlagern (Links-rechts-Vergleich)</translation>
     </message>
 </context>
 <context>
