@@ -12,6 +12,7 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QRegularExpression>
+#include <cmath>
 #include <cstdio>
 
 namespace athlos::cli {
@@ -65,6 +66,10 @@ int cmdImport(const QStringList& args) {
                  QStringLiteral("YYYY-MM-DD")});
     p.addOption({QStringLiteral("start"), QStringLiteral("UTC date-time of t = 0 for relative times (ISO 8601)."),
                  QStringLiteral("datetime")});
+    p.addOption({QStringLiteral("rate"),
+                 QStringLiteral("gaitmap: the sampling rate of a file whose first column is a sample index (default: "
+                                "found from the motion, said in a warning)."),
+                 QStringLiteral("HZ")});
     p.addOption(
         {QStringLiteral("labels"),
          QStringLiteral("CSV: a per-sample label column (numbers or text) that becomes annotations: runs of equal "
@@ -132,6 +137,14 @@ int cmdImport(const QStringList& args) {
         options.date = p.parser().value(QStringLiteral("date")).trimmed();
         if (!QRegularExpression(QStringLiteral("^\\d{4}-\\d{2}-\\d{2}$")).match(options.date).hasMatch())
             return fail(QStringLiteral("--date '%1': expected YYYY-MM-DD").arg(options.date), Usage);
+    }
+    if (p.parser().isSet(QStringLiteral("rate"))) {
+        bool ok = false;
+        options.rate = p.parser().value(QStringLiteral("rate")).toDouble(&ok);
+        if (!ok || !std::isfinite(options.rate) || options.rate <= 0.0 || options.rate > 1e6)
+            return fail(QStringLiteral("--rate '%1': expected a sampling rate in Hz (> 0)")
+                            .arg(p.parser().value(QStringLiteral("rate"))),
+                        Usage);
     }
     if (p.parser().isSet(QStringLiteral("start"))) {
         options.start = p.parser().value(QStringLiteral("start")).trimmed();

@@ -2,6 +2,7 @@
 
 #include "core/io/CsvImporter.h"
 #include "core/io/CsvReader.h"
+#include "core/io/ImuSamplingRate.h"
 #include "core/model/StreamKinds.h"
 #include "core/util/Units.h"
 
@@ -37,6 +38,54 @@ bool isSampleIndex(const std::vector<double>& first) {
     for (size_t i = 0; i < first.size(); ++i)
         if (first[i] != std::round(first[i]) || (i > 0 && first[i] != first[i - 1] + 1.0)) return false;
     return true;
+}
+
+// The sampling rate of a file whose first column is a sample index: the caller's, or the one of
+// kIndexRates whose gyroscope agrees best with the accelerometer (ImuSamplingRate), said in a warning.
+Expected<double> indexRate(const QString& file, const StreamData& all,
+                           const std::map<QString, std::vector<SensorColumn>>& bySensor, double given,
+                           QStringList& warnings, QString& source) {
+    source = QStringLiteral("given");
+    if (given > 0.0) return given;
+    std::vector<ImuSamplingRate::Imu> imus;
+    for (const auto& [sensor, columns] : bySensor) {
+        int at[6] = {-1, -1, -1, -1, -1, -1};
+        for (const SensorColumn& c : columns)
+            if (const qsizetype i = kAxisOrder.indexOf(c.axis); i >= 0) at[i] = int(&c - columns.data());
+        if (std::any_of(std::begin(at), std::end(at), [](int i) { return i < 0; })) continue;
+        ImuSamplingRate::Imu imu;
+        const auto value = [&](std::size_t r, int axis) {
+            const SensorColumn& c = columns[std::size_t(at[axis])];
+            return all.at(r, c.fileColumn) * c.scale + c.offset;
+        };
+        for (std::size_t r = 0; r < all.rows(); ++r) {
+            imu.acc.emplace_back(value(r, 0), value(r, 1), value(r, 2));
+            imu.gyr.emplace_back(value(r, 3), value(r, 4), value(r, 5));
+        }
+        imus.push_back(std::move(imu));
+    }
+    const std::vector<double> rates(std::begin(GaitmapImporter::kIndexRates), std::end(GaitmapImporter::kIndexRates));
+    const ImuSamplingRate estimator;
+    auto best = estimator.best(imus, rates);
+    if (!best) {
+        warnings << QStringLiteral("%1: the first column is a sample index and the rate cannot be told from the "
+                                   "motion (%2); %3 Hz assumed: give the rate with --rate")
+                        .arg(file, imus.empty() ? QStringLiteral("no sensor with acc_x…gyr_z") : best.message())
+                        .arg(GaitmapImporter::kIndexRate);
+        source = QStringLiteral("assumed");
+        return GaitmapImporter::kIndexRate;
+    }
+    QStringList others;
+    for (const auto& c : estimator.scores(imus, rates))
+        if (c.rate != best->rate) others << QStringLiteral("%1 Hz %2").arg(c.rate).arg(c.score, 0, 'f', 3);
+    warnings << QStringLiteral("%1: the first column is a sample index; sampling rate %2 Hz from the motion "
+                               "(gyroscope/accelerometer disagreement %3 against %4); give --rate to set it")
+                    .arg(file)
+                    .arg(best->rate)
+                    .arg(best->score, 0, 'f', 3)
+                    .arg(others.join(QStringLiteral(", ")));
+    source = QStringLiteral("motion");
+    return best->rate;
 }
 
 // pandas writes the names of the column levels into the index column: "sensor" / "axis".
@@ -183,12 +232,23 @@ Expected<ImportResult> GaitmapImporter::read(const QString& file, const ImportOp
     if (first.empty()) return makeError(QStringLiteral("%1: no data rows after the header").arg(file));
 
     const bool index = isSampleIndex(first);
-    all.t = first;
-    if (index)
-        for (double& t : all.t) t /= kIndexRate;
     ImportResult result;
+    all.t = first;
+    double rate = 0.0;
+    QString rateSource = QStringLiteral("time column");
+    if (index) {
+        auto r = indexRate(file, all, bySensor, options.rate, result.warnings, rateSource);
+        if (!r) return r.error();
+        rate = *r;
+    } else if (options.rate > 0.0) {
+        result.warnings << QStringLiteral("%1: the first column is time in seconds; the sampling rate %2 Hz is not used")
+                               .arg(file)
+                               .arg(options.rate);
+    }
+    if (index)
+        for (double& t : all.t) t /= rate;
     if (Status s = repairTimeOrder(all, origin, options.timeRepair, false, result.warnings); !s) return s.error();
-    const double rate = index ? kIndexRate : 1.0 / medianInterval(all.t);
+    if (!index) rate = 1.0 / medianInterval(all.t);
 
     for (const QString& sensor : order) {
         auto columns = bySensor[sensor];
@@ -204,6 +264,8 @@ Expected<ImportResult> GaitmapImporter::read(const QString& file, const ImportOp
         info.kind = QStringLiteral("imu");
         info.frame = imu->defaultFrame;
         info.attributes.insert(QStringLiteral("sampling_rate"), rate);
+        // Where the rate comes from: "time column", "given" (--rate), "motion" (ImuSamplingRate) or "assumed".
+        info.attributes.insert(QStringLiteral("sampling_rate_source"), rateSource);
         info.attributes.insert(QStringLiteral("sensor"), sensor);
         info.attributes.insert(QStringLiteral("time_column"),
                                index ? QStringLiteral("sample index") : QStringLiteral("seconds"));

@@ -9,16 +9,21 @@
 //
 // The first column (empty header, or "sensor"/"axis": the level names pandas writes for a
 // MultiIndex; a third header row with only the index name is skipped) is either a sample index or time in seconds, and the file does
-// not say which: consecutive integers (step 1) are a sample index at gaitmap's 102.4 Hz, so
-// t = index / 102.4 (sample k of a companion stride file stays at t = k / 102.4); anything else is
-// time in seconds. attributes["sampling_rate"] holds 102.4 or 1 / (median interval).
+// not say which: consecutive integers (step 1) are a sample index, anything else is time in seconds.
+// A sample index has no rate in the file, and gaitmap's recordings differ (the walk with mocap strides
+// at 102.4 Hz, the stair files and imu_sample.csv at 204.8 Hz): the rate is ImportOptions::rate
+// (`--rate`) when given, else the one of kIndexRates (51.2 · 2^k Hz, the NilsPod rates) at which the
+// gyroscope and the accelerometer agree (ImuSamplingRate), said in a warning with the scores; 102.4 Hz
+// with a warning when the motion cannot tell. t = index / rate, so sample k of a companion stride file
+// is at t = k / rate. attributes["sampling_rate"] holds that rate or 1 / (median interval).
 #include "core/io/Importer.h"
 
 namespace athlos {
 
 class GaitmapImporter final : public Importer {
 public:
-    static constexpr double kIndexRate = 102.4;  // Hz, rate of gaitmap's index-based example data
+    static constexpr double kIndexRate = 102.4;  // Hz, when an index-only file's motion cannot tell
+    static constexpr double kIndexRates[] = {51.2, 102.4, 204.8, 409.6, 819.2};  // Hz, the candidates
 
     QString format() const override { return QStringLiteral("gaitmap"); }
     QString description() const override;

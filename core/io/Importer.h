@@ -45,6 +45,8 @@ struct ImportOptions {
     std::optional<GeodeticOrigin> origin;   // the project's geodetic origin, if it has none yet (Geodesy.h)
     QString date;                           // YYYY-MM-DD: the date of clock times (hh:mm:ss) without one
     QString start;                          // ISO 8601: the UTC instant of t = 0 for relative times
+    double rate = 0.0;                      // Hz: the rate of a time column that is a sample index (gaitmap);
+                                            // 0 = found from the motion (GaitmapImporter.h)
     QJsonObject metadata;                   // merged into the target recording's metadata (athlete, ...)
 };
 

@@ -64,6 +64,7 @@ Provenance importProvenance(const Importer& importer, const QString& file, const
     if (options.origin) p.parameters.insert(QStringLiteral("origin"), options.origin->toJson());
     if (!options.date.isEmpty()) p.parameters.insert(QStringLiteral("date"), options.date);
     if (!options.start.isEmpty()) p.parameters.insert(QStringLiteral("start"), options.start);
+    if (options.rate > 0.0) p.parameters.insert(QStringLiteral("rate"), options.rate);
     p.sourceFile = QFileInfo(file).absoluteFilePath();
     p.appVersion = appVersion();
     p.time = QDateTime::currentDateTimeUtc();

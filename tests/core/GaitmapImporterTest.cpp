@@ -179,3 +179,46 @@ TEST(GaitmapImport, ErrorsNameFileLineAndColumn) {
     EXPECT_EQ(d.at(1, 1), 2.0);  // columns in canonical order: acc_z, then gyr_x
     EXPECT_DOUBLE_EQ(d.at(1, 0), 2 * 9.80665);
 }
+
+TEST(GaitmapImport, SampleIndexRateFromTheMotion) {
+    // The stair file (204.8 Hz, time in seconds) rewritten with a sample index, as pandas writes
+    // gaitmap's imu_sample.csv: the rate comes from the gyroscope/accelerometer agreement, not 102.4 Hz.
+    const Raw raw = readRaw(kStairUp);
+    QFile in(kStairUp);
+    ASSERT_TRUE(in.open(QIODevice::ReadOnly));
+    const QList<QByteArray> lines = in.readAll().trimmed().split('\n');
+    QByteArray indexed = "sensor" + lines[0] + '\n' + lines[1] + '\n';
+    for (int i = 2; i < lines.size(); ++i) indexed += QByteArray::number(i - 2) + lines[i].mid(lines[i].indexOf(',')) + '\n';
+    QTemporaryDir dir;
+    const QString path = dir.filePath("stairs_index.csv");
+    QFile out(path);
+    ASSERT_TRUE(out.open(QIODevice::WriteOnly));
+    out.write(indexed);
+    out.close();
+    auto r = importGaitmap(path);
+    ASSERT_TRUE(r.ok()) << r.message().toStdString();
+    expectMatchesRaw(*r, raw);
+    const Stream& left = std::get<Stream>(r->items[0].item);
+    EXPECT_DOUBLE_EQ(left.info().attributes["sampling_rate"].toDouble(), 204.8);
+    EXPECT_EQ(left.info().attributes["sampling_rate_source"].toString(), "motion");
+    EXPECT_DOUBLE_EQ((**left.data()).t[2048], 10.0);
+    ASSERT_EQ(r->warnings.size(), 1);
+    EXPECT_TRUE(r->warnings[0].contains("204.8 Hz from the motion")) << r->warnings[0].toStdString();
+    // The 102.4 Hz walk is still read at 102.4 Hz, now from its motion.
+    r = importGaitmap(kStride);
+    ASSERT_TRUE(r.ok()) << r.message().toStdString();
+    EXPECT_EQ(std::get<Stream>(r->items[0].item).info().attributes["sampling_rate_source"].toString(), "motion");
+    EXPECT_DOUBLE_EQ(std::get<Stream>(r->items[0].item).info().attributes["sampling_rate"].toDouble(), 102.4);
+    // A given rate wins and is recorded in provenance.
+    ImportOptions options;
+    options.format = "gaitmap";
+    options.target = "walk";
+    options.rate = 409.6;
+    r = importFile(path, options);
+    ASSERT_TRUE(r.ok()) << r.message().toStdString();
+    const Stream& given = std::get<Stream>(r->items[0].item);
+    EXPECT_DOUBLE_EQ(given.info().attributes["sampling_rate"].toDouble(), 409.6);
+    EXPECT_EQ(given.info().attributes["sampling_rate_source"].toString(), "given");
+    EXPECT_DOUBLE_EQ(given.info().provenance.parameters["rate"].toDouble(), 409.6);
+    EXPECT_DOUBLE_EQ((**given.data()).t[4096], 10.0);
+}
