@@ -396,8 +396,8 @@ std::optional<CalibrationMovement> classify(const FunctionalCalibration::Params&
         if (armSide[i] > armRate) armRate = armSide[i], armAxisToUp = armSideAxis[i];
     // Arm swings: legs and midline still (a squat or a trunk rotation carries the arms along); with arm
     // sensors only nothing tells a swing from a squat (give the intervals then).
-    const bool body = midlineRate >= 0.0 || leg[0] >= 0.0 || leg[1] >= 0.0;
-    if (body && !right && !left && armRate > params.moveRate && armAxisToUp > lateral &&
+    const bool nonArm = midlineRate >= 0.0 || leg[0] >= 0.0 || leg[1] >= 0.0;
+    if (nonArm && !right && !left && armRate > params.moveRate && armAxisToUp > lateral &&
         midlineRate < params.stillRatio * armRate)
         return CalibrationMovement::ArmSwings;
     return std::nullopt;
