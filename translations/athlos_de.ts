@@ -938,20 +938,20 @@
         <translation>Funktionelle Kalibrierung (Protokoll)</translation>
     </message>
     <message>
-        <source>Sensor-to-segment mounts from the whole functional calibration protocol in one recording: upright standing, squats, trunk rotations and hip ab/adduction per leg, found automatically (or from annotations). Gravity gives each segment&apos;s superior axis, the principal axis of the angular velocity its medio-lateral (squats) or, for the feet, antero-posterior axis (ab/adduction). Writes a segment-calibration table for joint-angles and a quality table (dispersion between repetitions, orthogonality, CMC).</source>
-        <translation>Sensor-Segment-Montagen aus dem ganzen funktionellen Kalibrierprotokoll in einer Aufnahme: aufrechtes Stehen, Kniebeugen, Rumpfrotationen und Hüft-Ab-/Adduktion je Bein, automatisch gefunden (oder aus Annotationen). Die Schwerkraft liefert die superiore Achse jedes Segments, die Hauptachse der Winkelgeschwindigkeit seine medio-laterale (Kniebeugen) oder, bei den Füßen, die antero-posteriore Achse (Ab-/Adduktion). Schreibt eine segment-calibration-Tabelle für joint-angles und eine Qualitätstabelle (Streuung zwischen Wiederholungen, Orthogonalität, CMC).</translation>
+        <source>Sensor-to-segment mounts from the whole functional calibration protocol in one recording: upright standing, squats, trunk rotations, hip ab/adduction per leg and the optional arm swings, found automatically (or from annotations). Gravity gives each segment&apos;s superior axis, the principal axis of the angular velocity its medio-lateral axis (squats: pelvis, trunk, upper back, head, thighs, shanks; arm swings: upper arms) or antero-posterior axis (ab/adduction: feet; arm swings: forearms). Writes a segment-calibration table for joint-angles and body-com and a quality table (dispersion between repetitions, orthogonality, CMC).</source>
+        <translation>Sensor-Segment-Montagen aus dem ganzen funktionellen Kalibrierprotokoll in einer Aufnahme: aufrechtes Stehen, Kniebeugen, Rumpfrotationen, Hüft-Ab-/Adduktion je Bein und die optionalen Armschwünge, automatisch gefunden (oder aus Annotationen). Die Schwerkraft liefert die superiore Achse jedes Segments, die Hauptachse der Winkelgeschwindigkeit seine medio-laterale Achse (Kniebeugen: Becken, Rumpf, oberer Rücken, Kopf, Oberschenkel, Unterschenkel; Armschwünge: Oberarme) oder antero-posteriore Achse (Ab-/Adduktion: Füße; Armschwünge: Unterarme). Schreibt eine segment-calibration-Tabelle für joint-angles und body-com und eine Qualitätstabelle (Streuung zwischen Wiederholungen, Orthogonalität, CMC).</translation>
     </message>
     <message>
-        <source>Segment of each input IMU, in input order: sacrum (pelvis), sternum (trunk), right-/left-thigh, right-/left-shank, right-/left-foot.</source>
-        <translation>Segment jeder Eingabe-IMU in der Reihenfolge der Eingaben: sacrum (Becken), sternum (Rumpf), right-/left-thigh, right-/left-shank, right-/left-foot.</translation>
+        <source>Segment of each input IMU, in input order: sacrum (pelvis, lower-back), sternum (trunk), upper-back, head, right-/left-thigh, right-/left-shank, right-/left-foot, right-/left-upper-arm, right-/left-forearm.</source>
+        <translation>Segment jeder Eingabe-IMU in der Reihenfolge der Eingaben: sacrum (Becken, lower-back), sternum (Rumpf), upper-back (oberer Rücken), head (Kopf), right-/left-thigh, right-/left-shank, right-/left-foot, right-/left-upper-arm (Oberarm), right-/left-forearm (Unterarm).</translation>
     </message>
     <message>
         <source>Movements given by hand, e.g. &apos;squats=12-24; right-abduction=40-49&apos; (s); they override the detection and the annotations.</source>
         <translation>Von Hand angegebene Bewegungen, z. B. „squats=12-24; right-abduction=40-49“ (s); sie ersetzen die Erkennung und die Annotationen.</translation>
     </message>
     <message>
-        <source>Take interval annotations of the recording labelled upright, squats, trunk-rotations, right-abduction or left-abduction as the movements.</source>
-        <translation>Intervall-Annotationen der Aufnahme mit den Bezeichnungen upright, squats, trunk-rotations, right-abduction oder left-abduction als Bewegungen übernehmen.</translation>
+        <source>Take interval annotations of the recording labelled upright, squats, trunk-rotations, right-abduction, left-abduction or arm-swings as the movements.</source>
+        <translation>Intervall-Annotationen der Aufnahme mit den Bezeichnungen upright, squats, trunk-rotations, right-abduction, left-abduction oder arm-swings als Bewegungen übernehmen.</translation>
     </message>
     <message>
         <source>Rest: every sensor&apos;s angular rate (0.5 s mean) below this (11°/s).</source>
@@ -1002,12 +1002,12 @@
         <translation>segment, qw, qx, qy, qz (Segment → Sensor), axis_share, orthogonality (rad).</translation>
     </message>
     <message>
-        <source>The right side&apos;s mounts under the names joint-angles reads: pelvis, thorax, thigh, shank, foot.</source>
-        <translation>Die Montagen der rechten Seite unter den Namen, die joint-angles liest: pelvis, thorax, thigh, shank, foot.</translation>
+        <source>The right side&apos;s mounts under the names joint-angles reads: pelvis, thorax, head, thigh, shank, foot, upper-arm, forearm.</source>
+        <translation>Die Montagen der rechten Seite unter den Namen, die joint-angles liest: pelvis, thorax, head, thigh, shank, foot, upper-arm, forearm.</translation>
     </message>
     <message>
-        <source>The left side&apos;s mounts (pelvis, thorax, thigh, shank, foot).</source>
-        <translation>Die Montagen der linken Seite (pelvis, thorax, thigh, shank, foot).</translation>
+        <source>The left side&apos;s mounts (pelvis, thorax, head, thigh, shank, foot, upper-arm, forearm).</source>
+        <translation>Die Montagen der linken Seite (pelvis, thorax, head, thigh, shank, foot, upper-arm, forearm).</translation>
     </message>
     <message>
         <source>Per segment: movement, repetitions, dispersion χ, orthogonality, cross_orthogonality (rad), cmc, begin, end (s).</source>
@@ -3093,8 +3093,8 @@
         <translation>Aufnahme und Sensoren</translation>
     </message>
     <message>
-        <source>The recording of the protocol: standing upright still (10 s), 3 squats, 3 trunk rotations and 3 hip ab/adductions per leg, standing still for a moment between movements. Choose the IMU of each segment (leave out those without a sensor). Next finds the movements and calibrates.</source>
-        <translation>Die Aufnahme des Protokolls: ruhig aufrecht stehen (10 s), 3 Kniebeugen, 3 Rumpfrotationen und 3 Hüft-Ab-/Adduktionen je Bein, zwischen den Bewegungen kurz stillstehen. Wählen Sie die IMU jedes Segments (lassen Sie die ohne Sensor weg). Weiter findet die Bewegungen und kalibriert.</translation>
+        <source>The recording of the protocol: standing upright still (10 s) with the arms hanging, 3 squats, 3 trunk rotations, 3 hip ab/adductions per leg and, for arm sensors, 3 arm swings holding a pole horizontally, standing still for a moment between movements. Choose the IMU of each segment (leave out those without a sensor). Next finds the movements and calibrates.</source>
+        <translation>Die Aufnahme des Protokolls: ruhig aufrecht stehen (10 s) mit hängenden Armen, 3 Kniebeugen, 3 Rumpfrotationen, 3 Hüft-Ab-/Adduktionen je Bein und, bei Armsensoren, 3 Armschwünge mit waagrecht gehaltenem Stock, zwischen den Bewegungen kurz stillstehen. Wählen Sie die IMU jedes Segments (lassen Sie die ohne Sensor weg). Weiter findet die Bewegungen und kalibriert.</translation>
     </message>
     <message>
         <source>Recording:</source>

@@ -76,6 +76,13 @@ public:
         block(p.trunkRotations, p.trunkRotationDuration, trunkBegin, trunkEnd);
         block(p.hipAbductions, p.hipAbductionDuration, rightBegin, rightEnd);
         block(p.hipAbductions, p.hipAbductionDuration, leftBegin, leftEnd);
+        // Arm swings: pause, grip, pause, swings, pause, let go (the grip is the arms' own movement).
+        armBegin = armEnd = c;
+        if (p.armSwings > 0) {
+            armBegin = c + p.calibrationPause + p.armGrip + p.calibrationPause;
+            armEnd = armBegin + p.armSwings * p.armSwingDuration;
+            c = armEnd + p.calibrationPause + p.armGrip;
+        }
         motionBegin = c + p.standDuration;
         motionEnd = motionBegin + p.motionDuration;
         end = motionEnd + p.standDuration;
@@ -153,6 +160,8 @@ public:
             const double u =
                 std::fmod(t - (right ? rightBegin : leftBegin), p_.hipAbductionDuration) / p_.hipAbductionDuration;
             a[right ? 1 : 4].abduction += p_.hipAbductionAmplitude * std::pow(std::sin(kPi * u), 2);
+        } else if (t > armBegin && t < armEnd) {
+            pose.phase = 7;  // the arms swing (body::simulateWholeBody); the body stands
         } else if (t > motionBegin && t < motionEnd && walking) {
             pose.phase = 2;
             const double e = window(t, motionBegin, motionEnd, 1.0);
@@ -299,6 +308,7 @@ public:
 
     double squatBegin = 0, squatEnd = 0, motionBegin = 0, motionEnd = 0, end = 0, speed = 0, ramp = 1;
     double trunkBegin = 0, trunkEnd = 0, rightBegin = 0, rightEnd = 0, leftBegin = 0, leftEnd = 0;
+    double armBegin = 0, armEnd = 0;
     bool skiing = false, walking = false;
 
 private:
@@ -345,35 +355,19 @@ BodySimulation simulateBody(const BodySimulatorParams& params) {
     sim.rightAbductionEnd = script.rightEnd;
     sim.leftAbductionBegin = script.leftBegin;
     sim.leftAbductionEnd = script.leftEnd;
+    sim.armSwingBegin = script.armBegin;
+    sim.armSwingEnd = script.armEnd;
     const double dt = 1.0 / params.rate;
     const auto n = static_cast<std::size_t>(std::floor(script.end * params.rate)) + 1;
-    std::mt19937_64 rng(params.seed);
-    std::normal_distribution<double> normal(0.0, 1.0);
-    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-    const auto draw3 = [&](auto& distribution) -> Vec3 {
-        Vec3 v;
-        for (int i = 0; i < 3; ++i) v[i] = distribution(rng);
-        return v;
-    };
-    std::array<Vec3, kBodySegments> gyrScale, accScale;
-    std::array<Eigen::Matrix3d, kBodySegments> gSens;
-    std::array<std::array<double, 9>, kBodySegments> vib;  // 3 axes × (frequency, phase, amplitude share)
+    std::array<ImuErrors, kBodySegments> errors;
+    ImuErrorSource source(params.seed, params);
     for (int s = 0; s < kBodySegments; ++s) {
         BodySensor& seg = sim.sensors[s];
         seg.mount = Script::mount(s);
-        seg.gyrBias = draw3(uniform) * params.gyrBias;
-        Vec3 d = draw3(normal);
-        seg.gyrDrift = d.normalized() * params.gyrDrift;
-        seg.accBias = draw3(uniform) * params.accBias;
-        gyrScale[s] = Vec3::Ones() + draw3(uniform) * params.gyrScale;
-        accScale[s] = Vec3::Ones() + draw3(uniform) * params.accScale;
-        for (int i = 0; i < 3; ++i) gSens[s].row(i) = draw3(uniform).transpose() * params.gSensitivity;
-        for (int i = 0; i < 3; ++i) {
-            std::uniform_real_distribution<double> f(15.0, 30.0), ph(0.0, 2.0 * kPi);
-            vib[s][3 * i] = f(rng);
-            vib[s][3 * i + 1] = ph(rng);
-            vib[s][3 * i + 2] = 0.5 + 0.5 * std::abs(uniform(rng));
-        }
+        errors[s] = source.draw();
+        seg.gyrBias = errors[s].gyrBias;
+        seg.gyrDrift = errors[s].gyrDrift;
+        seg.accBias = errors[s].accBias;
         seg.acc.resize(n);
         seg.gyr.resize(n);
         seg.sensor.resize(n);
@@ -381,10 +375,11 @@ BodySimulation simulateBody(const BodySimulatorParams& params) {
         seg.position.resize(n);
     }
     // Impacts: Poisson arrivals while skiing at speed.
-    std::vector<double> impacts;
+    std::vector<double>& impacts = sim.impacts;
     if (script.skiing && params.impactRate > 0.0) {
         std::exponential_distribution<double> gap(params.impactRate);
-        for (double t = script.motionBegin + script.ramp + gap(rng); t < script.motionEnd - script.ramp; t += gap(rng))
+        for (double t = script.motionBegin + script.ramp + gap(source.engine()); t < script.motionEnd - script.ramp;
+             t += gap(source.engine()))
             impacts.push_back(t);
     }
     // Sensor-to-joint vectors in sensor coordinates.
@@ -403,8 +398,6 @@ BodySimulation simulateBody(const BodySimulatorParams& params) {
     sim.t.resize(n);
     sim.phase.resize(n);
     const double h = 1e-3;
-    const Vec3 gravityUp(0.0, 0.0, params.gravity);
-    const double gyrDriftRamp = 20.0;  // s over which the bias changes by gyrDrift once the motion starts
     for (std::size_t k = 0; k < n; ++k) {
         const double t = double(k) * dt;
         sim.t[k] = t;
@@ -420,7 +413,7 @@ BodySimulation simulateBody(const BodySimulatorParams& params) {
         double impact = 0.0;
         for (double ti : impacts)
             if (t >= ti && t < ti + 0.01) impact = params.impactPeak * std::sin(kPi * (t - ti) / 0.01);
-        const double driftShare = smooth((t - script.motionBegin) / gyrDriftRamp);
+        const double driftShare = ImuErrorSource::driftShare(t, script.motionBegin);
         for (int s = 0; s < kBodySegments; ++s) {
             BodySensor& seg = sim.sensors[s];
             const Quat sensor = (pose.segment[s] * seg.mount.conjugate()).normalized();
@@ -428,21 +421,85 @@ BodySimulation simulateBody(const BodySimulatorParams& params) {
             seg.segment[k] = pose.segment[s];
             seg.sensor[k] = sensor;
             seg.position[k] = p0.sensor[s];
-            const Vec3 a = (pp.sensor[s] - 2.0 * p0.sensor[s] + pm.sensor[s]) / (h * h);
-            const Vec3 omega = math::rotationVectorFromQuat(previous.conjugate() * sensor) / dt;
-            Vec3 f = sensor.conjugate() * (a + gravityUp);
-            if (script.skiing) {
-                Vec3 shake;
-                for (int i = 0; i < 3; ++i)
-                    shake[i] = vib[s][3 * i + 2] * std::sin(2.0 * kPi * vib[s][3 * i] * t + vib[s][3 * i + 1]);
-                f += kTransmission[s] * (g * params.vibration * shake + sensor.conjugate() * Vec3(0, 0, impact));
-            }
-            seg.gyr[k] = gyrScale[s].cwiseProduct(omega) + seg.gyrBias + driftShare * seg.gyrDrift + gSens[s] * f +
-                         draw3(normal) * params.gyrNoise;
-            seg.acc[k] = accScale[s].cwiseProduct(f) + seg.accBias + draw3(normal) * params.accNoise;
+            const Vec3 omega = idealRate(previous, sensor, dt);
+            Vec3 f = idealSpecificForce(sensor, pm.sensor[s], p0.sensor[s], pp.sensor[s], h, params.gravity);
+            if (script.skiing)
+                f += kTransmission[s] * (g * params.vibration * ImuErrorSource::shake(errors[s], t) +
+                                         sensor.conjugate() * Vec3(0, 0, impact));
+            source.measure(errors[s], omega, f, driftShare, seg.gyr[k], seg.acc[k]);
         }
     }
     return sim;
+}
+
+BodyPose bodyPoseAt(const BodySimulatorParams& params, double t) {
+    const Script script(params);
+    const Pose pose = script.pose(t);
+    BodyPose out;
+    out.segment = pose.segment;
+    out.joint = script.points(pose).joint;
+    out.speedShare = script.velocity(t) / std::max(script.speed, 1e-9);
+    return out;
+}
+
+Vec3 idealRate(const Quat& previous, const Quat& current, double dt) {
+    return math::rotationVectorFromQuat(previous.conjugate() * current) / dt;
+}
+
+Vec3 idealSpecificForce(const Quat& sensor, const Vec3& before, const Vec3& at, const Vec3& after, double h,
+                        double gravity) {
+    const Vec3 a = (after - 2.0 * at + before) / (h * h);
+    const Vec3 gravityUp(0.0, 0.0, gravity);
+    return sensor.conjugate() * (a + gravityUp);
+}
+
+Vec3 ImuErrorSource::normal3() {
+    Vec3 v;
+    for (int i = 0; i < 3; ++i) v[i] = normal_(rng_);
+    return v;
+}
+
+Vec3 ImuErrorSource::uniform3() {
+    Vec3 v;
+    for (int i = 0; i < 3; ++i) v[i] = uniform_(rng_);
+    return v;
+}
+
+ImuErrors ImuErrorSource::draw() {
+    ImuErrors e;
+    e.gyrBias = uniform3() * params_.gyrBias;
+    const Vec3 d = normal3();
+    e.gyrDrift = d.normalized() * params_.gyrDrift;
+    e.accBias = uniform3() * params_.accBias;
+    e.gyrScale = Vec3::Ones() + uniform3() * params_.gyrScale;
+    e.accScale = Vec3::Ones() + uniform3() * params_.accScale;
+    for (int i = 0; i < 3; ++i) e.gSensitivity.row(i) = uniform3().transpose() * params_.gSensitivity;
+    for (int i = 0; i < 3; ++i) {
+        std::uniform_real_distribution<double> f(15.0, 30.0), ph(0.0, 2.0 * kPi);
+        e.vibration[3 * i] = f(rng_);
+        e.vibration[3 * i + 1] = ph(rng_);
+        e.vibration[3 * i + 2] = 0.5 + 0.5 * std::abs(uniform_(rng_));
+    }
+    return e;
+}
+
+Vec3 ImuErrorSource::shake(const ImuErrors& e, double t) {
+    Vec3 v;
+    for (int i = 0; i < 3; ++i)
+        v[i] = e.vibration[3 * i + 2] * std::sin(2.0 * kPi * e.vibration[3 * i] * t + e.vibration[3 * i + 1]);
+    return v;
+}
+
+double ImuErrorSource::driftShare(double t, double motionBegin) {
+    const double ramp = 20.0;  // s over which the bias changes by gyrDrift once the motion starts
+    return smooth((t - motionBegin) / ramp);
+}
+
+void ImuErrorSource::measure(const ImuErrors& e, const Vec3& omega, const Vec3& f, double driftShare, Vec3& gyr,
+                             Vec3& acc) {
+    gyr = e.gyrScale.cwiseProduct(omega) + e.gyrBias + driftShare * e.gyrDrift + e.gSensitivity * f +
+          normal3() * params_.gyrNoise;
+    acc = e.accScale.cwiseProduct(f) + e.accBias + normal3() * params_.accNoise;
 }
 
 }  // namespace athlos::inertial

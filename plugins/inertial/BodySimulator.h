@@ -24,6 +24,7 @@
 #include <QString>
 #include <array>
 #include <cstdint>
+#include <random>
 #include <vector>
 
 namespace athlos::inertial {
@@ -63,6 +64,13 @@ struct BodySimulatorParams {
     int hipAbductions = 0;              // ab/adductions per leg, straight knee (right leg first)
     double hipAbductionDuration = 3.0;  // s each
     double hipAbductionAmplitude = 25.0 * math::kDeg;
+    // Arm swings ×3 (optional, spec §4; Fasel §7.2.2): the lower body and trunk stand still while the
+    // arms, which this simulator does not model, swing in the sagittal plane (body::simulateWholeBody
+    // moves and instruments them). The block: a pause, `armGrip` s to grip the pole, a pause, the
+    // swings, a pause and `armGrip` s to let go.
+    int armSwings = 0;
+    double armSwingDuration = 4.0;  // s each (up to the horizontal and back)
+    double armGrip = 1.0;           // s to grip (pronate) before and let go after the swings
     double calibrationPause = 2.0;  // s standing still before each further block
     double standDuration = 3.0;     // s, between calibration and motion and at the end
     double motionDuration = 120.0;  // s, walking or skiing (incl. speed ramps)
@@ -108,15 +116,72 @@ struct BodySimulation {
     std::vector<double> t;
     std::array<BodySensor, kBodySegments> sensors;
     std::array<BodyJointTruth, kBodyJoints> joints;
-    std::vector<unsigned char> phase;  // 0 stand, 1 squat, 2 walk, 3 ski, 4 trunk rotation, 5 right, 6 left abduction
+    // 0 stand, 1 squat, 2 walk, 3 ski, 4 trunk rotation, 5 right, 6 left abduction, 7 arm swings (the body stands)
+    std::vector<unsigned char> phase;
     double uprightEnd = 0, squatBegin = 0, squatEnd = 0, motionBegin = 0, motionEnd = 0;
-    // The further calibration blocks (begin = end when off).
+    // The further calibration blocks (begin = end when off); arm swings: the swings only, without the grip.
     double trunkBegin = 0, trunkEnd = 0, rightAbductionBegin = 0, rightAbductionEnd = 0, leftAbductionBegin = 0,
-           leftAbductionEnd = 0;
+           leftAbductionEnd = 0, armSwingBegin = 0, armSwingEnd = 0;
+    std::vector<double> impacts;  // s, start of each ski impact (10 ms half-sine)
     const BodySensor& operator[](BodySegment s) const { return sensors[static_cast<int>(s)]; }
     const BodyJointTruth& operator[](BodyJoint j) const { return joints[static_cast<int>(j)]; }
 };
 
 BodySimulation simulateBody(const BodySimulatorParams& params);
+
+// The simulated body at any instant t (s): segment orientations (segment → ENU), joint centres (ENU)
+// and the share of the full speed (0–1, what scales the ski vibration) — exactly what simulateBody
+// samples at its sample times. For simulators that hang further segments on this chain
+// (body::simulateWholeBody) and differentiate their sensors' positions as simulateBody does.
+struct BodyPose {
+    std::array<math::Quat, kBodySegments> segment;
+    std::array<math::Vec3, kBodyJoints> joint;
+    double speedShare = 0.0;
+};
+BodyPose bodyPoseAt(const BodySimulatorParams& params, double t);
+
+// The IMU of simulateBody, for every simulated sensor on the body (also body::simulateWholeBody's head,
+// back and arm sensors). The ideal signals follow LimbSimulator: the gyroscope measures the constant
+// body rate between consecutive true sensor orientations, the accelerometer the specific force
+// Rᵀ(p̈ + g e_z) with p̈ from a central second difference of the sensor position.
+math::Vec3 idealRate(const math::Quat& previous, const math::Quat& current, double dt);
+math::Vec3 idealSpecificForce(const math::Quat& sensor, const math::Vec3& before, const math::Vec3& at,
+                              const math::Vec3& after, double h, double gravity);
+
+// One sensor's constant errors (spec §1/§10, the magnitudes of BodySimulatorParams).
+struct ImuErrors {
+    math::Vec3 gyrBias = math::Vec3::Zero(), gyrDrift = math::Vec3::Zero(), accBias = math::Vec3::Zero();
+    math::Vec3 gyrScale = math::Vec3::Ones(), accScale = math::Vec3::Ones();
+    Eigen::Matrix3d gSensitivity = Eigen::Matrix3d::Zero();  // rad/s per m/s², row i = gyroscope axis i
+    std::array<double, 9> vibration{};                       // per axis: frequency (Hz), phase, amplitude share
+};
+
+// The random source of the error model: draws each sensor's constant errors and each sample's noise
+// in a fixed order, so a simulation is reproducible from its seed.
+class ImuErrorSource {
+public:
+    ImuErrorSource(std::uint64_t seed, const BodySimulatorParams& params) : rng_(seed), params_(params) {}
+    // Constant bias, the slow bias change (norm gyrDrift, random direction), scale factors, g-sensitivity,
+    // vibration frequencies and phases.
+    ImuErrors draw();
+    // The vibration pattern at t (per axis in ±1, times the amplitude share): scaled by the speed share,
+    // BodySimulatorParams::vibration and how much of it reaches the sensor.
+    static math::Vec3 shake(const ImuErrors& e, double t);
+    // Share of the slow gyroscope bias change at t: 0 before the motion, ramping to 1 over 20 s after it starts.
+    static double driftShare(double t, double motionBegin);
+    // Measured gyroscope and accelerometer samples from the ideal rate ω and specific force f (sensor frame,
+    // vibration and impacts already in f): scale, bias, drift, g-sensitivity and white noise.
+    void measure(const ImuErrors& e, const math::Vec3& omega, const math::Vec3& f, double driftShare, math::Vec3& gyr,
+                 math::Vec3& acc);
+    std::mt19937_64& engine() { return rng_; }
+
+private:
+    math::Vec3 normal3();
+    math::Vec3 uniform3();
+    std::mt19937_64 rng_;
+    std::normal_distribution<double> normal_{0.0, 1.0};
+    std::uniform_real_distribution<double> uniform_{-1.0, 1.0};
+    const BodySimulatorParams& params_;
+};
 
 }  // namespace athlos::inertial

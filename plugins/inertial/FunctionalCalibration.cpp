@@ -16,27 +16,34 @@ using math::Vec3;
 
 namespace {
 
-constexpr std::array<const char*, kCalibrationMovements> kMovementNames{"upright", "squats", "trunk-rotations",
-                                                                        "right-abduction", "left-abduction"};
+constexpr std::array<const char*, kCalibrationMovements> kMovementNames{
+    "upright", "squats", "trunk-rotations", "right-abduction", "left-abduction", "arm-swings"};
 
-enum class Role { Pelvis, Trunk, Thigh, Shank, Foot };
+// Trunk: sternum and upper back (both on the thorax, Fasel §6.2.3 calibrates them alike).
+enum class Role { Pelvis, Trunk, Thigh, Shank, Foot, Head, UpperArm, Forearm };
 struct RoleInfo {
     Role role = Role::Pelvis;
     int side = 0;  // +1 right, −1 left, 0 midline
 };
 
 Expected<RoleInfo> roleOf(const QString& name) {
-    if (name == QLatin1String("sacrum") || name == QLatin1String("pelvis")) return RoleInfo{Role::Pelvis, 0};
-    if (name == QLatin1String("sternum") || name == QLatin1String("trunk") || name == QLatin1String("thorax"))
+    if (name == QLatin1String("sacrum") || name == QLatin1String("pelvis") || name == QLatin1String("lower-back"))
+        return RoleInfo{Role::Pelvis, 0};
+    if (name == QLatin1String("sternum") || name == QLatin1String("trunk") || name == QLatin1String("thorax") ||
+        name == QLatin1String("upper-back"))
         return RoleInfo{Role::Trunk, 0};
+    if (name == QLatin1String("head")) return RoleInfo{Role::Head, 0};
     for (int s : {1, -1}) {
         const QString prefix = s > 0 ? QStringLiteral("right-") : QStringLiteral("left-");
         if (name == prefix + QLatin1String("thigh")) return RoleInfo{Role::Thigh, s};
         if (name == prefix + QLatin1String("shank")) return RoleInfo{Role::Shank, s};
         if (name == prefix + QLatin1String("foot")) return RoleInfo{Role::Foot, s};
+        if (name == prefix + QLatin1String("upper-arm")) return RoleInfo{Role::UpperArm, s};
+        if (name == prefix + QLatin1String("forearm")) return RoleInfo{Role::Forearm, s};
     }
-    return makeError(QStringLiteral("segment '%1' is not part of the protocol; use sacrum (pelvis), sternum (trunk, "
-                                    "thorax), right-/left-thigh, right-/left-shank or right-/left-foot")
+    return makeError(QStringLiteral("segment '%1' is not part of the protocol; use sacrum (pelvis, lower-back), "
+                                    "sternum (trunk, thorax), upper-back, head, right-/left-thigh, right-/left-shank, "
+                                    "right-/left-foot, right-/left-upper-arm or right-/left-forearm")
                          .arg(name));
 }
 
@@ -222,10 +229,15 @@ const Prepared* driverOf(const std::vector<Prepared>& all, CalibrationMovement m
             if (auto* p = find(Role::Shank, side)) return p;
             return find(Role::Foot, side);
         }
+        case CalibrationMovement::ArmSwings:
+            if (auto* p = find(Role::UpperArm, 0)) return p;
+            return find(Role::Forearm, 0);
         default:
             return nullptr;
     }
 }
+
+bool isArm(Role r) { return r == Role::UpperArm || r == Role::Forearm; }
 
 struct PreparedSet {
     std::vector<Prepared> segments;
@@ -243,7 +255,7 @@ Expected<CalibrationMovement> parseCalibrationMovement(const QString& name) {
     for (int i = 0; i < kCalibrationMovements; ++i)
         if (name == QLatin1String(kMovementNames[i])) return static_cast<CalibrationMovement>(i);
     return makeError(QStringLiteral("'%1' is not a calibration movement (upright, squats, trunk-rotations, "
-                                    "right-abduction, left-abduction)")
+                                    "right-abduction, left-abduction, arm-swings)")
                          .arg(name));
 }
 
@@ -330,9 +342,23 @@ std::optional<CalibrationMovement> classify(const FunctionalCalibration::Params&
     std::array<double, 2> leg{-1.0, -1.0};  // RMS rate of each side's leg: right, left (−1 = no sensor)
     std::array<double, 2> legAxisToUp{0.0, 0.0};
     std::array<int, 2> legRank{9, 9};
-    double trunkRate = -1.0, trunkAxisToUp = 0.0, midlineRate = -1.0;  // midline: largest of pelvis and trunk
+    double trunkRate = -1.0, trunkAxisToUp = 0.0, midlineRate = -1.0;  // midline: largest of pelvis, trunk, head
+    // The fastest arm (upper arm, else forearm, of either side) and its axis to its own Y.
+    double armRate = -1.0, armAxisToUp = 0.0;
+    std::array<int, 2> armRank{9, 9};
+    std::array<double, 2> armSide{-1.0, -1.0}, armSideAxis{0.0, 0.0};
     for (const Prepared& p : all) {
         const AxisStats s = axisStats(p.segment->gyr, p.rows(begin, end), p.bias);
+        if (isArm(p.role.role)) {
+            const auto i = std::size_t(p.role.side > 0 ? 0 : 1);
+            const int rank = p.role.role == Role::UpperArm ? 0 : 1;
+            if (rank < armRank[i]) {
+                armRank[i] = rank;
+                armSide[i] = s.rms;
+                armSideAxis[i] = angleBetweenLines(s.axis, p.up);
+            }
+            continue;
+        }
         if (p.role.role == Role::Trunk) {
             trunkRate = s.rms;
             trunkAxisToUp = angleBetweenLines(s.axis, p.up);
@@ -366,6 +392,14 @@ std::optional<CalibrationMovement> classify(const FunctionalCalibration::Params&
     }
     if (!right && !left && trunkRate > params.moveRate && trunkAxisToUp < params.axialTolerance)
         return CalibrationMovement::TrunkRotations;
+    for (std::size_t i = 0; i < 2; ++i)
+        if (armSide[i] > armRate) armRate = armSide[i], armAxisToUp = armSideAxis[i];
+    // Arm swings: legs and midline still (a squat or a trunk rotation carries the arms along); with arm
+    // sensors only nothing tells a swing from a squat (give the intervals then).
+    const bool nonArm = midlineRate >= 0.0 || leg[0] >= 0.0 || leg[1] >= 0.0;
+    if (nonArm && !right && !left && armRate > params.moveRate && armAxisToUp > lateral &&
+        midlineRate < params.stillRatio * armRate)
+        return CalibrationMovement::ArmSwings;
     return std::nullopt;
 }
 
@@ -473,6 +507,18 @@ Expected<FunctionalCalibration::Result> FunctionalCalibration::calibrate(const s
                 sp.functionalAxis = 0;
                 sp.firstRotation = p.role.side > 0 ? -1.0 : 1.0;
                 break;
+            case Role::Head:  // head flexion in the squats (Fasel Table 6.2): forward, −Z
+                sp.firstRotation = -1.0;
+                break;
+            case Role::UpperArm:  // the swing starts upward: shoulder flexion, +Z (header)
+                needed = CalibrationMovement::ArmSwings;
+                sp.firstRotation = 1.0;
+                break;
+            case Role::Forearm:  // pronated by the grip: the right forearm turns about −X, the left about +X
+                needed = CalibrationMovement::ArmSwings;
+                sp.functionalAxis = 0;
+                sp.firstRotation = p.role.side > 0 ? -1.0 : 1.0;
+                break;
         }
         const Movement* m = findMovement(*movements, needed);
         if (!m)
@@ -535,7 +581,7 @@ Expected<FunctionalCalibration::Result> FunctionalCalibration::calibrate(const s
         if (p.role.role == Role::Thigh || p.role.role == Role::Shank) {
             if (auto x = axisOver(abductionOf(p.role.side)))
                 s.crossOrthogonality = 0.5 * std::numbers::pi - angleBetweenLines(*x, cal->functional);
-        } else if (p.role.role == Role::Trunk) {
+        } else if (p.role.role == Role::Trunk || p.role.role == Role::Head) {
             if (auto y = axisOver(CalibrationMovement::TrunkRotations))
                 s.crossOrthogonality = angleBetweenLines(*y, p.up);
         }

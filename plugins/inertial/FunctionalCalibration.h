@@ -1,7 +1,7 @@
 #pragma once
 // The whole functional calibration protocol (spec §4, Fasel ch. 6–7) from one recording of several
-// IMUs: upright standing, squats ×3, trunk rotations ×3 and hip ab/adduction ×3 per leg, each
-// found automatically or given as an interval (annotations).
+// IMUs: upright standing, squats ×3, trunk rotations ×3, hip ab/adduction ×3 per leg and the optional
+// arm swings ×3, each found automatically or given as an interval (annotations).
 //
 // Detection. Rest = every sensor's angular rate, averaged over `smoothing` s, below `restRate`;
 // the upright window is the first rest of at least `minUpright` s. The gyroscope bias of each
@@ -11,20 +11,35 @@
 //   squats          — both legs turn (thigh, else shank), about an axis ⟂ Y (medio-lateral);
 //   ab/adduction    — one leg turns, the other stays still (< `stillRatio` of its rate), axis ⟂ Y
 //                     (one leg instrumented: the pelvis and trunk stay still, else it is a squat);
-//   trunk rotations — no leg turns, the sternum turns about an axis ∥ Y (within `axialTolerance`).
+//   trunk rotations — no leg turns, the sternum turns about an axis ∥ Y (within `axialTolerance`);
+//   arm swings      — no leg turns, the midline (pelvis, trunk, head) stays still (< `stillRatio` of
+//                     the arm's rate), an arm (upper arm, else forearm) turns about an axis ⟂ its Y
+//                     (arm sensors alone cannot tell a swing from a squat: then only given intervals).
 // Repetitions: the rotation angle of the driving segment about the block's axis, θ(t) = ∫ω·a dt;
 // each excursion beyond half the largest one (in the sign of the first) is one repetition, and
 // consecutive repetitions are split at the least-moving instant between them.
 //
 // Frames (SegmentCalibration.h): Y from gravity; Z from the squats (pelvis/sacrum, sternum, thighs,
 // shanks), or X from the ab/adduction of the same side (feet, which stay flat in a squat).
+// The upper body follows Fasel's hypotheses (§6.2.3, Table 6.2; §7.2.2): the trunk and head sensors —
+// sacrum (lower back), sternum, upper back, head — take Y from gravity in the upright ("the trunk segment
+// is perfectly vertical") and Z from the squats ("squat movements occur around the medio-lateral axis"
+// for lower back, upper back, sternum and head); the trunk rotations' axis ("performed along the vertical
+// axis") is their check against gravity (cross-orthogonality below). The arm sensors take Y from gravity
+// in the upright ("the longitudinal axes of the arms and wrists ... parallel to gravity", arms hanging,
+// palms on the thighs) and from the arm swings (a pole held horizontally, thumbs medial, straight elbows,
+// sagittal swings: "the main rotation ... along the medio-lateral axis of the arm and along the
+// anterior-posterior axis of the wrist") Z for the upper arms, X for the forearms. The swing starts
+// upward (shoulder flexion, +Z); gripping the pole pronates the forearm by 90°, which turns its X (in
+// the upright frame: anterior) medially, so the swing turns the right forearm about −X, the left about +X.
 // Quality per segment:
 //   χ  — dispersion of the functional axis between repetitions: RMS angle between each repetition's
 //        principal axis and the axis of all repetitions (cf. Fasel Table 6.3);
 //   orthogonality — angle between the functional axis and the plane ⟂ gravity before
 //        re-orthogonalisation; cross-orthogonality — |90° − angle| between the two functional axes
 //        that should be orthogonal (squat Z and ab/adduction X of thighs and shanks; for the sternum
-//        the angle between the trunk-rotation axis and gravity, which should be parallel);
+//        and the other trunk and head sensors the angle between the trunk-rotation axis and gravity,
+//        which should be parallel; none for the arms);
 //   CMC — coefficient of multiple correlation of the G repetition curves θ_g(t), each resampled to
 //        T = 101 points (Kadaba et al. 1989, as in Fasel §6.2):
 //        CMC = sqrt(1 − [Σ_g Σ_t (θ_gt − θ̄_t)² / (T(G − 1))] / [Σ_g Σ_t (θ_gt − θ̄)² / (TG − 1)]),
@@ -43,9 +58,10 @@
 
 namespace athlos::inertial {
 
-enum class CalibrationMovement { Upright = 0, Squats, TrunkRotations, RightAbduction, LeftAbduction };
-inline constexpr int kCalibrationMovements = 5;
-// "upright", "squats", "trunk-rotations", "right-abduction", "left-abduction"
+enum class CalibrationMovement { Upright = 0, Squats, TrunkRotations, RightAbduction, LeftAbduction, ArmSwings };
+inline constexpr int kCalibrationMovements = 6;
+// "upright", "squats", "trunk-rotations", "right-abduction", "left-abduction", "arm-swings" (optional:
+// only the arm sensors need it)
 QString calibrationMovementName(CalibrationMovement movement);
 Expected<CalibrationMovement> parseCalibrationMovement(const QString& name);
 
@@ -69,7 +85,9 @@ public:
     };
 
     struct Segment {
-        QString name;                      // sacrum|pelvis, sternum|trunk|thorax, right-/left-thigh, -shank, -foot
+        // sacrum|pelvis|lower-back, sternum|trunk|thorax, upper-back, head, right-/left-thigh, -shank, -foot,
+        // right-/left-upper-arm, -forearm (the segment names of body-model, plugins/body/Anthropometry.h)
+        QString name;
         std::vector<double> t;             // s
         std::vector<math::Vec3> acc, gyr;  // sensor frame, m/s², rad/s
     };

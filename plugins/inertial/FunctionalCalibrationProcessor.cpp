@@ -8,6 +8,7 @@
 #include "plugins/inertial/SegmentMounts.h"
 
 #include <QRegularExpression>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -15,7 +16,8 @@ namespace athlos::inertial {
 
 namespace {
 constexpr Translator tr{"athlos::inertial", "FunctionalCalibrationProcessor"};
-constexpr int kMaxInputs = 8;
+// The lower body and trunk (8), head, upper back and both arms (6), with room for a second back sensor.
+constexpr int kMaxInputs = 16;
 const QString kDefaultSegments =
     QStringLiteral("sacrum,sternum,right-thigh,right-shank,right-foot,left-thigh,left-shank,left-foot");
 
@@ -76,12 +78,22 @@ TableColumn numbers(const char* name, const char* unit) {
 }
 TableColumn texts(const char* name) { return TableColumn{QLatin1String(name), QString(), true, {}, {}}; }
 
+bool isThorax(const QString& segment) {
+    return segment == QLatin1String("sternum") || segment == QLatin1String("trunk") ||
+           segment == QLatin1String("thorax");
+}
+
 // The name joint-angles looks up (jointSegments()) for a protocol segment seen from one side, or
-// empty when the segment belongs to the other side.
-QString jointAnglesName(const QString& segment, const QString& side) {
-    if (segment == QLatin1String("sacrum") || segment == QLatin1String("pelvis")) return QStringLiteral("pelvis");
-    if (segment == QLatin1String("sternum") || segment == QLatin1String("trunk") || segment == QLatin1String("thorax"))
-        return QStringLiteral("thorax");
+// empty when the segment belongs to the other side. The upper back stands for the thorax only when no
+// sternum was calibrated (one thorax row per side).
+QString jointAnglesName(const QString& segment, const QString& side, const QStringList& all) {
+    if (segment == QLatin1String("sacrum") || segment == QLatin1String("pelvis") ||
+        segment == QLatin1String("lower-back"))
+        return QStringLiteral("pelvis");
+    if (isThorax(segment)) return QStringLiteral("thorax");
+    if (segment == QLatin1String("upper-back"))
+        return std::any_of(all.begin(), all.end(), isThorax) ? QString() : QStringLiteral("thorax");
+    if (segment == QLatin1String("head")) return segment;
     const QString prefix = side + QLatin1Char('-');
     return segment.startsWith(prefix) ? segment.mid(prefix.size()) : QString();
 }
@@ -92,24 +104,26 @@ QString FunctionalCalibrationProcessor::name() const { return tr("Functional cal
 QString FunctionalCalibrationProcessor::description() const {
     return tr(
         "Sensor-to-segment mounts from the whole functional calibration protocol in one recording: upright standing, "
-        "squats, trunk rotations and hip ab/adduction per leg, found automatically (or from annotations). Gravity "
-        "gives each segment's superior axis, the principal axis of the angular velocity its medio-lateral (squats) "
-        "or, for the feet, antero-posterior axis (ab/adduction). Writes a segment-calibration table for joint-angles "
-        "and a quality table (dispersion between repetitions, orthogonality, CMC).");
+        "squats, trunk rotations, hip ab/adduction per leg and the optional arm swings, found automatically (or from "
+        "annotations). Gravity gives each segment's superior axis, the principal axis of the angular velocity its "
+        "medio-lateral axis (squats: pelvis, trunk, upper back, head, thighs, shanks; arm swings: upper arms) or "
+        "antero-posterior axis (ab/adduction: feet; arm swings: forearms). Writes a segment-calibration table for "
+        "joint-angles and body-com and a quality table (dispersion between repetitions, orthogonality, CMC).");
 }
 
 ParameterSpecs FunctionalCalibrationProcessor::parameters() const {
     const FunctionalCalibration::Params d;
     return {
         ParameterSpec::text(QStringLiteral("segments"), kDefaultSegments,
-                            tr("Segment of each input IMU, in input order: sacrum (pelvis), sternum (trunk), "
-                               "right-/left-thigh, right-/left-shank, right-/left-foot.")),
+                            tr("Segment of each input IMU, in input order: sacrum (pelvis, lower-back), sternum "
+                               "(trunk), upper-back, head, right-/left-thigh, right-/left-shank, right-/left-foot, "
+                               "right-/left-upper-arm, right-/left-forearm.")),
         ParameterSpec::text(QStringLiteral("intervals"), QString(),
                             tr("Movements given by hand, e.g. 'squats=12-24; right-abduction=40-49' (s); they "
                                "override the detection and the annotations.")),
         ParameterSpec::boolean(QStringLiteral("annotations"), true,
                                tr("Take interval annotations of the recording labelled upright, squats, "
-                                  "trunk-rotations, right-abduction or left-abduction as the movements.")),
+                                  "trunk-rotations, right-abduction, left-abduction or arm-swings as the movements.")),
         ParameterSpec::number(QStringLiteral("rest_rate"), d.restRate, 0.01, 5.0, QStringLiteral("rad/s"),
                               tr("Rest: every sensor's angular rate (0.5 s mean) below this (11°/s).")),
         ParameterSpec::number(QStringLiteral("min_upright"), d.minUpright, 1.0, 600.0, QStringLiteral("s"),
@@ -147,10 +161,11 @@ QList<OutputSpec> FunctionalCalibrationProcessor::outputs() const {
     return {OutputSpec{kSegmentCalibrationKind, true, QString(),
                        tr("segment, qw, qx, qy, qz (segment to sensor), axis_share, orthogonality (rad).")},
             OutputSpec{kSegmentCalibrationKind, true, QStringLiteral("right"),
-                       tr("The right side's mounts under the names joint-angles reads: pelvis, thorax, thigh, "
-                          "shank, foot.")},
+                       tr("The right side's mounts under the names joint-angles reads: pelvis, thorax, head, "
+                          "thigh, shank, foot, upper-arm, forearm.")},
             OutputSpec{kSegmentCalibrationKind, true, QStringLiteral("left"),
-                       tr("The left side's mounts (pelvis, thorax, thigh, shank, foot).")},
+                       tr("The left side's mounts (pelvis, thorax, head, thigh, shank, foot, upper-arm, "
+                          "forearm).")},
             OutputSpec{kCalibrationQualityKind, true, QStringLiteral("quality"),
                        tr("Per segment: movement, repetitions, dispersion χ, orthogonality, cross_orthogonality "
                           "(rad), cmc, begin, end (s).")},
@@ -234,9 +249,11 @@ Expected<std::vector<ProcessorOutput>> FunctionalCalibrationProcessor::run(const
         qBegin.numbers.push_back(begin);
         qEnd.numbers.push_back(end);
     }
-    Table mountTable = segmentMountTable(
-        segmentList, mounts,
-        QJsonObject{{"method", "functional protocol: upright, squats, trunk rotations, hip ab/adduction"}});
+    bool armSwings = false;
+    for (const auto& s : result->segments) armSwings = armSwings || s.movement == CalibrationMovement::ArmSwings;
+    QString method = QStringLiteral("functional protocol: upright, squats, trunk rotations, hip ab/adduction");
+    if (armSwings) method += QStringLiteral(", arm swings");
+    Table mountTable = segmentMountTable(segmentList, mounts, QJsonObject{{"method", method}});
     mountTable.columns.push_back(share);
     mountTable.columns.push_back(ortho);
 
@@ -274,7 +291,7 @@ Expected<std::vector<ProcessorOutput>> FunctionalCalibrationProcessor::run(const
         QStringList sideNames;
         std::vector<math::Quat> sideMounts;
         for (qsizetype i = 0; i < segmentList.size(); ++i) {
-            const QString n = jointAnglesName(segmentList[i], side);
+            const QString n = jointAnglesName(segmentList[i], side, segmentList);
             if (n.isEmpty()) continue;
             sideNames << n;
             sideMounts.push_back(mounts[std::size_t(i)]);

@@ -2,8 +2,8 @@
 # Functional calibration protocol end to end through `athlos run` (issue #17 item 4): simulate-body with the
 # whole protocol (upright, squats, trunk rotations, hip ab/adduction per leg) → functional-calibration on the
 # eight IMUs → every mount within 3° of the simulator's true mounts, the quality and movements tables filled,
-# and joint-angles reads the per-side table. Refusals (no squats, bad intervals, unknown segment) name the
-# reason and leave the project byte-identical.
+# and joint-angles reads the per-side table. Refusals (no squats, bad intervals, unknown segment, an arm
+# sensor without arm swings) name the reason and leave the project byte-identical.
 source "$(dirname "$0")/lib/common.bash" "$@"
 P="$WORK/p.athlos"
 expect_ok "new" "$ATHLOS" new "$P"
@@ -60,6 +60,12 @@ expect_fail "names do not match the inputs" "segments: 8 name" "$ATHLOS" run "$P
   --input cal/imu,cal/imu-sternum --output cal/x
 expect_fail "unknown segment" "tail" "$ATHLOS" run "$P" functional-calibration --input cal/imu --output cal/x \
   --param segments=tail
+# An arm sensor needs the optional arm swings (here the right foot's IMU stands in for an upper arm).
+expect_fail "arm without arm swings" "right-upper-arm.*no arm-swings" "$ATHLOS" run "$P" functional-calibration \
+  --input cal/imu,cal/imu-right-thigh,cal/imu-left-thigh,cal/imu-right-foot --output cal/x \
+  --param segments=sacrum,right-thigh,left-thigh,right-upper-arm
+expect_fail "bad interval name" "arm-swings" "$ATHLOS" run "$P" functional-calibration --input cal/imu --output cal/x \
+  --param segments=sacrum --param intervals="arm-swing=70-80"
 after=$(sha256sum "$P" | cut -d' ' -f1)
 [ "$before" = "$after" ] || fail "a refused run changed the project"
 finish

@@ -72,6 +72,10 @@ private slots:
         QCOMPARE(wizard.segmentCombo(0)->currentData().toString(), QString("imu"));
         QCOMPARE(wizard.segmentCombo(2)->currentData().toString(), QString("imu-right-thigh"));
         QCOMPARE(wizard.segmentCombo(7)->currentData().toString(), QString("imu-left-foot"));
+        // The upper body's segments are offered too; simulate-body has no sensor there.
+        QVERIFY(wizard.segmentCombo(13));
+        QCOMPARE(wizard.segmentCombo(13)->objectName(), QString("left-forearmCombo"));
+        QVERIFY(wizard.segmentCombo(9)->currentData().toString().isEmpty());
         wizard.show();
         wizard.next();
         QVERIFY2(wizard.lastError().isEmpty(), qPrintable(wizard.lastError()));

@@ -45,17 +45,21 @@ FunctionalCalibrationWizard::FunctionalCalibrationWizard(Workspace& workspace, Q
 }
 
 QStringList FunctionalCalibrationWizard::segments() {
-    return {QStringLiteral("sacrum"),      QStringLiteral("sternum"),    QStringLiteral("right-thigh"),
-            QStringLiteral("right-shank"), QStringLiteral("right-foot"), QStringLiteral("left-thigh"),
-            QStringLiteral("left-shank"),  QStringLiteral("left-foot")};
+    // The lower body and trunk first (their order is the wizard's since the beginning), then the upper body.
+    return {QStringLiteral("sacrum"),         QStringLiteral("sternum"),         QStringLiteral("right-thigh"),
+            QStringLiteral("right-shank"),    QStringLiteral("right-foot"),      QStringLiteral("left-thigh"),
+            QStringLiteral("left-shank"),     QStringLiteral("left-foot"),       QStringLiteral("upper-back"),
+            QStringLiteral("head"),           QStringLiteral("right-upper-arm"), QStringLiteral("right-forearm"),
+            QStringLiteral("left-upper-arm"), QStringLiteral("left-forearm")};
 }
 
 QWizardPage* FunctionalCalibrationWizard::createSensorPage() {
     auto* page = wizardPage(
         tr("Recording and sensors"),
-        tr("The recording of the protocol: standing upright still (10 s), 3 squats, 3 trunk rotations and 3 hip "
-           "ab/adductions per leg, standing still for a moment between movements. Choose the IMU of each segment "
-           "(leave out those without a sensor). Next finds the movements and calibrates."));
+        tr("The recording of the protocol: standing upright still (10 s) with the arms hanging, 3 squats, 3 trunk "
+           "rotations, 3 hip ab/adductions per leg and, for arm sensors, 3 arm swings holding a pole horizontally, "
+           "standing still for a moment between movements. Choose the IMU of each segment (leave out those without a "
+           "sensor). Next finds the movements and calibrates."));
     auto* layout = new QFormLayout(page);
     recordingCombo_ = new QComboBox(page);
     recordingCombo_->setObjectName(QStringLiteral("recordingCombo"));
