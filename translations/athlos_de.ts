@@ -558,6 +558,30 @@
         <source>Foot (sensor) positions x, y, z (m): z up, x the heading at the first mid-stance.</source>
         <translation>Positionen von Fuß (Sensor) x, y, z (m): z nach oben, x die Richtung beim ersten Mittelstand.</translation>
     </message>
+    <message>
+        <source>instant: per stride, zero velocity at the two mid-stance instants, drift removed linearly. rts: zero-velocity-aided error-state Kalman filter with Rauch-Tung-Striebel smoothing over the whole recording, zero velocity on every stance sample (Skog et al. 2010; gaitmap RtsKalman).</source>
+        <translation>instant: je Schritt Nullgeschwindigkeit an den beiden Mittelstand-Zeitpunkten, Drift linear entfernt. rts: nullgeschwindigkeitsgestütztes Error-State-Kalman-Filter mit Rauch-Tung-Striebel-Glättung über die ganze Aufnahme, Nullgeschwindigkeit an jedem Sample der Standphase (Skog et al. 2010; gaitmap RtsKalman).</translation>
+    </message>
+    <message>
+        <source>rts: moving average of the gyroscope norm of the stance detector (gaitmap NormZuptDetector: 0.15 s). The samples within half of it around each mid-stance are always stance.</source>
+        <translation>rts: gleitender Mittelwert der Gyroskop-Norm für die Erkennung der Standphase (gaitmap NormZuptDetector: 0,15 s). Die Samples innerhalb der halben Fensterlänge um jeden Mittelstand gelten immer als Standphase.</translation>
+    </message>
+    <message>
+        <source>rts: a sample is stance (zero velocity) when the averaged gyroscope norm is at most this (gaitmap NormZuptDetector: 15 deg/s).</source>
+        <translation>rts: ein Sample gehört zur Standphase (Nullgeschwindigkeit), wenn die gemittelte Gyroskop-Norm höchstens diesen Wert hat (gaitmap NormZuptDetector: 15 °/s).</translation>
+    </message>
+    <message>
+        <source>rts: accelerometer process noise per sample; it also covers vibration and scale errors, so it is larger than the sensor noise.</source>
+        <translation>rts: Prozessrauschen des Beschleunigungsmessers je Sample; es deckt auch Vibration und Skalenfehler ab und ist daher größer als das Sensorrauschen.</translation>
+    </message>
+    <message>
+        <source>rts: gyroscope process noise per sample.</source>
+        <translation>rts: Prozessrauschen des Gyroskops je Sample.</translation>
+    </message>
+    <message>
+        <source>rts: standard deviation of the zero-velocity pseudo-measurement (OpenShoe: 0.01 m/s).</source>
+        <translation>rts: Standardabweichung der Nullgeschwindigkeits-Pseudomessung (OpenShoe: 0,01 m/s).</translation>
+    </message>
 </context>
 <context>
     <name>athlos::events::SimulateSkiingProcessor</name>

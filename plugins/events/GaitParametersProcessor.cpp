@@ -5,6 +5,7 @@
 #include "plugins/events/GaitEventsProcessor.h"
 #include "plugins/events/StaticGyroBias.h"
 #include "plugins/events/StrideIntegrator.h"
+#include "plugins/events/ZuptKalmanSmoother.h"
 
 #include <QJsonArray>
 #include <cmath>
@@ -21,6 +22,8 @@ struct Plan {
     int acc = -1, gyr = -1;
     StrideSegmentationParams segmentation;
     StrideIntegrationParams integration;
+    bool smoother = false;  // method = rts
+    ZuptStrideParams zupt;
     double staticThreshold = 0.0, staticDuration = 0.0;
     QString foot;
 };
@@ -67,6 +70,13 @@ Expected<Plan> makePlan(const RunContext& c) {
     p.tcWindow = c.number(QStringLiteral("tc_window"));
     p.icWindow = c.number(QStringLiteral("ic_window"));
     plan.integration.levelWindow = c.number(QStringLiteral("level_window"));
+    plan.smoother = c.text(QStringLiteral("method")) == QLatin1String("rts");
+    plan.zupt.levelWindow = plan.integration.levelWindow;
+    plan.zupt.stanceWindow = c.number(QStringLiteral("zupt_window"));
+    plan.zupt.stanceThreshold = c.number(QStringLiteral("zupt_threshold"));
+    plan.zupt.filter.accNoise = c.number(QStringLiteral("acc_noise"));
+    plan.zupt.filter.gyrNoise = c.number(QStringLiteral("gyr_noise"));
+    plan.zupt.filter.zuptNoise = c.number(QStringLiteral("zupt_noise"));
     plan.staticThreshold = p.staticThreshold = c.number(QStringLiteral("static_threshold"));
     p.standDuration = c.number(QStringLiteral("stand_duration"));
     plan.staticDuration = c.number(QStringLiteral("static_duration"));
@@ -108,7 +118,13 @@ QString GaitParametersProcessor::description() const {
 ParameterSpecs GaitParametersProcessor::parameters() const {
     const StrideSegmentationParams d;
     const StrideIntegrationParams di;
+    const ZuptStrideParams dz;
     return {
+        ParameterSpec::choice(
+            QStringLiteral("method"), {QStringLiteral("instant"), QStringLiteral("rts")}, QStringLiteral("instant"),
+            tr("instant: per stride, zero velocity at the two mid-stance instants, drift removed linearly. rts: "
+               "zero-velocity-aided error-state Kalman filter with Rauch-Tung-Striebel smoothing over the whole "
+               "recording, zero velocity on every stance sample (Skog et al. 2010; gaitmap RtsKalman).")),
         ParameterSpec::choice(QStringLiteral("ml_axis"),
                               {QStringLiteral("x"), QStringLiteral("y"), QStringLiteral("z")}, QStringLiteral("y"),
                               tr("Sensor axis along the medio-lateral direction (y when x points forward and z up).")),
@@ -154,6 +170,21 @@ ParameterSpecs GaitParametersProcessor::parameters() const {
                               tr("Search window for initial contact after the swing peak (as gait-events).")),
         ParameterSpec::number(QStringLiteral("level_window"), di.levelWindow, 0.0, kInf, QStringLiteral("s"),
                               tr("Accelerometer average at a mid-stance that gives the up direction.")),
+        ParameterSpec::number(QStringLiteral("zupt_window"), dz.stanceWindow, 0.0, kInf, QStringLiteral("s"),
+                              tr("rts: moving average of the gyroscope norm of the stance detector (gaitmap "
+                                 "NormZuptDetector: 0.15 s). The samples within half of it around each "
+                                 "mid-stance are always stance.")),
+        ParameterSpec::number(QStringLiteral("zupt_threshold"), dz.stanceThreshold, 0.0, kInf, QStringLiteral("rad/s"),
+                              tr("rts: a sample is stance (zero velocity) when the averaged gyroscope norm is at "
+                                 "most this (gaitmap NormZuptDetector: 15 deg/s).")),
+        ParameterSpec::number(QStringLiteral("acc_noise"), dz.filter.accNoise, 1e-6, kInf, QStringLiteral("m/s^2"),
+                              tr("rts: accelerometer process noise per sample; it also covers vibration and "
+                                 "scale errors, so it is larger than the sensor noise.")),
+        ParameterSpec::number(QStringLiteral("gyr_noise"), dz.filter.gyrNoise, 1e-6, kInf, QStringLiteral("rad/s"),
+                              tr("rts: gyroscope process noise per sample.")),
+        ParameterSpec::number(QStringLiteral("zupt_noise"), dz.filter.zuptNoise, 1e-6, kInf, QStringLiteral("m/s"),
+                              tr("rts: standard deviation of the zero-velocity pseudo-measurement (OpenShoe: "
+                                 "0.01 m/s).")),
     };
 }
 
@@ -210,8 +241,11 @@ Expected<std::vector<ProcessorOutput>> GaitParametersProcessor::run(const RunCon
     }
     if (context.isCancelled()) return cancelledError();
     context.report(0.4, QStringLiteral("integrating strides"));
+    std::size_t stanceSamples = 0;
     const FootTrajectory trajectory =
-        integrateStrides(plan->integration, segmentation.strides, d.t.data(), acc, stride, gyr, 3, d.rows());
+        plan->smoother
+            ? smoothStrides(plan->zupt, segmentation.strides, d.t.data(), acc, stride, gyr, 3, d.rows(), &stanceSamples)
+            : integrateStrides(plan->integration, segmentation.strides, d.t.data(), acc, stride, gyr, 3, d.rows());
 
     Table table;
     table.kind = QStringLiteral("gait-parameters");
@@ -222,6 +256,7 @@ Expected<std::vector<ProcessorOutput>> GaitParametersProcessor::run(const RunCon
                     {QStringLiteral("gyr_bias_static_time"), bias.staticTime},
                     {QStringLiteral("strides"), int(trajectory.strides.size())},
                     {QStringLiteral("stride_definition"), QStringLiteral("mid-stance to mid-stance")},
+                    {QStringLiteral("method"), plan->smoother ? QStringLiteral("rts") : QStringLiteral("instant")},
                     {QStringLiteral("max_toe_clearance"),
                      QStringLiteral("sensor's max height above the higher of its two mid-stance "
                                     "heights")}};
@@ -250,6 +285,7 @@ Expected<std::vector<ProcessorOutput>> GaitParametersProcessor::run(const RunCon
         for (std::size_t k = 0; k < c.size(); ++k) c[k].numbers.push_back(values[k]);
     }
     table.columns = std::move(c);
+    if (plan->smoother) table.attributes.insert(QStringLiteral("zupt_samples"), double(stanceSamples));
 
     StreamData positions(trajectory.position.size(), 3);
     for (std::size_t r = 0; r < trajectory.position.size(); ++r) {

@@ -1,8 +1,9 @@
 #pragma once
 // Processor `gait-parameters`: a foot IMU stream in; one table row per stride (mid-stance to
 // mid-stance, StrideSegmenter) with the spatial parameters from zero-velocity-aided integration
-// (StrideIntegrator) and the temporal ones from the gyroscope events, plus the foot trajectory as
-// a stream (suffix "trajectory").
+// (StrideIntegrator, or with method = rts the zero-velocity Kalman smoother over the whole recording,
+// ZuptKalmanSmoother) and the temporal ones from the gyroscope events, plus the foot trajectory as a
+// stream (suffix "trajectory"). Version 2: the `method` parameter and the rts parameters.
 #include "core/processing/Processor.h"
 
 namespace athlos::events {
@@ -12,7 +13,7 @@ public:
     QString id() const override { return QStringLiteral("gait-parameters"); }
     QString name() const override;
     QString description() const override;
-    QString version() const override { return QStringLiteral("1"); }
+    QString version() const override { return QStringLiteral("2"); }
     ParameterSpecs parameters() const override;
     QList<InputSpec> inputs() const override;
     QList<OutputSpec> outputs() const override;

@@ -60,6 +60,13 @@ Quaterniond step(const Imu& imu, std::size_t k, const Quaterniond& q) {
 
 }  // namespace
 
+Eigen::Vector3d meanAccelerometer(const double* t, const double* acc, std::size_t accStride, std::size_t rows,
+                                  std::size_t k, double window) {
+    return meanAcc(Imu{t, acc, nullptr, accStride, 0, rows}, k, window);
+}
+
+Eigen::Quaterniond levelledOrientation(const Eigen::Vector3d& up, double heading) { return levelled(up, heading); }
+
 FootTrajectory integrateStrides(const StrideIntegrationParams& params, const std::vector<StrideSegment>& segments,
                                 const double* t, const double* acc, std::size_t accStride, const double* gyr,
                                 std::size_t gyrStride, std::size_t rows) {

@@ -19,6 +19,7 @@
 #include "plugins/events/StrideSegmenter.h"
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <vector>
 
 namespace athlos::events {
@@ -47,5 +48,11 @@ struct FootTrajectory {
 FootTrajectory integrateStrides(const StrideIntegrationParams& params, const std::vector<StrideSegment>& segments,
                                 const double* t, const double* acc, std::size_t accStride, const double* gyr,
                                 std::size_t gyrStride, std::size_t rows);
+
+// Mean accelerometer over [t_k − window/2, t_k + window/2]: the specific force of a still foot ("up").
+Eigen::Vector3d meanAccelerometer(const double* t, const double* acc, std::size_t accStride, std::size_t rows,
+                                  std::size_t k, double window);
+// Eq. 1: the orientation whose z axis is the measured `up`, with the given heading (rad).
+Eigen::Quaterniond levelledOrientation(const Eigen::Vector3d& up, double heading);
 
 }  // namespace athlos::events

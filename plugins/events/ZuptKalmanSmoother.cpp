@@ -1,0 +1,193 @@
+#include "plugins/events/ZuptKalmanSmoother.h"
+
+#include "core/math/QuaternionOps.h"
+#include "plugins/events/StrideSegmenter.h"
+
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace athlos::events {
+
+namespace {
+
+using Eigen::Matrix3d;
+using Eigen::Quaterniond;
+using Eigen::Vector3d;
+
+Matrix3d skew(const Vector3d& v) {
+    Matrix3d m;
+    m << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
+    return m;
+}
+
+// Eq. 5: x ⊕ δ.
+void inject(ZuptKalmanState& x, const Eigen::Matrix<double, 9, 1>& d) {
+    x.position += d.head<3>();
+    x.velocity += d.segment<3>(3);
+    x.orientation = (math::quatFromRotationVector(d.tail<3>()) * x.orientation).normalized();
+}
+
+}  // namespace
+
+ZuptKalmanSmoother::ZuptKalmanSmoother(const ZuptKalmanParams& params, const Quaterniond& q0, double gravity)
+    : params_(params), gravity_(gravity) {
+    state_.orientation = q0.normalized();
+    // The first sample is a mid-stance: position 0 by definition, velocity zero within σ_z, tilt
+    // from the levelling, heading 0 by definition (it is unobservable with zero velocity only).
+    Vector9 p0;
+    const double tilt2 = params.initialTilt * params.initialTilt, v2 = params.zuptNoise * params.zuptNoise;
+    p0 << 1e-10, 1e-10, 1e-10, v2, v2, v2, tilt2, tilt2, 1e-10;
+    P_ = p0.asDiagonal();
+}
+
+void ZuptKalmanSmoother::addSample(double t, const Vector3d& acc, const Vector3d& gyr, bool stance) {
+    if (nominal_.empty()) {
+        t_ = t;
+        acc_ = acc;
+        gyr_ = gyr;
+        nominal_.push_back(state_);
+        return;
+    }
+    const double dt = t - t_;
+    // Eq. 1: strapdown step with the mean rate and the mean specific force in the world frame.
+    const Quaterniond q1 = math::integrateBodyRate(state_.orientation, 0.5 * (gyr_ + gyr), dt);
+    const Vector3d f = 0.5 * (state_.orientation * acc_ + q1 * acc);
+    const Vector3d v1 = state_.velocity + (f - gravity_ * Vector3d::UnitZ()) * dt;
+    state_.position += 0.5 * (state_.velocity + v1) * dt;
+    state_.velocity = v1;
+    state_.orientation = q1;
+    t_ = t;
+    acc_ = acc;
+    gyr_ = gyr;
+
+    // Eqs. 2–3.
+    Matrix9 Phi = Matrix9::Identity();
+    const Matrix3d F = skew(f);
+    Phi.block<3, 3>(0, 3) = dt * Matrix3d::Identity();
+    Phi.block<3, 3>(0, 6) = -0.5 * dt * dt * F;
+    Phi.block<3, 3>(3, 6) = -dt * F;
+    const Matrix9 PhiP = Phi * P_;
+    Matrix9 prior = PhiP * Phi.transpose();
+    const double qa = params_.accNoise * dt, qw = params_.gyrNoise * dt;
+    for (int i = 0; i < 3; ++i) {
+        prior(3 + i, 3 + i) += qa * qa;
+        prior(6 + i, 6 + i) += qw * qw;
+    }
+    prior = 0.5 * (prior + prior.transpose());
+    // Eq. 6's gain A_k = P⁺_k Φᵀ (P⁻_{k+1})⁻¹, i.e. Aᵀ = (P⁻)⁻¹ Φ P⁺ (P⁻ symmetric). The jitter
+    // keeps the position block (no process noise of its own) invertible right after the start.
+    const Eigen::LDLT<Matrix9> ldlt(prior + 1e-14 * Matrix9::Identity());
+    gain_.push_back(ldlt.solve(PhiP).transpose());
+
+    Vector9 delta = Vector9::Zero();
+    if (stance) {
+        // Eq. 4: H selects the velocity error.
+        const Matrix3d S = prior.block<3, 3>(3, 3) + params_.zuptNoise * params_.zuptNoise * Matrix3d::Identity();
+        const Eigen::Matrix<double, 9, 3> K = prior.block<9, 3>(0, 3) * S.inverse();
+        delta = K * (-state_.velocity);
+        Matrix9 IKH = Matrix9::Identity();
+        IKH.block<9, 3>(0, 3) -= K;
+        P_ = IKH * prior * IKH.transpose() +
+             params_.zuptNoise * params_.zuptNoise * K * K.transpose();  // K R Kᵀ with R = σ_z² I
+        inject(state_, delta);                                           // eq. 5
+    } else {
+        P_ = prior;
+    }
+    correction_.push_back(delta);
+    nominal_.push_back(state_);
+}
+
+std::vector<ZuptKalmanState> ZuptKalmanSmoother::smooth() const {
+    std::vector<ZuptKalmanState> out = nominal_;
+    Vector9 e = Vector9::Zero();  // e_N = 0: the last sample's filtered state is its smoothed one
+    for (std::size_t k = out.size() - (out.empty() ? 0 : 1); k-- > 0;) {
+        e = gain_[k] * (correction_[k] + e);
+        inject(out[k], e);
+    }
+    return out;
+}
+
+std::vector<ZuptKalmanState> ZuptKalmanSmoother::smooth(const ZuptKalmanParams& params, const Quaterniond& q0,
+                                                        double gravity, const double* t, const double* acc,
+                                                        std::size_t accStride, const double* gyr, std::size_t gyrStride,
+                                                        const std::vector<bool>& stance) {
+    ZuptKalmanSmoother smoother(params, q0, gravity);
+    for (std::size_t k = 0; k < stance.size(); ++k)
+        smoother.addSample(t[k], Vector3d(acc + k * accStride), Vector3d(gyr + k * gyrStride), stance[k]);
+    return smoother.smooth();
+}
+
+std::vector<bool> detectStance(const double* t, const double* gyr, std::size_t rows, std::size_t stride, double window,
+                               double threshold, const std::vector<std::size_t>& midStances) {
+    const std::vector<double> mean = meanGyroNorm(t, gyr, rows, stride, window);
+    std::vector<bool> stance(rows);
+    for (std::size_t k = 0; k < rows; ++k) stance[k] = mean[k] <= threshold;
+    for (std::size_t m : midStances) {
+        if (m >= rows) continue;
+        for (std::size_t j = m; j < rows && t[j] <= t[m] + 0.5 * window; ++j) stance[j] = true;
+        for (std::size_t j = m; t[j] >= t[m] - 0.5 * window; --j) {
+            stance[j] = true;
+            if (j == 0) break;
+        }
+    }
+    return stance;
+}
+
+FootTrajectory smoothStrides(const ZuptStrideParams& params, const std::vector<StrideSegment>& segments,
+                             const double* t, const double* acc, std::size_t accStride, const double* gyr,
+                             std::size_t gyrStride, std::size_t rows, std::size_t* stanceSamples) {
+    FootTrajectory out;
+    if (segments.empty() || rows == 0) return out;
+    const std::size_t first = segments.front().start, last = segments.back().end;
+    std::vector<std::size_t> midStances;
+    for (const StrideSegment& s : segments) {
+        midStances.push_back(s.start - first);
+        midStances.push_back(s.end - first);
+    }
+    const std::size_t n = last - first + 1;
+    const double* tt = t + first;
+    const double* a = acc + first * accStride;
+    const double* w = gyr + first * gyrStride;
+    const std::vector<bool> stance =
+        detectStance(tt, w, n, gyrStride, params.stanceWindow, params.stanceThreshold, midStances);
+    // Gravity as the accelerometer reads it while standing (absorbs a scale error, as integrateStrides).
+    double g = 0.0;
+    std::size_t count = 0;
+    for (std::size_t k = 0; k < n; ++k)
+        if (stance[k]) {
+            g += Vector3d(a + k * accStride).norm();
+            ++count;
+        }
+    g /= double(count);  // count ≥ 1: the mid-stances are stance
+    if (stanceSamples) *stanceSamples = count;
+    const Quaterniond q0 =
+        levelledOrientation(meanAccelerometer(t, acc, accStride, rows, first, params.levelWindow), 0.0);
+    const std::vector<ZuptKalmanState> states =
+        ZuptKalmanSmoother::smooth(params.filter, q0, g, tt, a, accStride, w, gyrStride, stance);
+
+    out.first = first;
+    out.position.reserve(n);
+    for (const ZuptKalmanState& s : states) out.position.push_back(s.position);
+    for (const StrideSegment& s : segments) {
+        const ZuptKalmanState &x0 = states[s.start - first], &x1 = states[s.end - first];
+        StrideEstimate e;
+        e.tStart = t[s.start];
+        e.tEnd = t[s.end];
+        const Vector3d d = x1.position - x0.position;
+        e.length = d.head<2>().norm();
+        e.height = d.z();
+        double maxZ = 0.0;
+        for (std::size_t k = s.start; k <= s.end; ++k)
+            maxZ = std::max(maxZ, states[k - first].position.z() - x0.position.z());
+        e.maxClearance = maxZ - std::max(0.0, e.height);
+        e.turningAngle = std::remainder(math::headingAngle(x1.orientation) - math::headingAngle(x0.orientation),
+                                        2.0 * std::numbers::pi);
+        e.endSpeed = x1.velocity.norm();
+        out.strides.push_back(e);
+    }
+    return out;
+}
+
+}  // namespace athlos::events

@@ -1,0 +1,99 @@
+// ZuptKalmanSmoother on the foot-motion simulator: the per-sample and batch interfaces agree, the
+// smoothed velocity is zero where zero velocity was measured, a still foot stays put, and the
+// stance detector keeps the mid-stances. Stride lengths per scenario against the truth, beside the
+// instant method: GaitParametersSimulationTest.
+#include "plugins/events/ZuptKalmanSmoother.h"
+
+#include "plugins/events/FootMotionSimulator.h"
+
+#include <gtest/gtest.h>
+
+using namespace athlos::events;
+
+namespace {
+
+SimConfig walk() {
+    SimConfig c;
+    c.gyrBias.setZero();  // gait-parameters removes it first (StaticGyroBias); the filter has no bias state
+    for (int i = 0; i < 6; ++i) c.strides.push_back(SimStride{});
+    return c;
+}
+
+std::vector<bool> stanceOf(const SimRecording& rec) {
+    return detectStance(rec.t.data(), rec.values.data() + 3, rec.t.size(), 6, 0.15, 0.26, {});
+}
+
+// Gravity as the accelerometer reads it (with its bias), as smoothStrides takes it.
+double gravity(const SimRecording& rec) {
+    return meanAccelerometer(rec.t.data(), rec.values.data(), 6, rec.t.size(), 0, 1.0).norm();
+}
+
+Eigen::Quaterniond levelled(const SimRecording& rec) {
+    return levelledOrientation(meanAccelerometer(rec.t.data(), rec.values.data(), 6, rec.t.size(), 0, 0.15), 0.0);
+}
+
+}  // namespace
+
+TEST(ZuptKalmanSmoother, PerSampleAndBatchAgree) {
+    const SimRecording rec = simulateFoot(walk());
+    const std::vector<bool> stance = stanceOf(rec);
+    const ZuptKalmanParams params;
+    ZuptKalmanSmoother smoother(params, levelled(rec), 9.81);
+    for (std::size_t k = 0; k < rec.t.size(); ++k)
+        smoother.addSample(rec.t[k], Eigen::Vector3d(&rec.values[6 * k]), Eigen::Vector3d(&rec.values[6 * k + 3]),
+                           stance[k]);
+    EXPECT_EQ(smoother.samples(), rec.t.size());
+    const auto a = smoother.smooth();
+    const auto b = ZuptKalmanSmoother::smooth(params, levelled(rec), 9.81, rec.t.data(), rec.values.data(), 6,
+                                              rec.values.data() + 3, 6, stance);
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t k = 0; k < a.size(); ++k) ASSERT_EQ(a[k].position, b[k].position) << k;
+    // The last sample has nothing after it: smoothed = filtered.
+    EXPECT_EQ(a.back().position, smoother.filtered().position);
+}
+
+TEST(ZuptKalmanSmoother, VelocityIsZeroInStanceAndTheSwingsCoverTheStrides) {
+    const SimRecording rec = simulateFoot(walk());
+    const std::vector<bool> stance = stanceOf(rec);
+    const auto states = ZuptKalmanSmoother::smooth({}, levelled(rec), gravity(rec), rec.t.data(), rec.values.data(), 6,
+                                                   rec.values.data() + 3, 6, stance);
+    double worst = 0.0;
+    std::size_t stanceSamples = 0;
+    for (std::size_t k = 0; k < states.size(); ++k)
+        if (stance[k]) {
+            worst = std::max(worst, states[k].velocity.norm());
+            ++stanceSamples;
+        }
+    EXPECT_GT(stanceSamples, rec.t.size() / 3);
+    EXPECT_LT(worst, 0.02);
+    // Six strides of 1.4 m straight ahead (x): the end point within 1 %.
+    EXPECT_NEAR(states.back().position.head<2>().norm(), 6 * 1.4, 0.084) << states.back().position.transpose();
+    EXPECT_NEAR(states.back().position.z(), 0.0, 0.06);  // under 1 cm per stride (accelerometer bias)
+}
+
+TEST(ZuptKalmanSmoother, AStillFootStaysPut) {
+    SimConfig c;  // no strides: 4 s of standing with noise and biases
+    const SimRecording rec = simulateFoot(c);
+    const std::vector<bool> stance(rec.t.size(), true);
+    const auto states = ZuptKalmanSmoother::smooth({}, levelled(rec), 9.81, rec.t.data(), rec.values.data(), 6,
+                                                   rec.values.data() + 3, 6, stance);
+    for (const auto& s : states) ASSERT_LT(s.position.norm(), 0.005) << s.position.transpose();
+}
+
+TEST(ZuptKalmanSmoother, StanceDetectorKeepsTheMidStances) {
+    // A foot that is never still (1 rad/s): nothing under the threshold but the given mid-stances
+    // and their half window on each side.
+    std::vector<double> t(200), gyr(600, 0.0);
+    for (std::size_t k = 0; k < t.size(); ++k) {
+        t[k] = 0.01 * double(k);
+        gyr[3 * k + 1] = 1.0;
+    }
+    const std::vector<bool> stance = detectStance(t.data(), gyr.data(), t.size(), 3, 0.105, 0.26, {50, 199});
+    std::size_t count = 0;
+    for (bool s : stance) count += s;
+    EXPECT_EQ(count, 11u + 6u);  // 45…55 and 194…199
+    EXPECT_TRUE(stance[45] && stance[55] && !stance[44] && !stance[56] && stance[194] && !stance[193]);
+    // Under the threshold: everything is stance.
+    const std::vector<bool> all = detectStance(t.data(), gyr.data(), t.size(), 3, 0.105, 1.5, {});
+    for (bool s : all) EXPECT_TRUE(s);
+}
