@@ -38,6 +38,22 @@ grep -q '"path": "walk/left-rts-strides-trajectory"' "$WORK/out" || fail "no rts
 expect_fail "unknown method" "method" "$ATHLOS" run "$P" gait-parameters --input walk/left-foot --output walk/x \
   --param method=kalman
 
+# A sample-index file at 204.8 Hz (the stair file rewritten the way pandas writes gaitmap's imu_sample.csv):
+# the import tells the rate from the motion and says so, --rate overrides it, a bad --rate is a usage error.
+awk -F, 'BEGIN { OFS = "," } NR == 1 { print "sensor" $0; next } NR == 2 { print; next } { $1 = NR - 3; print }' \
+  "$G/imu_sample_healthy_stair_up.csv" > "$WORK/stairs.csv"
+expect_ok "import index 204.8 Hz" "$ATHLOS" import "$P" "$WORK/stairs.csv" --as stairs --format gaitmap
+grep -q "sampling rate 204.8 Hz from the motion" "$WORK/err" || fail "rate not found from the motion: $(cat "$WORK/err")"
+expect_ok "info stairs" "$ATHLOS" info "$P" --json
+grep -q '"sampling_rate_source": "motion"' "$WORK/out" || fail "rate source not recorded"
+expect_ok "stairs strides" "$ATHLOS" run "$P" gait-parameters --input stairs/left-foot --output stairs/left-strides
+expect_ok "export stairs" "$ATHLOS" export "$P" stairs/left-strides --to "$WORK/stairs-left.csv"
+median=$(awk -F, 'NR > 1 { print $5 }' "$WORK/stairs-left.csv" | sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }')
+awk -v m="$median" 'BEGIN { exit !(m > 0.9 && m < 1.6) }' || fail "stair stride time $median s: the time axis is off"
+expect_ok "import --rate" "$ATHLOS" import "$P" "$WORK/stairs.csv" --as stairs2 --format gaitmap --rate 204.8
+grep -q "from the motion" "$WORK/err" && fail "--rate given, yet estimated: $(cat "$WORK/err")"
+expect_fail "bad --rate" "--rate '0'" "$ATHLOS" import "$P" "$WORK/stairs.csv" --as stairs3 --format gaitmap --rate 0
+
 # Nothing to find: refused with the reason, the project byte-identical.
 awk 'BEGIN { print ",left_sensor,left_sensor,left_sensor,left_sensor,left_sensor,left_sensor";
   print ",acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z"; for (i = 0; i < 1000; ++i) printf "%d,0,0,9.81,0.1,0,0\n", i }' \
