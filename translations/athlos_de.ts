@@ -487,10 +487,6 @@
         <translation>Gangparameter (Fuß-IMU)</translation>
     </message>
     <message>
-        <source>Strides between consecutive mid-stance (minimum-velocity) instants of a foot-mounted IMU and, per stride, zero-velocity-aided integration (orientation levelled from gravity at each mid-stance, inclination and velocity drift removed linearly): stride length (horizontal) and height, stride, stance and swing time, cadence, gait speed, toe clearance and turning angle; plus the foot trajectory.</source>
-        <translation>Doppelschritte zwischen aufeinanderfolgenden Mittelstand-Zeitpunkten (minimale Geschwindigkeit) einer am Fuß getragenen IMU und je Doppelschritt eine durch Nullgeschwindigkeit gestützte Integration (Orientierung bei jedem Mittelstand an der Schwerkraft ausgerichtet, Neigungs- und Geschwindigkeitsdrift linear entfernt): Schrittlänge (horizontal) und -höhe, Doppelschritt-, Stand- und Schwungzeit, Kadenz, Ganggeschwindigkeit, Bodenfreiheit der Zehen und Drehwinkel; dazu die Fußtrajektorie.</translation>
-    </message>
-    <message>
         <source>Sensor axis along the medio-lateral direction (y when x points forward and z up).</source>
         <translation>Sensorachse in medio-lateraler Richtung (y, wenn x nach vorn und z nach oben zeigt).</translation>
     </message>
@@ -581,6 +577,10 @@
     <message>
         <source>rts: standard deviation of the zero-velocity pseudo-measurement (OpenShoe: 0.01 m/s).</source>
         <translation>rts: Standardabweichung der Nullgeschwindigkeits-Pseudomessung (OpenShoe: 0,01 m/s).</translation>
+    </message>
+    <message>
+        <source>Strides between consecutive mid-stance (minimum-velocity) instants of a foot-mounted IMU and zero-velocity-aided integration (method rts: a Kalman smoother over the whole recording with zero velocity on every stance sample; method instant: per stride, levelled from gravity at each mid-stance, inclination and velocity drift removed linearly): stride length (horizontal) and height, stride, stance and swing time, cadence, gait speed, toe clearance and turning angle; plus the foot trajectory.</source>
+        <translation>Doppelschritte zwischen aufeinanderfolgenden Standphasenmitten (minimale Geschwindigkeit) eines am Fuß getragenen IMU und Integration mit Nullgeschwindigkeits-Stützung (Methode rts: ein Kalman-Glätter über die ganze Aufnahme mit Nullgeschwindigkeit an jedem Standphasen-Sample; Methode instant: je Doppelschritt, an jeder Standphasenmitte aus der Schwerkraft horizontiert, Neigungs- und Geschwindigkeitsdrift linear entfernt): Schrittlänge (horizontal) und -höhe, Schritt-, Stand- und Schwungzeit, Kadenz, Ganggeschwindigkeit, Bodenfreiheit und Drehwinkel; dazu die Fußtrajektorie.</translation>
     </message>
 </context>
 <context>

@@ -108,8 +108,9 @@ QString GaitParametersProcessor::name() const { return tr("Gait parameters (foot
 
 QString GaitParametersProcessor::description() const {
     return tr(
-        "Strides between consecutive mid-stance (minimum-velocity) instants of a foot-mounted IMU and, per "
-        "stride, zero-velocity-aided integration (orientation levelled from gravity at each mid-stance, "
+        "Strides between consecutive mid-stance (minimum-velocity) instants of a foot-mounted IMU and "
+        "zero-velocity-aided integration (method rts: a Kalman smoother over the whole recording with zero "
+        "velocity on every stance sample; method instant: per stride, levelled from gravity at each mid-stance, "
         "inclination and velocity drift removed linearly): stride length (horizontal) and height, stride, "
         "stance and swing time, cadence, gait speed, toe clearance and turning angle; plus the foot "
         "trajectory.");
@@ -121,7 +122,7 @@ ParameterSpecs GaitParametersProcessor::parameters() const {
     const ZuptStrideParams dz;
     return {
         ParameterSpec::choice(
-            QStringLiteral("method"), {QStringLiteral("instant"), QStringLiteral("rts")}, QStringLiteral("instant"),
+            QStringLiteral("method"), {QStringLiteral("instant"), QStringLiteral("rts")}, QStringLiteral("rts"),
             tr("instant: per stride, zero velocity at the two mid-stance instants, drift removed linearly. rts: "
                "zero-velocity-aided error-state Kalman filter with Rauch-Tung-Striebel smoothing over the whole "
                "recording, zero velocity on every stance sample (Skog et al. 2010; gaitmap RtsKalman).")),

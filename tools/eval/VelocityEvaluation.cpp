@@ -241,7 +241,10 @@ Expected<GaitmapVelocityScore> evaluateGaitmapVelocity(const QString& imuCsv, co
         if (!r1) return r1.error();
         auto r2 = runProcessor(*project, reset, RunRequest{reset.id(), {q, imu}, v, resetParameters});
         if (!r2) return r2.error();
-        auto r3 = runProcessor(*project, gait, RunRequest{gait.id(), {imu}, g, {}});
+        // Against gait-parameters' per-stride method (zero velocity at one instant per stance, like the
+        // resets here); the figures in drift-reduction.md were measured so before rts became the default.
+        auto r3 = runProcessor(*project, gait,
+                               RunRequest{gait.id(), {imu}, g, {{QStringLiteral("method"), QStringLiteral("instant")}}});
         if (!r3) return r3.error();
         const Table* phases = project->table(v + QStringLiteral("-zero-velocity"));
         const Table* strides = project->table(g);
