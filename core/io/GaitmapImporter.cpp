@@ -48,7 +48,8 @@ Expected<double> indexRate(const QString& file, const StreamData& all,
     source = QStringLiteral("given");
     if (given > 0.0) return given;
     std::vector<ImuSamplingRate::Imu> imus;
-    for (const auto& [sensor, columns] : bySensor) {
+    for (const auto& entry : bySensor) {
+        const std::vector<SensorColumn>& columns = entry.second;  // a plain reference: lambdas capture it
         int at[6] = {-1, -1, -1, -1, -1, -1};
         for (const SensorColumn& c : columns)
             if (const qsizetype i = kAxisOrder.indexOf(c.axis); i >= 0) at[i] = int(&c - columns.data());
