@@ -67,7 +67,8 @@ Expected<double> indexRate(const QString& file, const StreamData& all,
     }
     const std::vector<double> rates(std::begin(GaitmapImporter::kIndexRates), std::end(GaitmapImporter::kIndexRates));
     const ImuSamplingRate estimator;
-    auto best = estimator.best(imus, rates);
+    const std::vector<ImuSamplingRate::Candidate> scored = estimator.scores(imus, rates);
+    auto best = estimator.best(scored);
     if (!best) {
         warnings << QStringLiteral("%1: the first column is a sample index and the rate cannot be told from the "
                                    "motion (%2); %3 Hz assumed: give the rate with --rate")
@@ -77,7 +78,7 @@ Expected<double> indexRate(const QString& file, const StreamData& all,
         return GaitmapImporter::kIndexRate;
     }
     QStringList others;
-    for (const auto& c : estimator.scores(imus, rates))
+    for (const auto& c : scored)
         if (c.rate != best->rate) others << QStringLiteral("%1 Hz %2").arg(c.rate).arg(c.score, 0, 'f', 3);
     warnings << QStringLiteral("%1: the first column is a sample index; sampling rate %2 Hz from the motion "
                                "(gyroscope/accelerometer disagreement %3 against %4); give --rate to set it")

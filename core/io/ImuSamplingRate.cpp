@@ -1,6 +1,5 @@
 #include "core/io/ImuSamplingRate.h"
 
-#include <QStringList>
 #include <algorithm>
 #include <cmath>
 
@@ -67,8 +66,11 @@ std::vector<ImuSamplingRate::Candidate> ImuSamplingRate::scores(const std::vecto
 
 Expected<ImuSamplingRate::Candidate> ImuSamplingRate::best(const std::vector<Imu>& imus,
                                                            const std::vector<double>& rates) const {
-    if (rates.empty()) return makeError(QStringLiteral("no candidate sampling rate"));
-    const std::vector<Candidate> all = scores(imus, rates);
+    return best(scores(imus, rates));
+}
+
+Expected<ImuSamplingRate::Candidate> ImuSamplingRate::best(const std::vector<Candidate>& all) const {
+    if (all.empty()) return makeError(QStringLiteral("no candidate sampling rate"));
     // Every candidate sees the same segments (the still samples do not depend on the rate).
     if (all.front().segments == 0)
         return makeError(QStringLiteral("too few still phases (fewer than %1 between rotations) to tell the "

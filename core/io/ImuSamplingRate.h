@@ -48,6 +48,8 @@ public:
     // The candidate with the lowest score; an error when no IMU has `minSegments` still-to-still
     // segments (e.g. no stance at all) or no rate is given.
     Expected<Candidate> best(const std::vector<Imu>& imus, const std::vector<double>& rates) const;
+    // The same from scores() already computed (the importer reports them all).
+    Expected<Candidate> best(const std::vector<Candidate>& scored) const;
 
 private:
     Params params_;
