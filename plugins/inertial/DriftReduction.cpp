@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <span>
 
 namespace athlos::inertial {
 
@@ -29,15 +30,25 @@ Mat3 skew(const Vec3& v) {
     return m;
 }
 
-// ω (low-passed) and ω̇ of one sensor; ã = a + K r with K = [ω̇]× + [ω]×² (Eqs. 5.3–5.4).
+// ω (low-passed) and ω̇ of one sensor; ã = a + K r with K = [ω̇]× + [ω]×² (Eqs. 5.3–5.4). ω̇ is the
+// central difference of ω (one-sided at the ends), formed where it is used rather than stored: it is
+// read about twenty times per sample, and one more array per sensor costs more in memory traffic.
 struct Kinematics {
-    std::vector<Vec3> omega, omegaDot;
+    std::vector<Vec3> omega;
+    double rate = 0.0;  // 1 / ts
+    Vec3 omegaDot(std::size_t i) const {
+        const std::size_t last = omega.size() - 1;
+        if (i == 0 || i == last) return (omega[std::min(last, i + 1)] - omega[i == 0 ? 0 : i - 1]) * rate;
+        return (omega[i + 1] - omega[i - 1]) * (0.5 * rate);
+    }
     Mat3 k(std::size_t i) const {
         const Mat3 w = skew(omega[i]);
-        return skew(omegaDot[i]) + w * w;
+        return skew(omegaDot(i)) + w * w;
     }
+    // ω × (ω × r) written as ω (ω·r) − r |ω|² (fewer operations than two cross products).
     Vec3 virtualAcc(const Vec3& a, std::size_t i, const Vec3& r) const {
-        return a + omegaDot[i].cross(r) + omega[i].cross(omega[i].cross(r));
+        const Vec3& w = omega[i];
+        return a + omegaDot(i).cross(r) + w * w.dot(r) - r * w.squaredNorm();
     }
 };
 
@@ -66,13 +77,6 @@ Vec4 dominantEigenvector(const Mat4& m, const Vec4* guess) {
     return es.eigenvectors().col(3);
 }
 
-// Normalised linear interpolation: SLERP to within 1e-6 rad for the small steps between window
-// estimates (≤ a few degrees), at a fraction of its cost.
-Quat nlerp(const Quat& a, const Quat& b, double t) {
-    const double sign = a.dot(b) < 0.0 ? -1.0 : 1.0;
-    return Quat((1.0 - t) * a.coeffs() + sign * t * b.coeffs()).normalized();
-}
-
 // SLERP from a to b (Shoemake 1985) for many t: the angle and its sine once per pair, and one sincos
 // per sample (sin((1−t)θ) = sin θ cos tθ − cos θ sin tθ); equal to math::slerp up to rounding.
 class SlerpSegment {
@@ -99,6 +103,31 @@ public:
         const double st = std::sin(t * theta_), ct = std::cos(t * theta_);
         r.coeffs() = (ct - cotTheta_ * st) * a_ + (st * invSin_) * b_;
         return r;
+    }
+    // at(i / m) for i = 1 … m − 1, passed to visit(i, q). sin(iΔ) and cos(iΔ), Δ = θ / m, advance by the
+    // angle-addition formulas and are recomputed exactly every 256 steps, so the rounding error stays
+    // near 1e-13 and the sweep needs no sincos per sample.
+    template <class Visit>
+    void sweep(std::size_t m, Visit&& visit) const {
+        if (linear_) {
+            for (std::size_t i = 1; i < m; ++i) visit(i, at(double(i) / double(m)));
+            return;
+        }
+        const double step = theta_ / double(m), cd = std::cos(step), sd = std::sin(step);
+        double c = 1.0, sn = 0.0;
+        for (std::size_t i = 1; i < m; ++i) {
+            if (i % 256 == 0) {
+                sn = std::sin(double(i) * step);
+                c = std::cos(double(i) * step);
+            } else {
+                const double next = c * cd - sn * sd;
+                sn = sn * cd + c * sd;
+                c = next;
+            }
+            Quat r;
+            r.coeffs() = (c - cotTheta_ * sn) * a_ + (sn * invSin_) * b_;
+            visit(i, r);
+        }
     }
 
 private:
@@ -249,16 +278,16 @@ bool DriftReduction::windowedWahba(const std::vector<Vec3>& from, const std::vec
         rotation.push_back(Quat(properRotation(bm + prior * bm.norm() * Mat3::Identity())).normalized());
     }
     if (at.empty()) return false;
-    std::size_t j = 0;
-    for (std::size_t k = 0; k < n; ++k) {
-        while (j + 1 < at.size() && at[j + 1] <= k) ++j;
-        if (k <= at.front())
-            out[k] = rotation.front();
-        else if (j + 1 >= at.size())
-            out[k] = rotation.back();
-        else
-            out[k] = nlerp(rotation[j], rotation[j + 1], double(k - at[j]) / double(at[j + 1] - at[j]));
+    // Held before the first and after the last estimate, SLERP in between.
+    for (std::size_t k = 0; k <= at.front(); ++k) out[k] = rotation.front();
+    for (std::size_t j = 0; j + 1 < at.size(); ++j) {
+        const std::size_t first = at[j];
+        SlerpSegment(rotation[j], rotation[j + 1]).sweep(at[j + 1] - first, [&](std::size_t i, const Quat& r) {
+            out[first + i] = r;
+        });
+        out[at[j + 1]] = rotation[j + 1];
     }
+    for (std::size_t k = at.back() + 1; k < n; ++k) out[k] = rotation.back();
     return true;
 }
 
@@ -315,10 +344,10 @@ DriftReduction::Result DriftReduction::run(const std::vector<Segment>& segments,
             };
             apply(0, std::min(n, anchor.front() + 1), anchorDelta.front());
             for (std::size_t j = 0; j + 1 < anchor.size(); ++j) {
-                const SlerpSegment segment(anchorDelta[j], anchorDelta[j + 1]);
-                const double span = double(anchor[j + 1] - anchor[j]);
-                for (std::size_t k = anchor[j] + 1; k < anchor[j + 1]; ++k)
-                    q[k] = (segment.at(double(k - anchor[j]) / span) * q[k]).normalized();
+                const std::size_t first = anchor[j];
+                SlerpSegment(anchorDelta[j], anchorDelta[j + 1])
+                    .sweep(anchor[j + 1] - first,
+                           [&](std::size_t i, const Quat& d) { q[first + i] = (d * q[first + i]).normalized(); });
                 q[anchor[j + 1]] = (anchorDelta[j + 1] * q[anchor[j + 1]]).normalized();
             }
             apply(anchor.back() + 1, n, anchorDelta.back());
@@ -351,11 +380,7 @@ DriftReduction::Result DriftReduction::run(const std::vector<Segment>& segments,
     std::vector<Kinematics> kin(segments.size());
     for (std::size_t s = 0; s < segments.size(); ++s) {
         kin[s].omega = zeroPhaseLowPass(segments[s].gyr, p.gyrCutoff, ts);
-        kin[s].omegaDot.resize(n);
-        for (std::size_t k = 0; k < n; ++k) {
-            const std::size_t a = k == 0 ? 0 : k - 1, b = std::min(n - 1, k + 1);
-            kin[s].omegaDot[k] = (kin[s].omega[b] - kin[s].omega[a]) / (double(b - a) * ts);
-        }
+        kin[s].rate = 1.0 / ts;
     }
     if (!report(0.2)) return cancelled();
 
@@ -464,7 +489,8 @@ DriftReduction::Result DriftReduction::run(const std::vector<Segment>& segments,
     };
 
     const auto halfWidth = static_cast<std::size_t>(std::lround(p.window / ts));
-    std::vector<Quat> delta(n), smoothed(n);
+    std::vector<Quat> delta, smoothed(n);  // delta: per-sample drifts of the Markley estimator only
+    if (p.estimator == Estimator::Markley) delta.resize(n);
     std::vector<unsigned char> valid(n);
     const int minCount =
         std::max(p.minWindowSamples, static_cast<int>(std::lround(p.minWindowShare * double(2 * halfWidth + 1))));
@@ -525,18 +551,20 @@ DriftReduction::Result DriftReduction::run(const std::vector<Segment>& segments,
         for (std::size_t l = 0; l < links.size(); ++l)
             if (headingKept(l)) keepsCorrection[static_cast<std::size_t>(links[l].proximal)] = 1;
         std::vector<std::vector<Quat>> passCorrection(segments.size());
+        std::vector<std::vector<Quat>> rootDriftStore;
         const std::size_t passes = (p.azimuthPass ? 2 : 1) * static_cast<std::size_t>(std::max(1, p.iterations));
         for (std::size_t pass = 0; pass < passes; ++pass) {
             const bool horizontal = p.azimuthPass && pass % 2 == 1;
             // Root: the mean of its drifts against every neighbour (Eqs. 5.12–5.13).
-            std::vector<std::vector<Quat>> rootDrifts;
+            std::size_t rootLinks = 0;
             for (std::size_t l = 0; l < links.size(); ++l) {
                 if (links[l].proximal != root) continue;
                 if (headingKept(l)) continue;
                 virtualAccelerations(q, links[l], result.links[l]);
-                rootDrifts.emplace_back();
-                smoothedDrift(gp, gd, horizontal, rootDrifts.back());
+                if (rootLinks == rootDriftStore.size()) rootDriftStore.emplace_back();  // kept between passes
+                smoothedDrift(gp, gd, horizontal, rootDriftStore[rootLinks++]);
             }
+            const std::span<const std::vector<Quat>> rootDrifts(rootDriftStore.data(), rootLinks);
             std::vector<Quat>& rootCorrection = passCorrection[static_cast<std::size_t>(root)];
             if (keepsCorrection[static_cast<std::size_t>(root)]) rootCorrection.assign(n, Quat::Identity());
             if (!rootDrifts.empty()) {
@@ -582,12 +610,14 @@ DriftReduction::Result DriftReduction::run(const std::vector<Segment>& segments,
                     const double share = smoothedDrift(gd, gp, horizontal, smoothed);
                     (horizontal ? lr.azimuthValidShare : lr.validShare) = share;
                 }
+                for (std::size_t k = 0; k < n; ++k) d[k] = (smoothed[k] * d[k]).normalized();
+                // The mean angle is a summary: sampled at the drift estimates' own spacing (wahbaStep),
+                // which spares an acos per sample.
                 double angle = 0.0;
-                for (std::size_t k = 0; k < n; ++k) {
-                    d[k] = (smoothed[k] * d[k]).normalized();
+                std::size_t count = 0;
+                for (std::size_t k = 0; k < n; k += wahbaStep, ++count)
                     angle += 2.0 * std::acos(std::clamp(std::abs(smoothed[k].w()), 0.0, 1.0));
-                }
-                lr.meanCorrection += angle / double(n);
+                lr.meanCorrection += angle / double(count);
                 if (keepsCorrection[id]) passCorrection[id] = smoothed;
             }
         }

@@ -120,7 +120,7 @@ public:
         double headingOffset = 0.0;      // rad, removed from the distal segment before the passes
         double validShare = 0.0;         // share of samples used in the first pass (Eqs. 5.6–5.8)
         double azimuthValidShare = 0.0;  // … in the azimuth pass
-        double meanCorrection = 0.0;     // rad, mean angle of the applied smoothed drift (both passes)
+        double meanCorrection = 0.0;     // rad, mean angle of the applied smoothed drift (both passes; every wahbaStep)
         int optimisationSamples = 0;
         bool distalExcitation = false;  // the fit also used samples where only the distal segment turned
         double optimisationCost = 0.0;  // m/s², mean |ã_d^G − ã_p^G| at the optimum
