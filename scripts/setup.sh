@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 
 PACKAGES=(build-essential cmake ccache pkg-config
   qt6-base-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-translations-l10n qt6-svg-dev libgl-dev
-  libeigen3-dev libceres-dev libopencv-dev libhdf5-dev libqcustomplot-dev
+  libeigen3-dev libceres-dev libopencv-dev libhdf5-dev libqcustomplot-dev libsleef-dev
   libgtest-dev libgmock-dev libbenchmark-dev libssl-dev
   slurmd slurmctld slurm-client munge)  # a single-node Slurm for tests/cli/batch_slurm.sh
 

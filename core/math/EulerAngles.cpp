@@ -20,7 +20,8 @@ Quat elementary(int axis, double angle) {
 // method", PLoS ONE 17(11), 2022: the quaternion is permuted so that the sequence becomes a proper
 // one about (i, j, k), the middle angle follows from |(c, d)| vs |(a, b)| and the outer angles from
 // two half-angle sums — no trigonometric matrix elements, so no precision loss near the poles.
-Vec3 extrinsicAngles(const Quat& quat, int i, int j, int k0) {
+// Step 1: the arguments of the three atan2 (middle angle, half sum, half difference).
+EulerAtan2Arguments extrinsicArguments(const Quat& quat, int i, int j, int k0) {
     const Vec4 q{quat.x(), quat.y(), quat.z(), quat.w()};  // components by axis index, w last
     const bool proper = (i == k0);
     const int k = proper ? 3 - i - j : k0;
@@ -37,12 +38,23 @@ Vec3 extrinsicAngles(const Quat& quat, int i, int j, int k0) {
         c = q[j] + q[3];
         d = q[k] * sign - q[i];
     }
-    Vec3 angles;
     // a, b, c, d are sums of two unit-quaternion components (|·| ≤ 2): the plain square roots cannot
     // overflow or underflow, and are several times faster than std::hypot.
-    angles[1] = 2.0 * std::atan2(std::sqrt(c * c + d * d), std::sqrt(a * a + b * b));
-    const double halfSum = std::atan2(b, a);
-    const double halfDiff = std::atan2(d, c);
+    EulerAtan2Arguments r;
+    r.y = {std::sqrt(c * c + d * d), b, d};
+    r.x = {std::sqrt(a * a + b * b), a, c};
+    return r;
+}
+
+// Step 2: the angles from the three atan2 values.
+Vec3 extrinsicFromAtan2(const std::array<double, 3>& atan2Values, int i, int j, int k0) {
+    const bool proper = (i == k0);
+    const int k = proper ? 3 - i - j : k0;
+    const double sign = static_cast<double>((i - j) * (j - k) * (k - i) / 2);
+    Vec3 angles;
+    angles[1] = 2.0 * atan2Values[0];
+    const double halfSum = atan2Values[1];
+    const double halfDiff = atan2Values[2];
     constexpr double eps = 1e-9;
     if (std::abs(angles[1]) <= eps) {  // gimbal lock: only θ1 + θ3 is defined
         angles[0] = 2.0 * halfSum;
@@ -60,6 +72,18 @@ Vec3 extrinsicAngles(const Quat& quat, int i, int j, int k0) {
     }
     for (int n = 0; n < 3; ++n) angles[n] = wrapAngle(angles[n]);
     return angles;
+}
+
+Vec3 extrinsicAngles(const Quat& quat, int i, int j, int k0) {
+    const EulerAtan2Arguments r = extrinsicArguments(quat, i, j, k0);
+    return extrinsicFromAtan2({std::atan2(r.y[0], r.x[0]), std::atan2(r.y[1], r.x[1]), std::atan2(r.y[2], r.x[2])}, i,
+                              j, k0);
+}
+
+// The axes of the extrinsic decomposition that a sequence reduces to: intrinsic (A, B, C) with
+// angles (a, b, c) is extrinsic (C, B, A) with angles (c, b, a).
+std::array<int, 3> extrinsicAxes(const EulerSequence& s) {
+    return s.intrinsic ? std::array<int, 3>{s.axes[2], s.axes[1], s.axes[0]} : s.axes;
 }
 
 }  // namespace
@@ -93,11 +117,22 @@ QString EulerSequence::name() const {
 }
 
 Vec3 eulerFromQuaternion(const Quat& q, const EulerSequence& s) {
-    const Quat u = q.normalized();
-    if (!s.intrinsic) return extrinsicAngles(u, s.axes[0], s.axes[1], s.axes[2]);
-    // Intrinsic (A, B, C) with angles (a, b, c) is extrinsic (C, B, A) with angles (c, b, a).
-    const Vec3 r = extrinsicAngles(u, s.axes[2], s.axes[1], s.axes[0]);
-    return {r[2], r[1], r[0]};
+    const Quat u(q.coeffs() * (1.0 / q.coeffs().norm()));  // normalised, one division
+    const std::array<int, 3> e = extrinsicAxes(s);
+    const Vec3 r = extrinsicAngles(u, e[0], e[1], e[2]);
+    return s.intrinsic ? Vec3(r[2], r[1], r[0]) : r;
+}
+
+EulerAtan2Arguments eulerAtan2Arguments(const Quat& q, const EulerSequence& s) {
+    const Quat u(q.coeffs() * (1.0 / q.coeffs().norm()));
+    const std::array<int, 3> e = extrinsicAxes(s);
+    return extrinsicArguments(u, e[0], e[1], e[2]);
+}
+
+Vec3 eulerFromAtan2(const std::array<double, 3>& atan2Values, const EulerSequence& s) {
+    const std::array<int, 3> e = extrinsicAxes(s);
+    const Vec3 r = extrinsicFromAtan2(atan2Values, e[0], e[1], e[2]);
+    return s.intrinsic ? Vec3(r[2], r[1], r[0]) : r;
 }
 
 Quat quaternionFromEuler(const Vec3& angles, const EulerSequence& s) {

@@ -31,6 +31,14 @@ struct EulerSequence {
 
 // Angles (rad) of q in the sequence, in the order of the sequence's name.
 Vec3 eulerFromQuaternion(const Quat& q, const EulerSequence& sequence);
+// The same decomposition in two steps, for batches whose atan2 calls are evaluated together
+// (vectorised): the three atan2 arguments (y, x) of q, then the angles from the three atan2 values.
+// eulerFromAtan2(s, {atan2(y[i], x[i])}) equals eulerFromQuaternion(q, s) exactly.
+struct EulerAtan2Arguments {
+    std::array<double, 3> y{}, x{};
+};
+EulerAtan2Arguments eulerAtan2Arguments(const Quat& q, const EulerSequence& sequence);
+Vec3 eulerFromAtan2(const std::array<double, 3>& atan2Values, const EulerSequence& sequence);
 // The quaternion composed from angles (rad) in the sequence.
 Quat quaternionFromEuler(const Vec3& angles, const EulerSequence& sequence);
 

@@ -2,9 +2,12 @@
 
 #include "core/math/Angles.h"
 #include "core/math/EulerAngles.h"
+#include "plugins/inertial/VectorMath.h"
 
 #include <QRegularExpression>
 #include <algorithm>
+#include <array>
+#include <cassert>
 #include <cmath>
 #include <limits>
 
@@ -32,6 +35,14 @@ Vec3 signs(Joint joint, Side side) {
 }
 
 double clampedAcos(double c) { return std::acos(std::clamp(c, -1.0, 1.0)); }
+
+Quat unit(const Quat& q) { return Quat(q.coeffs() * (1.0 / q.coeffs().norm())); }
+
+// R(q) e_y for a unit quaternion: the segment's long axis in the earth frame.
+Vec3 longAxis(const Quat& q) {
+    return {2.0 * (q.x() * q.y() - q.w() * q.z()), 1.0 - 2.0 * (q.x() * q.x() + q.z() * q.z()),
+            2.0 * (q.y() * q.z() + q.w() * q.x())};
+}
 
 }  // namespace
 
@@ -112,27 +123,68 @@ JointAngles::Sample JointAngles::sample(const Quat& proximalSensor, const Quat& 
     return s;
 }
 
-std::vector<JointAngles::Sample> JointAngles::updateBatch(std::span<const Quat> proximalSensor,
-                                                          std::span<const Quat> distalSensor) const {
+void JointAngles::updateBatch(std::span<const Quat> proximalSensor, std::span<const Quat> distalSensor,
+                              std::span<double> rows) const {
     const std::size_t n = std::min(proximalSensor.size(), distalSensor.size());
-    std::vector<Sample> out;
-    out.reserve(n);
+    assert(rows.size() >= n * kColumns);
     const Quat heading = math::headingRotation(params_.headingOffset);
+    const Vec3 sign = signs(params_.joint, params_.side);
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    for (std::size_t k = 0; k < n; ++k) {
-        if (proximalSensor[k].coeffs().allFinite() && distalSensor[k].coeffs().allFinite()) {
-            out.push_back(sample(proximalSensor[k], distalSensor[k], heading));
-        } else {
-            // A gap in either input (e.g. outside the other stream's span) is a gap in the angles.
-            Sample s;
-            s.angles = {nan, nan, nan};
-            s.cardan = Vec3::Constant(nan);
-            s.relative = Quat(nan, nan, nan, nan);
-            s.longAxisAngle = s.proximalInclination = s.distalInclination = nan;
-            out.push_back(s);
+    // As sample(), in blocks: first every sample's arguments of its three atan2 (the Cardan angles,
+    // core/math/EulerAngles.h) and three acos (long axes), then those 6 × block calls vectorised
+    // (VectorMath.h: they are most of the time), then the rows.
+    constexpr std::size_t kBlock = 256;
+    std::array<std::array<double, kBlock>, 3> atanY, atanX, cosine;
+    std::array<unsigned char, kBlock> gap;
+    for (std::size_t start = 0; start < n; start += kBlock) {
+        const std::size_t m = std::min(kBlock, n - start);
+        for (std::size_t i = 0; i < m; ++i) {
+            const Quat& ps = proximalSensor[start + i];
+            const Quat& ds = distalSensor[start + i];
+            gap[i] = !ps.coeffs().allFinite() || !ds.coeffs().allFinite();
+            if (gap[i]) {  // a gap in either input (e.g. outside the other stream's span) is a gap in the angles
+                for (int c = 0; c < 3; ++c) atanY[c][i] = atanX[c][i] = cosine[c][i] = 0.0;
+                continue;
+            }
+            // One division per normalisation, the long axes as the rotation matrices' second columns.
+            const Quat proximal = unit(ps * params_.proximalMount);
+            const Quat distal = unit(heading * ds * params_.distalMount);
+            Quat relative = proximal.conjugate() * distal;
+            if (relative.w() < 0.0) relative.coeffs() = -relative.coeffs();                  // canonical: w ≥ 0
+            const math::EulerAtan2Arguments a = math::eulerAtan2Arguments(relative, zxy());  // normalises
+            const Vec3 yp = longAxis(proximal), yd = longAxis(distal);
+            for (int c = 0; c < 3; ++c) {
+                atanY[c][i] = a.y[c];
+                atanX[c][i] = a.x[c];
+            }
+            cosine[0][i] = yp.dot(yd);
+            cosine[1][i] = yp.z();
+            cosine[2][i] = yd.z();
+        }
+        for (int c = 0; c < 3; ++c) {
+            atan2Batch(std::span(atanY[c]).first(m), std::span(atanX[c]).first(m), atanY[c]);
+            acosBatch(std::span(cosine[c]).first(m), cosine[c]);
+        }
+        for (std::size_t i = 0; i < m; ++i) {
+            double* row = rows.data() + (start + i) * kColumns;
+            if (gap[i]) {
+                std::fill(row, row + kColumns, nan);
+                continue;
+            }
+            const Vec3 cardan = math::eulerFromAtan2({atanY[0][i], atanY[1][i], atanY[2][i]}, zxy());
+            for (int c = 0; c < 3; ++c) {
+                row[c] = cardan[c] * sign[c];
+                row[3 + c] = cosine[c][i];
+            }
         }
     }
-    return out;
+}
+
+std::vector<double> JointAngles::updateBatch(std::span<const Quat> proximalSensor,
+                                             std::span<const Quat> distalSensor) const {
+    std::vector<double> rows(std::min(proximalSensor.size(), distalSensor.size()) * kColumns);
+    updateBatch(proximalSensor, distalSensor, rows);
+    return rows;
 }
 
 double JointAngles::estimateHeadingOffset(std::span<const Quat> proximalSensor, std::span<const Quat> distalSensor,

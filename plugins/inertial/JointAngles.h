@@ -90,8 +90,16 @@ public:
     const Params& params() const { return params_; }
     // One sample from the two sensor→earth orientations.
     Sample update(const math::Quat& proximalSensor, const math::Quat& distalSensor) const;
-    // Every sample of two equally long sequences.
-    std::vector<Sample> updateBatch(std::span<const math::Quat> proximalSensor,
+    // The columns of a batch, in order (all rad): flexion, abduction, rotation, long_axis_angle,
+    // proximal_inclination, distal_inclination (the joint-angles stream's layout).
+    static constexpr std::size_t kColumns = 6;
+    // Every sample of two sequences (the shorter one's length n) as rows of kColumns values, row-major,
+    // written to rows (size ≥ n × kColumns); a gap (non-finite quaternion) in either input is a row of
+    // NaN. Only the six values are formed, not a Sample per sample: at 500 Hz over 10 minutes a
+    // Sample array is 31 MB per joint, four times the rows.
+    void updateBatch(std::span<const math::Quat> proximalSensor, std::span<const math::Quat> distalSensor,
+                     std::span<double> rows) const;
+    std::vector<double> updateBatch(std::span<const math::Quat> proximalSensor,
                                     std::span<const math::Quat> distalSensor) const;
 
     // Heading offset (rad, about earth z) to apply to the distal sensor's earth frame so that both

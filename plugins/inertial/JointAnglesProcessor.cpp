@@ -186,19 +186,10 @@ Expected<std::vector<ProcessorOutput>> JointAnglesProcessor::run(const RunContex
     }
     if (context.isCancelled()) return cancelledError();
     const JointAngles joint(plan->params);
-    const std::vector<JointAngles::Sample> samples = joint.updateBatch(plan->qProximal, plan->qDistal);
-    StreamData out(samples.size(), 6);
-    out.t = t;
-    for (std::size_t k = 0; k < samples.size(); ++k) {
-        const JointAngles::Sample& s = samples[k];
-        double* row = &out.values[k * 6];
-        row[0] = s.angles.flexion;
-        row[1] = s.angles.abduction;
-        row[2] = s.angles.rotation;
-        row[3] = s.longAxisAngle;
-        row[4] = s.proximalInclination;
-        row[5] = s.distalInclination;
-    }
+    const std::size_t n = std::min(plan->qProximal.size(), plan->qDistal.size());
+    StreamData out(n, static_cast<int>(JointAngles::kColumns));  // the batch's column order is the stream's
+    out.t.assign(t.begin(), t.begin() + static_cast<std::ptrdiff_t>(n));
+    joint.updateBatch(plan->qProximal, plan->qDistal, out.values);
     context.report(1.0);
     const QJsonObject attributes{
         {"joint", jointName(plan->params.joint)},

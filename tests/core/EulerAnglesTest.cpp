@@ -87,3 +87,24 @@ TEST(EulerAngles, RejectsBadSequences) {
         EXPECT_TRUE(s.message().contains(QLatin1String(bad)));
     }
 }
+
+// The two-step form used by batches gives exactly the one-step angles, gimbal lock included.
+TEST(EulerAngles, TwoStepEqualsOneStep) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (const QString& base : kSequences) {
+        for (const QString& name : {base, base.toLower()}) {
+            const EulerSequence seq = *EulerSequence::parse(name);
+            for (int i = 0; i < 200; ++i) {
+                Quat q = Quat(u(rng), u(rng), u(rng), u(rng)).normalized();
+                if (i % 10 == 0)
+                    q = quaternionFromEuler(Vec3(u(rng), seq.isProper() ? 0.0 : std::numbers::pi / 2, u(rng)), seq);
+                const EulerAtan2Arguments a = eulerAtan2Arguments(q, seq);
+                const Vec3 twoStep = eulerFromAtan2(
+                    {std::atan2(a.y[0], a.x[0]), std::atan2(a.y[1], a.x[1]), std::atan2(a.y[2], a.x[2])}, seq);
+                const Vec3 oneStep = eulerFromQuaternion(q, seq);
+                for (int k = 0; k < 3; ++k) EXPECT_EQ(twoStep[k], oneStep[k]) << qPrintable(name) << " sample " << i;
+            }
+        }
+    }
+}

@@ -147,13 +147,16 @@ int main(int argc, char** argv) {
             jp.side = info.side;
             jp.proximalMount = result->segments[std::size_t(pi)].mount;
             jp.distalMount = result->segments[std::size_t(di)].mount;
-            const auto samples = JointAngles(jp).updateBatch(sim.sensors[pi].sensor, sim.sensors[di].sensor);
+            const auto rows = JointAngles(jp).updateBatch(sim.sensors[pi].sensor, sim.sensors[di].sensor);
+            const std::size_t count = rows.size() / JointAngles::kColumns;
             std::array<double, 3> sq{};
-            for (std::size_t k = 0; k < samples.size(); ++k) {
-                const math::Vec3 d = samples[k].angles.vector() - sim.joints[j].angles[k].vector();
+            for (std::size_t k = 0; k < count; ++k) {
+                const math::Vec3 d = math::Vec3(rows[k * JointAngles::kColumns], rows[k * JointAngles::kColumns + 1],
+                                                rows[k * JointAngles::kColumns + 2]) -
+                                     sim.joints[j].angles[k].vector();
                 for (int i = 0; i < 3; ++i) sq[i] += d[i] * d[i];
             }
-            for (int i = 0; i < 3; ++i) jointRmse[j][i] += std::sqrt(sq[i] / double(samples.size())) / kDeg;
+            for (int i = 0; i < 3; ++i) jointRmse[j][i] += std::sqrt(sq[i] / double(count)) / kDeg;
         }
     }
     std::printf("seeds %d, noise x%.2f: calibrated %d, all 5 movements with 3 repetitions found in %d\n", seeds, noise,

@@ -15,6 +15,7 @@
 #include <QTemporaryDir>
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <numbers>
 #include <random>
 
@@ -113,6 +114,46 @@ TEST(JointAngles, CombinedRotationsReconstructTheRelativeRotation) {
                 expectAngles(s.angles, flex, abd, rotation, 1e-8);
                 EXPECT_LT(s.relative.angularDistance(relative), 1e-9);
             }
+    }
+}
+
+// The batch (blocks of vectorised acos/atan2) gives the rows of update() to a few ULP, including a
+// length that is not a multiple of the block, a heading offset, gaps and unnormalised inputs.
+TEST(JointAngles, BatchRowsEqualPerSampleUpdate) {
+    std::mt19937 rng(21);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (Side side : {Side::Right, Side::Left}) {
+        JointAngles::Params p;
+        p.joint = Joint::Hip;
+        p.side = side;
+        p.proximalMount = math::quatFromRotationVector(Vec3(u(rng), u(rng), u(rng)));
+        p.distalMount = math::quatFromRotationVector(Vec3(u(rng), u(rng), u(rng)));
+        p.headingOffset = 0.7;
+        const std::size_t n = 1000;
+        std::vector<Quat> proximal(n), distal(n);
+        for (std::size_t k = 0; k < n; ++k) {
+            proximal[k] = math::quatFromRotationVector(Vec3(u(rng), u(rng), u(rng)) * 3.0);
+            distal[k] = math::quatFromRotationVector(Vec3(u(rng), u(rng), u(rng)) * 3.0);
+        }
+        proximal[5].coeffs() *= 1.001;  // a stored quaternion slightly off unit length
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        proximal[300] = Quat(nan, nan, nan, nan);
+        distal[999] = Quat(nan, 0, 0, 0);
+        const JointAngles joint(p);
+        const std::vector<double> rows = joint.updateBatch(proximal, distal);
+        ASSERT_EQ(rows.size(), n * JointAngles::kColumns);
+        for (std::size_t k = 0; k < n; ++k) {
+            const double* row = &rows[k * JointAngles::kColumns];
+            if (k == 300 || k == 999) {
+                for (std::size_t c = 0; c < JointAngles::kColumns; ++c) EXPECT_TRUE(std::isnan(row[c]));
+                continue;
+            }
+            const JointAngles::Sample s = joint.update(proximal[k], distal[k]);
+            const double expected[] = {s.angles.flexion, s.angles.abduction,    s.angles.rotation,
+                                       s.longAxisAngle,  s.proximalInclination, s.distalInclination};
+            for (std::size_t c = 0; c < JointAngles::kColumns; ++c)
+                EXPECT_NEAR(row[c], expected[c], 1e-12) << "sample " << k << " column " << c;
+        }
     }
 }
 
