@@ -3495,6 +3495,22 @@
         <source>none</source>
         <translation>keine</translation>
     </message>
+    <message>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <source>from the motion</source>
+        <translation>aus der Bewegung</translation>
+    </message>
+    <message>
+        <source>gaitmap files whose first column is a sample index: the sampling rate. Left at &quot;from the motion&quot;, it is estimated from the foot&apos;s rest phases and the import warns with the candidates&apos; scores (athlos import --rate)</source>
+        <translation>gaitmap-Dateien, deren erste Spalte ein Probenindex ist: die Abtastrate. Bei „aus der Bewegung“ wird sie aus den Ruhephasen des Fußes geschätzt, und der Import warnt mit den Bewertungen der Kandidaten (athlos import --rate)</translation>
+    </message>
+    <message>
+        <source>Sampling rate:</source>
+        <translation>Abtastrate:</translation>
+    </message>
 </context>
 <context>
     <name>athlos::ui::ItemDescription</name>

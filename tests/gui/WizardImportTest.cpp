@@ -15,6 +15,7 @@
 #include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
@@ -255,6 +256,40 @@ private slots:
         QCOMPARE(recording->annotations[0].label, QStringLiteral("stand"));
         QCOMPARE(recording->annotations[1].label, QStringLiteral("walk"));
         QCOMPARE(recording->annotations[1].tStart, 0.04);
+    }
+
+    // A gaitmap file whose first column is a sample index: the rate typed in the wizard is used
+    // (athlos import --rate), and the field is off for formats that have a time column.
+    void gaitmapSampleIndexRate() {
+        QByteArray text =
+            ",left_sensor,left_sensor,left_sensor,left_sensor,left_sensor,left_sensor\n"
+            ",acc_x,acc_y,acc_z,gyr_x,gyr_y,gyr_z\n";
+        for (int i = 0; i < 50; ++i) text += QByteArray::number(i) + ",0,0,9.81,0,0,0\n";
+        const QString file = write(QStringLiteral("gm/walk.csv"), text);
+        RecordingWorkspace ws(project_.get());
+        ImportWizard wizard(ws);
+        wizard.setShowProgress(false);
+        wizard.show();
+        wizard.addFiles({file});
+        wizard.next();
+        auto* format = child<QComboBox>(&wizard, "formatCombo");
+        auto* rate = child<QDoubleSpinBox>(&wizard, "rateSpin");
+        format->setCurrentIndex(format->findData(QStringLiteral("csv")));
+        QVERIFY(!rate->isEnabled());
+        format->setCurrentIndex(format->findData(QStringLiteral("gaitmap")));
+        QVERIFY(rate->isEnabled());
+        QCOMPARE(rate->value(), 0.0);  // "from the motion"
+        rate->setValue(204.8);
+        QVERIFY(wizard.mappingPage()->validatePage());
+        QCOMPARE(wizard.optionsFor(0).rate, 204.8);
+        wizard.next();
+        QVERIFY2(wizard.problems().isEmpty(), qPrintable(wizard.problems().join('\n')));
+        QVERIFY2(wizard.importAll(), qPrintable(wizard.lastError()));
+        const Stream* stream = project_->stream(QStringLiteral("walk/left-foot"));
+        QVERIFY(stream);
+        QCOMPARE(stream->info().attributes.value(QStringLiteral("sampling_rate_source")).toString(),
+                 QStringLiteral("given"));
+        QVERIFY(std::abs((**stream->data()).t[10] - 10.0 / 204.8) < 1e-12);
     }
 
     void existingNamesAreFlaggedUntilOverwrite() {

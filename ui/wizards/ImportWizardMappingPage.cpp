@@ -6,6 +6,7 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -128,6 +129,17 @@ ImportWizardMappingPage::ImportWizardMappingPage(ImportWizard& wizard) : wizard_
     whenRow->addWidget(new QLabel(tr("Start:"), this));
     whenRow->addWidget(startEdit_, 2);
     names->addRow(tr("Date:"), whenRow);
+    rateSpin_ = new QDoubleSpinBox(this);
+    rateSpin_->setObjectName(QStringLiteral("rateSpin"));
+    rateSpin_->setRange(0.0, 100000.0);
+    rateSpin_->setDecimals(3);
+    rateSpin_->setSuffix(tr(" Hz"));
+    rateSpin_->setSpecialValueText(tr("from the motion"));
+    rateSpin_->setToolTip(
+        tr("gaitmap files whose first column is a sample index: the sampling rate. Left at \"from "
+           "the motion\", it is estimated from the foot's rest phases and the import warns with "
+           "the candidates' scores (athlos import --rate)"));
+    names->addRow(tr("Sampling rate:"), rateSpin_);
     auto* labelRow = new QHBoxLayout;
     labelCombo_ = new QComboBox(this);
     labelCombo_->setObjectName(QStringLiteral("labelCombo"));
@@ -297,6 +309,8 @@ void ImportWizardMappingPage::load() {
         w->setEnabled(p.mappable);
     dateEdit_->setText(s.options.date);
     startEdit_->setText(s.options.start);
+    rateSpin_->setEnabled(s.options.format == QLatin1String("gaitmap"));
+    rateSpin_->setValue(s.options.rate);
     labelNamesEdit_->setText(labelNamesText(s.options.labelNames));
     dropUnmappedBox_->setChecked(s.options.dropUnmapped);
     mappingTable_->resizeColumnToContents(SourceColumn);
@@ -347,6 +361,7 @@ void ImportWizardMappingPage::store() {
     s.recording = recordingEdit_->text().trimmed();
     s.stream = streamEdit_->text().trimmed();
     s.athlete = athleteEdit_->text().trimmed();
+    s.options.rate = s.options.format == QLatin1String("gaitmap") ? rateSpin_->value() : 0.0;
     const ImportPreview& p = s.preview;
     if (!p.mappable || mappingTable_->rowCount() != int(p.columns.size())) return;
 

@@ -9,6 +9,7 @@
 class QCheckBox;
 class QComboBox;
 class QLabel;
+class QDoubleSpinBox;
 class QLineEdit;
 class QTableWidget;
 
@@ -56,6 +57,7 @@ private:
     QLineEdit* athleteEdit_ = nullptr;
     QLineEdit* dateEdit_ = nullptr;
     QLineEdit* startEdit_ = nullptr;
+    QDoubleSpinBox* rateSpin_ = nullptr;  // gaitmap sample-index files: Hz, 0 = from the motion
     QComboBox* labelCombo_ = nullptr;
     QLineEdit* labelNamesEdit_ = nullptr;
     QCheckBox* dropUnmappedBox_ = nullptr;
