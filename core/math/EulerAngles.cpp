@@ -74,12 +74,6 @@ Vec3 extrinsicFromAtan2(const std::array<double, 3>& atan2Values, int i, int j, 
     return angles;
 }
 
-Vec3 extrinsicAngles(const Quat& quat, int i, int j, int k0) {
-    const EulerAtan2Arguments r = extrinsicArguments(quat, i, j, k0);
-    return extrinsicFromAtan2({std::atan2(r.y[0], r.x[0]), std::atan2(r.y[1], r.x[1]), std::atan2(r.y[2], r.x[2])}, i,
-                              j, k0);
-}
-
 // The axes of the extrinsic decomposition that a sequence reduces to: intrinsic (A, B, C) with
 // angles (a, b, c) is extrinsic (C, B, A) with angles (c, b, a).
 std::array<int, 3> extrinsicAxes(const EulerSequence& s) {
@@ -117,14 +111,12 @@ QString EulerSequence::name() const {
 }
 
 Vec3 eulerFromQuaternion(const Quat& q, const EulerSequence& s) {
-    const Quat u(q.coeffs() * (1.0 / q.coeffs().norm()));  // normalised, one division
-    const std::array<int, 3> e = extrinsicAxes(s);
-    const Vec3 r = extrinsicAngles(u, e[0], e[1], e[2]);
-    return s.intrinsic ? Vec3(r[2], r[1], r[0]) : r;
+    const EulerAtan2Arguments a = eulerAtan2Arguments(q, s);
+    return eulerFromAtan2({std::atan2(a.y[0], a.x[0]), std::atan2(a.y[1], a.x[1]), std::atan2(a.y[2], a.x[2])}, s);
 }
 
 EulerAtan2Arguments eulerAtan2Arguments(const Quat& q, const EulerSequence& s) {
-    const Quat u(q.coeffs() * (1.0 / q.coeffs().norm()));
+    const Quat u(q.coeffs() * (1.0 / q.coeffs().norm()));  // normalised, one division
     const std::array<int, 3> e = extrinsicAxes(s);
     return extrinsicArguments(u, e[0], e[1], e[2]);
 }

@@ -36,6 +36,7 @@ Vec3 signs(Joint joint, Side side) {
 
 double clampedAcos(double c) { return std::acos(std::clamp(c, -1.0, 1.0)); }
 
+// Normalised with one division.
 Quat unit(const Quat& q) { return Quat(q.coeffs() * (1.0 / q.coeffs().norm())); }
 
 // R(q) e_y for a unit quaternion: the segment's long axis in the earth frame.
@@ -105,18 +106,18 @@ JointAngles::Sample JointAngles::update(const Quat& proximalSensor, const Quat& 
     return sample(proximalSensor, distalSensor, math::headingRotation(params_.headingOffset));
 }
 
-// One sample with the heading rotation given (constant over a batch, so its sine and cosine are
-// computed once); each segment's long axis y is rotated once and shared by the three 2D angles.
+// One sample with the heading rotation given; each segment's long axis (its rotation matrix's second
+// column) is shared by the three 2D angles. updateBatch computes the same in blocks.
 JointAngles::Sample JointAngles::sample(const Quat& proximalSensor, const Quat& distalSensor,
                                         const Quat& heading) const {
-    const Quat proximal = (proximalSensor * params_.proximalMount).normalized();
-    const Quat distal = (heading * distalSensor * params_.distalMount).normalized();
+    const Quat proximal = unit(proximalSensor * params_.proximalMount);
+    const Quat distal = unit(heading * distalSensor * params_.distalMount);
     Sample s;
-    s.relative = (proximal.conjugate() * distal).normalized();
+    s.relative = unit(proximal.conjugate() * distal);
     if (s.relative.w() < 0.0) s.relative.coeffs() = -s.relative.coeffs();  // canonical: w ≥ 0
     s.cardan = math::eulerFromQuaternion(s.relative, zxy());
     s.angles = anatomicalFromCardan(s.cardan, params_.joint, params_.side);
-    const Vec3 yp = proximal * Vec3::UnitY(), yd = distal * Vec3::UnitY();
+    const Vec3 yp = longAxis(proximal), yd = longAxis(distal);
     s.longAxisAngle = clampedAcos(yp.dot(yd));
     s.proximalInclination = clampedAcos(yp.z());
     s.distalInclination = clampedAcos(yd.z());
@@ -146,7 +147,6 @@ void JointAngles::updateBatch(std::span<const Quat> proximalSensor, std::span<co
                 for (int c = 0; c < 3; ++c) atanY[c][i] = atanX[c][i] = cosine[c][i] = 0.0;
                 continue;
             }
-            // One division per normalisation, the long axes as the rotation matrices' second columns.
             const Quat proximal = unit(ps * params_.proximalMount);
             const Quat distal = unit(heading * ds * params_.distalMount);
             Quat relative = proximal.conjugate() * distal;
