@@ -954,6 +954,10 @@
         <source>The joint heading is fitted on samples whose horizontal ã exceed azimuth_min_norm (Eqs. 6.12–6.13); below this weighted mean resultant length of their heading differences (circular statistics, Mardia &amp; Jupp 2000; 0.5 ≈ 68° circular SD), or with fewer samples than a window needs, the heading is unobservable and the joint is left uncorrected (attribute heading_aligned=false: align it with joint-angles heading=align-start).</source>
         <translation>Die Gelenk-Kursrichtung wird an Samples angepasst, deren horizontales ã azimuth_min_norm übersteigt (Gl. 6.12–6.13); unterhalb dieser gewichteten mittleren resultierenden Länge ihrer Kursdifferenzen (zirkuläre Statistik, Mardia &amp; Jupp 2000; 0,5 ≈ 68° zirkuläre Standardabweichung) oder mit weniger Samples, als ein Fenster braucht, ist die Kursrichtung nicht beobachtbar und das Gelenk bleibt unkorrigiert (Attribut heading_aligned=false: mit joint-angles heading=align-start ausrichten).</translation>
     </message>
+    <message>
+        <source>The drift estimates of the correction passes use every k-th sample, k the largest whole number with rate / k ≥ this; the correction applies to every sample. 0 = every sample. Preset: on-snow 100 Hz (skiing at 500 Hz: joint angles within 0.01° of every sample), indoor 0 (walking has few valid samples).</source>
+        <translation>Die Driftschätzungen der Korrekturdurchgänge verwenden jedes k-te Sample, k die größte ganze Zahl mit Rate / k ≥ diesem Wert; die Korrektur gilt für jedes Sample. 0 = jedes Sample. Vorgabe: on-snow 100 Hz (Skifahren mit 500 Hz: Gelenkwinkel innerhalb 0,01° von jedem Sample), indoor 0 (Gehen hat wenige gültige Samples).</translation>
+    </message>
 </context>
 <context>
     <name>athlos::inertial::FunctionalCalibrationProcessor</name>

@@ -239,10 +239,15 @@ bool DriftReduction::windowedMean(const std::vector<Quat>& q, const std::vector<
 
 bool DriftReduction::windowedWahba(const std::vector<Vec3>& from, const std::vector<Vec3>& to,
                                    const std::vector<unsigned char>& valid, std::size_t halfWidth, std::size_t step,
-                                   int minCount, bool aboutVertical, std::vector<Quat>& out, double prior) {
+                                   int minCount, bool aboutVertical, std::vector<Quat>& out, double prior,
+                                   std::size_t stride, std::size_t outSize) {
     const std::size_t n = from.size();
-    out.assign(n, Quat::Identity());
-    if (n == 0) return false;
+    stride = std::max<std::size_t>(1, stride);
+    const std::size_t size = std::max(outSize, n == 0 ? 0 : (n - 1) * stride + 1);
+    if (n == 0) {
+        out.assign(size, Quat::Identity());
+        return false;
+    }
     step = std::max<std::size_t>(1, step);
     // B = Σ to·fromᵀ over the window, kept as a running sum: the window only moves forward, so every
     // sample enters and leaves once.
@@ -277,17 +282,22 @@ bool DriftReduction::windowedWahba(const std::vector<Vec3>& from, const std::vec
         at.push_back(k);
         rotation.push_back(Quat(properRotation(bm + prior * bm.norm() * Mat3::Identity())).normalized());
     }
-    if (at.empty()) return false;
-    // Held before the first and after the last estimate, SLERP in between.
-    for (std::size_t k = 0; k <= at.front(); ++k) out[k] = rotation.front();
+    if (at.empty()) {
+        out.assign(size, Quat::Identity());
+        return false;
+    }
+    // Every output sample: held before the first and after the last estimate, SLERP in between (in
+    // output samples: estimate j is at output sample at[j]·stride).
+    out.resize(size);
+    for (std::size_t k = 0; k <= at.front() * stride; ++k) out[k] = rotation.front();
     for (std::size_t j = 0; j + 1 < at.size(); ++j) {
-        const std::size_t first = at[j];
-        SlerpSegment(rotation[j], rotation[j + 1]).sweep(at[j + 1] - first, [&](std::size_t i, const Quat& r) {
+        const std::size_t first = at[j] * stride, last = at[j + 1] * stride;
+        SlerpSegment(rotation[j], rotation[j + 1]).sweep(last - first, [&](std::size_t i, const Quat& r) {
             out[first + i] = r;
         });
-        out[at[j + 1]] = rotation[j + 1];
+        out[last] = rotation[j + 1];
     }
-    for (std::size_t k = at.back() + 1; k < n; ++k) out[k] = rotation.back();
+    for (std::size_t k = at.back() * stride + 1; k < size; ++k) out[k] = rotation.back();
     return true;
 }
 
@@ -477,30 +487,39 @@ DriftReduction::Result DriftReduction::run(const std::vector<Segment>& segments,
         lr.optimisationCost = best.value;
     };
 
-    // Virtual joint accelerations of both ends of a link with the orientations q.
-    std::vector<Vec3> gp(n), gd(n);
+    // The drift estimates use every `stride`-th sample (Params::estimationRate): ne samples, sample j of
+    // them being sample j·stride of the recording.
+    const std::size_t stride =
+        p.estimator == Estimator::Wahba && p.estimationRate > 0.0
+            ? std::max<std::size_t>(1, static_cast<std::size_t>(std::floor(1.0 / (ts * p.estimationRate) + 1e-9)))
+            : 1;
+    const std::size_t ne = (n - 1) / stride + 1;
+    const double te = ts * double(stride);  // their spacing
+
+    // Virtual joint accelerations of both ends of a link with the orientations q (at the estimation samples).
+    std::vector<Vec3> gp(ne), gd(ne);
     const auto virtualAccelerations = [&](const std::vector<std::vector<Quat>>& q, const Link& link,
                                           const LinkResult& lr) {
         const auto ip = static_cast<std::size_t>(link.proximal), id = static_cast<std::size_t>(link.distal);
-        for (std::size_t k = 0; k < n; ++k) {
-            gp[k] = q[ip][k] * kin[ip].virtualAcc(segments[ip].acc[k], k, lr.proximalToJoint);
-            gd[k] = q[id][k] * kin[id].virtualAcc(segments[id].acc[k], k, lr.distalToJoint);
+        for (std::size_t j = 0, k = 0; j < ne; ++j, k += stride) {
+            gp[j] = q[ip][k] * kin[ip].virtualAcc(segments[ip].acc[k], k, lr.proximalToJoint);
+            gd[j] = q[id][k] * kin[id].virtualAcc(segments[id].acc[k], k, lr.distalToJoint);
         }
     };
 
-    const auto halfWidth = static_cast<std::size_t>(std::lround(p.window / ts));
+    const auto halfWidth = static_cast<std::size_t>(std::lround(p.window / te));
     std::vector<Quat> delta, smoothed(n);  // delta: per-sample drifts of the Markley estimator only
     if (p.estimator == Estimator::Markley) delta.resize(n);
-    std::vector<unsigned char> valid(n);
+    std::vector<unsigned char> valid(ne);
     const int minCount =
         std::max(p.minWindowSamples, static_cast<int>(std::lround(p.minWindowShare * double(2 * halfWidth + 1))));
-    const auto wahbaStep = static_cast<std::size_t>(std::max(1L, std::lround(p.wahbaStep / ts)));
+    const auto wahbaStep = static_cast<std::size_t>(std::max(1L, std::lround(p.wahbaStep / te)));
     // Smoothed drift taking `from` onto `to` (Eqs. 5.6–5.11 + Markley mean); returns the share of valid samples.
     const auto smoothedDrift = [&](const std::vector<Vec3>& from, const std::vector<Vec3>& to, bool horizontal,
                                    std::vector<Quat>& out) {
         const double minNorm = horizontal ? p.azimuthMinNorm : p.minNorm;
         std::size_t used = 0;
-        for (std::size_t k = 0; k < n; ++k) {
+        for (std::size_t k = 0; k < ne; ++k) {
             Vec3 u = from[k], v = to[k];
             if (horizontal) u.z() = v.z() = 0.0;
             const double nu = u.norm(), nv = v.norm();
@@ -513,12 +532,13 @@ DriftReduction::Result DriftReduction::run(const std::vector<Segment>& segments,
             if (p.estimator == Estimator::Markley) delta[k] = ok ? Quat::FromTwoVectors(u, v) : Quat::Identity();
             used += ok;
         }
-        const bool any = p.estimator == Estimator::Markley
-                             ? windowedMean(delta, valid, halfWidth, minCount, out)
-                             // The azimuth pass's Wahba solution uses only the horizontal components.
-                             : windowedWahba(from, to, valid, halfWidth, wahbaStep, minCount, horizontal, out);
+        const bool any =
+            p.estimator == Estimator::Markley
+                ? windowedMean(delta, valid, halfWidth, minCount, out)
+                // The azimuth pass's Wahba solution uses only the horizontal components.
+                : windowedWahba(from, to, valid, halfWidth, wahbaStep, minCount, horizontal, out, 0.01, stride, n);
         if (!any) out.assign(n, Quat::Identity());
-        return double(used) / double(n);
+        return double(used) / double(ne);
     };
 
     // The correction itself (heading alignment, then the passes of Eqs. 5.12–5.14 / 6.12–6.13) of q.
@@ -615,7 +635,7 @@ DriftReduction::Result DriftReduction::run(const std::vector<Segment>& segments,
                 // which spares an acos per sample.
                 double angle = 0.0;
                 std::size_t count = 0;
-                for (std::size_t k = 0; k < n; k += wahbaStep, ++count)
+                for (std::size_t k = 0; k < n; k += wahbaStep * stride, ++count)
                     angle += 2.0 * std::acos(std::clamp(std::abs(smoothed[k].w()), 0.0, 1.0));
                 lr.meanCorrection += angle / double(count);
                 if (keepsCorrection[id]) passCorrection[id] = smoothed;

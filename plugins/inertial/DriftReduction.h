@@ -76,6 +76,15 @@ public:
         enum class Estimator { Markley, Wahba };
         Estimator estimator = Estimator::Wahba;
         double wahbaStep = 0.05;            // s
+        // The correction passes' drift estimates (virtual accelerations, valid samples, window sums) use
+        // every k-th sample, k the largest whole number with rate / k ≥ estimationRate (500 Hz → every
+        // 5th; 100 Hz and below: every sample); the correction is still applied to every sample. The drift
+        // changes over seconds and a window (±1.25 s) still holds 250 samples at 100 Hz. On the simulated
+        // 500 Hz skiing run (10 seeds) the joint-angle RMSE moved by ≤ 0.01° (at 50 Hz by ≤ 0.04°) while
+        // the passes ran about 4× faster; in walking, where few samples are valid, the hip rotation got
+        // 0.1–0.2° worse, so the indoor preset uses every sample (docs/validation/drift-reduction.md).
+        // 0 = every sample. The Markley estimator always uses every sample.
+        double estimationRate = 100.0;      // Hz
         bool alignHeading = true;           // remove a constant heading offset per joint first
         int minWindowSamples = 5;           // valid drift samples a window needs for an estimate …
         double minWindowShare = 0.1;        // … and this share of the window's samples
@@ -99,6 +108,7 @@ public:
         p.minNorm = 6.0;
         p.maxNormDifference = 1e9;
         p.maxRelativeDifference = 0.2;
+        p.estimationRate = 0.0;
         return p;
     }
 
@@ -151,10 +161,13 @@ public:
     // Returns false when no sample could be estimated (all identity then).
     // Per-sample solution of Wahba's problem over the valid pairs within ±halfWidth samples (rotation R
     // minimising Σ|R from − to|²), computed every `step` samples and interpolated by SLERP; with
-    // aboutVertical, R is restricted to rotations about earth z (the azimuth pass).
+    // aboutVertical, R is restricted to rotations about earth z (the azimuth pass). With stride > 1 the
+    // inputs are every stride-th sample (i ↦ output sample i·stride; halfWidth, step in input samples) and
+    // out gets max(outSize, (n − 1)·stride + 1) samples.
     static bool windowedWahba(const std::vector<math::Vec3>& from, const std::vector<math::Vec3>& to,
                               const std::vector<unsigned char>& valid, std::size_t halfWidth, std::size_t step,
-                              int minCount, bool aboutVertical, std::vector<math::Quat>& out, double prior = 0.01);
+                              int minCount, bool aboutVertical, std::vector<math::Quat>& out, double prior = 0.01,
+                              std::size_t stride = 1, std::size_t outSize = 0);
     static bool windowedMean(const std::vector<math::Quat>& q, const std::vector<unsigned char>& valid,
                              std::size_t halfWidth, int minCount, std::vector<math::Quat>& out);
 

@@ -77,6 +77,7 @@ Expected<Plan> makePlan(const RunContext& c) {
     num("window", p.window);
     num("azimuth_min_norm", p.azimuthMinNorm);
     num("min_heading_coherence", p.minHeadingCoherence);
+    num("estimation_rate", p.estimationRate);
     num("rest_th_gyr", p.rest.thGyr);
     num("rest_th_acc", p.rest.thAcc);
     const auto flag = [&](const char* name, bool& value) {
@@ -145,6 +146,11 @@ ParameterSpecs DriftReductionProcessor::parameters() const {
                                  "40°/s).")),
         ParameterSpec::number(QStringLiteral("window"), d.window, 0.01, kInf, QStringLiteral("s"),
                               tr("Half width of the Markley mean of the drift (1.25 s, Fasel 2017 ch. 5).")),
+        optionalNumber("estimation_rate", 0.0, kInf, "Hz",
+                       tr("The drift estimates of the correction passes use every k-th sample, k the largest whole "
+                          "number with rate / k ≥ this; the correction applies to every sample. 0 = every sample. "
+                          "Preset: on-snow 100 Hz (skiing at 500 Hz: joint angles within 0.01° of every sample), "
+                          "indoor 0 (walking has few valid samples).")),
         ParameterSpec::choice(
             QStringLiteral("estimator"), {QStringLiteral("wahba"), QStringLiteral("markley")}, QStringLiteral("wahba"),
             tr("Drift of a window: wahba — the rotation that best maps all its valid ã_d onto ã_p (least squares); "

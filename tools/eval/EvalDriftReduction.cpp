@@ -1,5 +1,8 @@
 // athlos-eval-drift-reduction [seeds=3] [algorithm=vqf|strapdown|offline] [scenario=skiing|walking]
 //                             [mounts=calibrated|true] [gyr_drift °/s = 0.15] [estimator=wahba|markley]
+//                             [rate=HZ] [estimation_rate=HZ]
+// (the last two anywhere, as key=value: the simulated sampling rate, default 100 Hz, and
+// DriftReduction::Params::estimationRate, 0 = every sample)
 // Joint-angle RMSE on the body simulator (BodySimulator: 8 IMUs, 2-minute skiing run, turns 27 m apart
 // at 20 m/s, gyroscope drift 0.15°/s, vibration, impacts) after 6D orientation, functional calibration
 // (upright + squats) and joint angles, WITHOUT and WITH drift reduction (DriftReduction, Fasel 2017
@@ -11,11 +14,25 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <vector>
 
 using namespace athlos;
 using namespace athlos::inertial;
 
-int main(int argc, char** argv) {
+int main(int rawArgc, char** rawArgv) {
+    // key=value options first; the rest are positional.
+    std::vector<char*> positional;
+    double rate = 0.0, estimationRate = -1.0;
+    for (int i = 0; i < rawArgc; ++i) {
+        if (!std::strncmp(rawArgv[i], "rate=", 5))
+            rate = std::atof(rawArgv[i] + 5);
+        else if (!std::strncmp(rawArgv[i], "estimation_rate=", 16))
+            estimationRate = std::atof(rawArgv[i] + 16);
+        else
+            positional.push_back(rawArgv[i]);
+    }
+    const int argc = static_cast<int>(positional.size());
+    char** argv = positional.data();
     const int seeds = argc > 1 ? std::max(1, std::atoi(argv[1])) : 3;
     eval::DriftEvaluationOptions options;
     if (argc > 2) {
@@ -41,6 +58,8 @@ int main(int argc, char** argv) {
     if (options.simulation.scenario == BodyScenario::Walking) options.reduction = DriftReduction::indoor();
     if (argc > 6 && !std::strcmp(argv[6], "markley"))
         options.reduction.estimator = DriftReduction::Params::Estimator::Markley;
+    if (rate > 0.0) options.simulation.rate = rate;
+    if (estimationRate >= 0.0) options.reduction.estimationRate = estimationRate;
 
     std::array<std::array<std::array<double, 3>, kBodyJoints>, 2> sum{};
     std::array<double, kBodySegments> calibration{}, inclination0{}, inclination1{};

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <numbers>
 #include <random>
 
 using namespace athlos;
@@ -165,6 +166,67 @@ TEST(DriftReduction, StaticCorrectionRemovesInclinationDriftAtRest) {
     }
     EXPECT_GT(before, 4.0 * kDeg);
     EXPECT_LT(after, 0.3 * kDeg);  // linear drift is exactly what SLERP between rest instants removes
+}
+
+// Params::estimationRate: the window solution from every 5th sample, mapped back to every sample. With
+// `to` = R(t) `from` and R turning steadily (0.5°/s), it must match the solution from every sample at
+// every output sample, and the truth: a wrong index mapping (estimate j not at sample 5j) would shift it
+// in time.
+TEST(DriftReduction, WindowedWahbaFromEveryFifthSampleMatchesEverySample) {
+    const double ts = 0.002;  // 500 Hz
+    const std::size_t n = 10001, stride = 5;
+    const Vec3 axis = Vec3(1.0, 2.0, 3.0).normalized();
+    const auto truth = [&](std::size_t k) { return math::quatFromAxisAngle(axis, 0.5 * kDeg * double(k) * ts); };
+    // Smooth vectors sweeping a cone (2 Hz about z, 0.7 Hz nod): the window sums are alike for every
+    // sample and for every 5th one (random directions would make them differ by chance).
+    std::vector<Vec3> from(n), to(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const double t = double(k) * ts;
+        from[k] = 10.0 * Vec3(std::cos(4.0 * std::numbers::pi * t), std::sin(4.0 * std::numbers::pi * t),
+                              0.8 * std::cos(1.4 * std::numbers::pi * t))
+                             .normalized();
+        to[k] = truth(k) * from[k];
+    }
+    const std::vector<unsigned char> valid(n, 1);
+    std::vector<Quat> every;
+    // No pull to the identity (prior 0): it biases both towards it by an amount that depends on the
+    // sample set, which is not what is compared here.
+    ASSERT_TRUE(DriftReduction::windowedWahba(from, to, valid, 625, 25, 125, false, every, 0.0));
+    const std::size_t ne = (n - 1) / stride + 1;
+    std::vector<Vec3> fromE(ne), toE(ne);
+    for (std::size_t j = 0; j < ne; ++j) {
+        fromE[j] = from[j * stride];
+        toE[j] = to[j * stride];
+    }
+    std::vector<Quat> thinned;
+    ASSERT_TRUE(DriftReduction::windowedWahba(fromE, toE, std::vector<unsigned char>(ne, 1), 125, 5, 25, false, thinned,
+                                              0.0, stride, n));
+    ASSERT_EQ(thinned.size(), n);
+    double worst = 0.0, worstTruth = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+        worst = std::max(worst, thinned[k].angularDistance(every[k]));
+        // Away from the ends (where the window is one-sided and the estimate is held).
+        if (k > 700 && k + 700 < n) worstTruth = std::max(worstTruth, thinned[k].angularDistance(truth(k)));
+    }
+    EXPECT_LT(worst, 0.005 * kDeg);  // one estimate step (25 samples) off would be 0.025°
+    EXPECT_LT(worstTruth, 0.1 * kDeg);
+}
+
+// The same on the whole chain at 500 Hz: the on-snow preset's 100 Hz estimation (every 5th sample) gives
+// the joint angles of every sample (docs/validation/drift-reduction.md: ≤ 0.01° over 10 seeds).
+TEST(DriftReduction, EstimationRateKeepsTheSkiingAnglesAt500Hz) {
+    eval::DriftEvaluationOptions o;
+    o.simulation.motionDuration = 40.0;
+    o.simulation.rate = 500.0;
+    o.simulation.seed = 3;
+    ASSERT_EQ(o.reduction.estimationRate, 100.0);
+    const eval::DriftEvaluation thinned = eval::evaluateDriftReduction(o);
+    o.reduction.estimationRate = 0.0;
+    const eval::DriftEvaluation every = eval::evaluateDriftReduction(o);
+    for (int j = 0; j < kBodyJoints; ++j)
+        for (int i = 0; i < 3; ++i)
+            EXPECT_NEAR(thinned.joints[j].rmse[i], every.joints[j].rmse[i], 0.05 * kDeg)
+                << qUtf8Printable(bodyJointName(static_cast<BodyJoint>(j))) << " axis " << i;
 }
 
 // The judged figure in small (docs/validation/drift-reduction.md has the 2-minute run): a skiing run
