@@ -18,6 +18,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 struct Plan {
     QStringList segments;  // one per input pair
     DriftReduction::Params params;
+    QString staticCorrection;  // auto, true, false (auto is decided in run(), from the inputs)
     std::vector<DriftReduction::Link> links;
 };
 
@@ -88,7 +89,9 @@ Expected<Plan> makePlan(const RunContext& c) {
         p.estimator = c.text(QStringLiteral("estimator")) == QLatin1String("markley")
                           ? DriftReduction::Params::Estimator::Markley
                           : DriftReduction::Params::Estimator::Wahba;
-    flag("static_correction", p.staticCorrection);
+    plan.staticCorrection = c.has(QStringLiteral("static_correction")) ? c.text(QStringLiteral("static_correction"))
+                                                                       : QStringLiteral("auto");
+    p.staticCorrection = plan.staticCorrection != QLatin1String("false");
     flag("joint_correction", p.jointCorrection);
     flag("azimuth_pass", p.azimuthPass);
     flag("align_heading", p.alignHeading);
@@ -109,6 +112,10 @@ QString driftReductionParent(const QString& segment) {
     if (segment.endsWith(QLatin1String("-shank"))) return segment.left(segment.size() - 6) + QStringLiteral("-thigh");
     if (segment.endsWith(QLatin1String("-foot"))) return segment.left(segment.size() - 5) + QStringLiteral("-shank");
     return QString();
+}
+
+bool staticCorrectionSuits(const QString& orientationAlgorithm) {
+    return orientationAlgorithm == QLatin1String("strapdown");
 }
 
 QString DriftReductionProcessor::name() const { return tr("Drift reduction (joints)"); }
@@ -170,8 +177,15 @@ ParameterSpecs DriftReductionProcessor::parameters() const {
                "Mardia & Jupp 2000; 0.5 ≈ 68° circular SD), or with fewer samples than a window needs, the "
                "heading is unobservable and the joint is left uncorrected (attribute heading_aligned=false: align "
                "it with joint-angles heading=align-start).")),
-        ParameterSpec::boolean(QStringLiteral("static_correction"), d.staticCorrection,
-                               tr("Correct the inclination at rest instants, spread by SLERP (Fasel 2017 Eq. 2.7).")),
+        ParameterSpec::choice(
+            QStringLiteral("static_correction"),
+            {QStringLiteral("auto"), QStringLiteral("true"), QStringLiteral("false")}, QStringLiteral("auto"),
+            tr("Correct the inclination at rest instants, spread by SLERP between them (Fasel 2017 Eq. 2.7). Its "
+               "model is an inclination error that grows between rests, as a gyroscope integration's: auto = only "
+               "when every orientation input is a strap-down integration (attribute algorithm=strapdown). A filter "
+               "that corrects its inclination with the accelerometer (vqf, madgwick, …) already uses the rests, and "
+               "spreading its transient error at a rest back over the motion made the inclination worse "
+               "(docs/validation/drift-reduction.md).")),
         ParameterSpec::boolean(QStringLiteral("joint_correction"), d.jointCorrection,
                                tr("Joint drift reduction (Fasel 2017 ch. 5–6).")),
         ParameterSpec::number(QStringLiteral("rest_th_gyr"), d.rest.thGyr, 0.0, kInf, QStringLiteral("rad/s"),
@@ -251,6 +265,25 @@ Expected<std::vector<ProcessorOutput>> DriftReductionProcessor::run(const RunCon
             return context.inputError(2 * i + 1, QStringLiteral("the first sample is not finite"));
         orientations.push_back(*o);
     }
+    // static_correction=auto: only when every input is a gyroscope integration; the first one that is
+    // not is named in the outputs' attributes.
+    QString staticReason = QStringLiteral("static_correction=%1").arg(plan->staticCorrection);
+    if (plan->staticCorrection == QLatin1String("auto")) {
+        for (int i = 0; i < pairs && plan->params.staticCorrection; ++i) {
+            const QString algorithm = orientations[static_cast<std::size_t>(i)]
+                                          .info()
+                                          .attributes.value(QStringLiteral("algorithm"))
+                                          .toString();
+            if (staticCorrectionSuits(algorithm)) continue;
+            plan->params.staticCorrection = false;
+            staticReason = QStringLiteral("auto: '%1' is %2, not a gyroscope integration")
+                               .arg(context.inputPath(2 * i),
+                                    algorithm.isEmpty() ? QStringLiteral("of unknown origin (no algorithm attribute)")
+                                                        : QStringLiteral("from %1").arg(algorithm));
+        }
+        if (plan->params.staticCorrection)
+            staticReason = QStringLiteral("auto: every input is a gyroscope integration");
+    }
     const DriftReduction reduction(plan->params);
     const DriftReduction::Result result = reduction.run(segments, plan->links, ts, [&](double f) {
         context.report(0.95 * f, QStringLiteral("reducing drift"));
@@ -281,6 +314,8 @@ Expected<std::vector<ProcessorOutput>> DriftReductionProcessor::run(const RunCon
         QJsonObject attributes = s.info().attributes;
         attributes.insert(QStringLiteral("drift_reduction"), true);
         attributes.insert(QStringLiteral("segment"), plan->segments[i]);
+        attributes.insert(QStringLiteral("static_correction"), plan->params.staticCorrection);
+        attributes.insert(QStringLiteral("static_correction_reason"), staticReason);
         attributes.insert(QStringLiteral("rest_intervals"), result.restIntervals[static_cast<std::size_t>(i)]);
         for (std::size_t l = 0; l < plan->links.size(); ++l) {
             if (plan->links[l].distal != i) continue;

@@ -13,7 +13,7 @@ public:
     QString id() const override { return QStringLiteral("drift-reduction"); }
     QString name() const override;
     QString description() const override;
-    QString version() const override { return QStringLiteral("1.0"); }
+    QString version() const override { return QStringLiteral("1.1"); }
     ParameterSpecs parameters() const override;
     QList<InputSpec> inputs() const override;
     QList<OutputSpec> outputs() const override;
@@ -25,5 +25,10 @@ public:
 // ("" for the root "sacrum").
 QStringList driftReductionSegments();
 QString driftReductionParent(const QString& segment);
+// static_correction=auto: whether the static correction's model (an inclination error that grows
+// between rests, DriftReduction::Params::staticCorrection) fits an orientation stream whose `algorithm`
+// attribute is this: only a plain gyroscope integration ("strapdown"); not a filter that corrects its
+// inclination with the accelerometer (vqf, madgwick, mahony, kalman) nor an unknown source ("").
+bool staticCorrectionSuits(const QString& orientationAlgorithm);
 
 }  // namespace athlos::inertial

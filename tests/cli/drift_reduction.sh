@@ -61,6 +61,10 @@ done
 # A joint whose heading is unobservable (here forced: no coherence is ever 1) is left uncorrected and says why.
 expect_ok "info" "$ATHLOS" info "$P" --json
 grep -q '"heading_aligned": true' "$WORK/out" || fail "no heading_aligned attribute after drift-reduction"
+# static_correction=auto: the inputs come from VQF (a filter), so the static correction is off and says why.
+grep -q '"static_correction": false' "$WORK/out" || fail "static_correction=auto did not turn it off for VQF input"
+grep -q '"static_correction_reason": "auto: .ski/q. is from vqf, not a gyroscope integration"' "$WORK/out" ||
+  fail "no reason for the static correction: $(grep -o '"static_correction_reason": "[^"]*"' "$WORK/out" | head -1)"
 expect_ok "drift-reduction unobservable heading" "$ATHLOS" run "$P" drift-reduction \
   --input "ski/q,ski/imu,ski/q-sternum,ski/imu-sternum,ski/q-right-thigh,ski/imu-right-thigh" \
   --output ski/dr1 --param segments=sacrum,sternum,right-thigh --param min_heading_coherence=1

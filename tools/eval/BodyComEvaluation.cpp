@@ -1,6 +1,7 @@
 #include "tools/eval/BodyComEvaluation.h"
 
 #include "plugins/body/BodyCom.h"
+#include "plugins/inertial/DriftReductionProcessor.h"
 #include "plugins/inertial/SegmentCalibration.h"
 
 #include <cmath>
@@ -95,7 +96,11 @@ BodyComEvaluation evaluateBodyCom(const BodyComEvaluationOptions& options) {
                 const BodyJointInfo info = bodyJointInfo(static_cast<BodyJoint>(j));
                 links.push_back({static_cast<int>(info.proximal), static_cast<int>(info.distal)});
             }
-            DriftReduction::Result r = DriftReduction(options.reduction).run(segs, links, ts);
+            // static_correction=auto, as the processor decides it from the orientation algorithm.
+            DriftReduction::Params reduction = options.reduction;
+            reduction.staticCorrection = reduction.staticCorrection &&
+                                         staticCorrectionSuits(orientationAlgorithmName(options.orientation.algorithm));
+            DriftReduction::Result r = DriftReduction(reduction).run(segs, links, ts);
             for (int s = 0; s < kBodySegments; ++s) segs[s].q = std::move(r.q[s]);
             if (options.vectors == ComVectors::Estimated)
                 for (int j = 0; j < kBodyJoints; ++j) {

@@ -1,5 +1,6 @@
 #include "tools/eval/DriftEvaluation.h"
 
+#include "plugins/inertial/DriftReductionProcessor.h"
 #include "plugins/inertial/JointAngles.h"
 #include "plugins/inertial/SegmentCalibration.h"
 
@@ -81,7 +82,10 @@ DriftEvaluation evaluateDriftReduction(const DriftEvaluationOptions& options) {
             links.push_back({static_cast<int>(info.proximal), static_cast<int>(info.distal)});
         }
         const auto start = std::chrono::steady_clock::now();
-        DriftReduction::Result r = DriftReduction(options.reduction).run(segments, links, ts);
+        DriftReduction::Params reduction = options.reduction;
+        if (options.staticCorrectionAuto)
+            reduction.staticCorrection = staticCorrectionSuits(orientationAlgorithmName(oo.algorithm));
+        DriftReduction::Result r = DriftReduction(reduction).run(segments, links, ts);
         result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         for (int s = 0; s < kBodySegments; ++s) segments[s].q = std::move(r.q[s]);
         for (int j = 0; j < kBodyJoints; ++j) {

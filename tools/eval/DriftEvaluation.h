@@ -17,6 +17,9 @@ struct DriftEvaluationOptions {
     inertial::DriftReduction::Params reduction;
     bool driftReduction = true;
     bool trueMounts = false;  // skip the functional calibration (feet always use the true mounts)
+    // reduction.staticCorrection as the processor's static_correction=auto decides it from the orientation
+    // algorithm (staticCorrectionSuits: strap-down only); false = reduction.staticCorrection as given.
+    bool staticCorrectionAuto = true;
 };
 
 struct JointError {

@@ -1,8 +1,9 @@
 // athlos-eval-drift-reduction [seeds=3] [algorithm=vqf|strapdown|offline] [scenario=skiing|walking]
 //                             [mounts=calibrated|true] [gyr_drift °/s = 0.15] [estimator=wahba|markley]
-//                             [rate=HZ] [estimation_rate=HZ]
-// (the last two anywhere, as key=value: the simulated sampling rate, default 100 Hz, and
-// DriftReduction::Params::estimationRate, 0 = every sample)
+//                             [rate=HZ] [estimation_rate=HZ] [static_correction=true|false]
+// (the last three anywhere, as key=value: the simulated sampling rate, default 100 Hz;
+// DriftReduction::Params::estimationRate, 0 = every sample; the static correction, default as the
+// processor's auto: on for strapdown only)
 // Joint-angle RMSE on the body simulator (BodySimulator: 8 IMUs, 2-minute skiing run, turns 27 m apart
 // at 20 m/s, gyroscope drift 0.15°/s, vibration, impacts) after 6D orientation, functional calibration
 // (upright + squats) and joint angles, WITHOUT and WITH drift reduction (DriftReduction, Fasel 2017
@@ -23,11 +24,14 @@ int main(int rawArgc, char** rawArgv) {
     // key=value options first; the rest are positional.
     std::vector<char*> positional;
     double rate = 0.0, estimationRate = -1.0;
+    int staticCorrection = -1;  // -1 = auto (the processor's rule)
     for (int i = 0; i < rawArgc; ++i) {
         if (!std::strncmp(rawArgv[i], "rate=", 5))
             rate = std::atof(rawArgv[i] + 5);
         else if (!std::strncmp(rawArgv[i], "estimation_rate=", 16))
             estimationRate = std::atof(rawArgv[i] + 16);
+        else if (!std::strncmp(rawArgv[i], "static_correction=", 18))
+            staticCorrection = std::strcmp(rawArgv[i] + 18, "true") == 0 ? 1 : 0;
         else
             positional.push_back(rawArgv[i]);
     }
@@ -60,6 +64,10 @@ int main(int rawArgc, char** rawArgv) {
         options.reduction.estimator = DriftReduction::Params::Estimator::Markley;
     if (rate > 0.0) options.simulation.rate = rate;
     if (estimationRate >= 0.0) options.reduction.estimationRate = estimationRate;
+    if (staticCorrection >= 0) {
+        options.staticCorrectionAuto = false;
+        options.reduction.staticCorrection = staticCorrection == 1;
+    }
 
     std::array<std::array<std::array<double, 3>, kBodyJoints>, 2> sum{};
     std::array<double, kBodySegments> calibration{}, inclination0{}, inclination1{};
