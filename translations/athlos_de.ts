@@ -951,12 +951,12 @@
         <translation>Die Gelenk-Kursrichtung wird an Samples angepasst, deren horizontales ã azimuth_min_norm übersteigt (Gl. 6.12–6.13); unterhalb dieser gewichteten mittleren resultierenden Länge ihrer Kursdifferenzen (zirkuläre Statistik, Mardia &amp; Jupp 2000; 0,5 ≈ 68° zirkuläre Standardabweichung) oder mit weniger Samples, als ein Fenster braucht, ist die Kursrichtung nicht beobachtbar und das Gelenk bleibt unkorrigiert (Attribut heading_aligned=false: mit joint-angles heading=align-start ausrichten).</translation>
     </message>
     <message>
-        <source>The drift estimates of the correction passes use every k-th sample, k the largest whole number with rate / k ≥ this; the correction applies to every sample. 0 = every sample. Preset: on-snow 100 Hz (skiing at 500 Hz: joint angles within 0.01° of every sample), indoor 0 (walking has few valid samples).</source>
-        <translation>Die Driftschätzungen der Korrekturdurchgänge verwenden jedes k-te Sample, k die größte ganze Zahl mit Rate / k ≥ diesem Wert; die Korrektur gilt für jedes Sample. 0 = jedes Sample. Vorgabe: on-snow 100 Hz (Skifahren mit 500 Hz: Gelenkwinkel innerhalb 0,01° von jedem Sample), indoor 0 (Gehen hat wenige gültige Samples).</translation>
-    </message>
-    <message>
         <source>Correct the inclination at rest instants, spread by SLERP between them (Fasel 2017 Eq. 2.7). Its model is an inclination error that grows between rests, as a gyroscope integration&apos;s: auto = only when every orientation input is a strap-down integration (attribute algorithm=strapdown). A filter that corrects its inclination with the accelerometer (vqf, madgwick, …) already uses the rests, and spreading its transient error at a rest back over the motion made the inclination worse (docs/validation/drift-reduction.md).</source>
         <translation>Die Neigung an Ruhezeitpunkten korrigieren, per SLERP dazwischen verteilt (Fasel 2017 Gl. 2.7). Ihr Modell ist ein Neigungsfehler, der zwischen den Ruhephasen wächst, wie bei einer Gyroskop-Integration: auto = nur wenn jede Orientierungseingabe eine Strapdown-Integration ist (Attribut algorithm=strapdown). Ein Filter, der seine Neigung mit dem Beschleunigungsmesser korrigiert (vqf, madgwick, …), nutzt die Ruhephasen bereits, und seinen vorübergehenden Fehler in einer Ruhephase über die Bewegung davor zu verteilen, verschlechterte die Neigung (docs/validation/drift-reduction.md).</translation>
+    </message>
+    <message>
+        <source>The drift estimates of the correction passes use every k-th sample, k the largest whole number with rate / k ≥ this; the correction applies to every sample. 0 = every sample, else at least 20 Hz. Preset: on-snow 100 Hz (skiing at 500 Hz: joint angles within 0.01° of every sample), indoor 0 (walking has few valid samples).</source>
+        <translation>Die Driftschätzungen der Korrekturdurchgänge verwenden jedes k-te Sample, k die größte ganze Zahl mit Rate / k ≥ diesem Wert; die Korrektur gilt für jedes Sample. 0 = jedes Sample, sonst mindestens 20 Hz. Vorgabe: on-snow 100 Hz (Skifahren mit 500 Hz: Gelenkwinkel innerhalb 0,01° von jedem Sample), indoor 0 (Gehen hat wenige gültige Samples).</translation>
     </message>
 </context>
 <context>

@@ -79,6 +79,14 @@ Expected<Plan> makePlan(const RunContext& c) {
     num("azimuth_min_norm", p.azimuthMinNorm);
     num("min_heading_coherence", p.minHeadingCoherence);
     num("estimation_rate", p.estimationRate);
+    // Below this the ±1.25 s windows hold too few samples to estimate anything, and the run would
+    // silently leave the orientations as they are (validated down to 50 Hz: ≤ 0.04°).
+    constexpr double kMinEstimationRate = 20.0;
+    if (p.estimationRate > 0.0 && p.estimationRate < kMinEstimationRate)
+        return makeError(QStringLiteral("parameter 'estimation_rate': %1 Hz is too low; give 0 (every sample) or at "
+                                        "least %2 Hz")
+                             .arg(p.estimationRate)
+                             .arg(kMinEstimationRate));
     num("rest_th_gyr", p.rest.thGyr);
     num("rest_th_acc", p.rest.thAcc);
     const auto flag = [&](const char* name, bool& value) {
@@ -155,7 +163,8 @@ ParameterSpecs DriftReductionProcessor::parameters() const {
                               tr("Half width of the Markley mean of the drift (1.25 s, Fasel 2017 ch. 5).")),
         optionalNumber("estimation_rate", 0.0, kInf, "Hz",
                        tr("The drift estimates of the correction passes use every k-th sample, k the largest whole "
-                          "number with rate / k ≥ this; the correction applies to every sample. 0 = every sample. "
+                          "number with rate / k ≥ this; the correction applies to every sample. 0 = every sample, "
+                          "else at least 20 Hz. "
                           "Preset: on-snow 100 Hz (skiing at 500 Hz: joint angles within 0.01° of every sample), "
                           "indoor 0 (walking has few valid samples).")),
         ParameterSpec::choice(

@@ -79,6 +79,8 @@ expect_fail "root first" "sacrum" "$ATHLOS" run "$P" drift-reduction --input "sk
   --output ski/x --param segments=sternum,sacrum
 expect_fail "unknown segment" "segments" "$ATHLOS" run "$P" drift-reduction --input "ski/q,ski/imu,ski/q-sternum,ski/imu-sternum" \
   --output ski/x --param segments=sacrum,neck
+expect_fail "estimation rate too low" "estimation_rate" "$ATHLOS" run "$P" drift-reduction \
+  --input "ski/q,ski/imu,ski/q-sternum,ski/imu-sternum" --output ski/x --param estimation_rate=5
 expect_fail "missing parent" "right-thigh" "$ATHLOS" run "$P" drift-reduction --input "ski/q,ski/imu,ski/q-right-shank,ski/imu-right-shank" \
   --output ski/x --param segments=sacrum,right-shank
 expect_fail "imu as orientation" "orientation" "$ATHLOS" run "$P" drift-reduction --input "ski/imu,ski/imu,ski/q-sternum,ski/imu-sternum" \
