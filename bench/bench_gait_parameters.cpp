@@ -1,9 +1,12 @@
 // gait-parameters' algorithm (gyroscope bias, stride segmentation, ZUPT integration): samples per
 // second on one core. Input: 10 minutes of simulated walking at 102.4 Hz (FootMotionSimulator,
-// ~550 strides with turns, noise and biases), run as one batch as the processor does.
+// ~550 strides with turns, noise and biases), run as one batch as the processor does; with each of
+// the two methods: `instant` (per stride, StrideIntegrator) and `rts` (the default: the ZUPT Kalman
+// smoother over the whole recording, ZuptKalmanSmoother).
 #include "plugins/events/FootMotionSimulator.h"
 #include "plugins/events/StaticGyroBias.h"
 #include "plugins/events/StrideIntegrator.h"
+#include "plugins/events/ZuptKalmanSmoother.h"
 
 #include <benchmark/benchmark.h>
 
@@ -24,6 +27,7 @@ const SimRecording& walk() {
     return rec;
 }
 
+template <bool Rts>
 void gaitParameters(benchmark::State& state) {
     const SimRecording& rec = walk();
     const std::size_t n = rec.t.size();
@@ -37,7 +41,8 @@ void gaitParameters(benchmark::State& state) {
         for (std::size_t k = 0; k < n; ++k)
             for (std::size_t i = 0; i < 3; ++i) gyr[3 * k + i] = v[6 * k + 3 + i] - bias.bias[int(i)];
         const StrideSegmentation s = segmentStrides(params, rec.t.data(), gyr.data(), n, 3);
-        const FootTrajectory t = integrateStrides({}, s.strides, rec.t.data(), v, 6, gyr.data(), 3, n);
+        const FootTrajectory t = Rts ? smoothStrides({}, s.strides, rec.t.data(), v, 6, gyr.data(), 3, n)
+                                     : integrateStrides({}, s.strides, rec.t.data(), v, 6, gyr.data(), 3, n);
         strides = t.strides.size();
         benchmark::DoNotOptimize(t.position.data());
     }
@@ -46,5 +51,6 @@ void gaitParameters(benchmark::State& state) {
 }
 }  // namespace
 
-BENCHMARK(gaitParameters)->Unit(benchmark::kMillisecond);
+BENCHMARK(gaitParameters<false>)->Name("gaitParametersInstant")->Unit(benchmark::kMillisecond);
+BENCHMARK(gaitParameters<true>)->Name("gaitParametersRts")->Unit(benchmark::kMillisecond);
 BENCHMARK_MAIN();

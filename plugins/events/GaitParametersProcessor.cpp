@@ -243,10 +243,16 @@ Expected<std::vector<ProcessorOutput>> GaitParametersProcessor::run(const RunCon
     if (context.isCancelled()) return cancelledError();
     context.report(0.4, QStringLiteral("integrating strides"));
     std::size_t stanceSamples = 0;
+    const auto smootherProgress = [&](double f) {
+        context.report(0.4 + 0.55 * f, QStringLiteral("smoothing the foot trajectory"));
+        return !context.isCancelled();
+    };
     const FootTrajectory trajectory =
         plan->smoother
-            ? smoothStrides(plan->zupt, segmentation.strides, d.t.data(), acc, stride, gyr, 3, d.rows(), &stanceSamples)
+            ? smoothStrides(plan->zupt, segmentation.strides, d.t.data(), acc, stride, gyr, 3, d.rows(), &stanceSamples,
+                            smootherProgress)
             : integrateStrides(plan->integration, segmentation.strides, d.t.data(), acc, stride, gyr, 3, d.rows());
+    if (context.isCancelled()) return cancelledError();
 
     Table table;
     table.kind = QStringLiteral("gait-parameters");

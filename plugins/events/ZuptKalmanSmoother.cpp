@@ -112,11 +112,21 @@ std::vector<ZuptKalmanState> ZuptKalmanSmoother::smooth() const {
 std::vector<ZuptKalmanState> ZuptKalmanSmoother::smooth(const ZuptKalmanParams& params, const Quaterniond& q0,
                                                         double gravity, const double* t, const double* acc,
                                                         std::size_t accStride, const double* gyr, std::size_t gyrStride,
-                                                        const std::vector<bool>& stance) {
+                                                        const std::vector<bool>& stance, const Progress& progress) {
     ZuptKalmanSmoother smoother(params, q0, gravity);
-    for (std::size_t k = 0; k < stance.size(); ++k)
+    const std::size_t n = stance.size();
+    smoother.nominal_.reserve(n);
+    smoother.gain_.reserve(n);
+    smoother.correction_.reserve(n);
+    constexpr std::size_t kReportEvery = 8192;  // samples (a few ms of work)
+    for (std::size_t k = 0; k < n; ++k) {
+        if (progress && k % kReportEvery == 0 && !progress(0.9 * double(k) / double(n))) return {};
         smoother.addSample(t[k], Vector3d(acc + k * accStride), Vector3d(gyr + k * gyrStride), stance[k]);
-    return smoother.smooth();
+    }
+    if (progress && !progress(0.9)) return {};
+    std::vector<ZuptKalmanState> out = smoother.smooth();
+    if (progress && !progress(1.0)) return {};
+    return out;
 }
 
 std::vector<bool> detectStance(const double* t, const double* gyr, std::size_t rows, std::size_t stride, double window,
@@ -137,7 +147,8 @@ std::vector<bool> detectStance(const double* t, const double* gyr, std::size_t r
 
 FootTrajectory smoothStrides(const ZuptStrideParams& params, const std::vector<StrideSegment>& segments,
                              const double* t, const double* acc, std::size_t accStride, const double* gyr,
-                             std::size_t gyrStride, std::size_t rows, std::size_t* stanceSamples) {
+                             std::size_t gyrStride, std::size_t rows, std::size_t* stanceSamples,
+                             const ZuptKalmanSmoother::Progress& progress) {
     FootTrajectory out;
     if (segments.empty() || rows == 0) return out;
     const std::size_t first = segments.front().start, last = segments.back().end;
@@ -165,7 +176,8 @@ FootTrajectory smoothStrides(const ZuptStrideParams& params, const std::vector<S
     const Quaterniond q0 =
         levelledOrientation(meanAccelerometer(t, acc, accStride, rows, first, params.levelWindow), 0.0);
     const std::vector<ZuptKalmanState> states =
-        ZuptKalmanSmoother::smooth(params.filter, q0, g, tt, a, accStride, w, gyrStride, stance);
+        ZuptKalmanSmoother::smooth(params.filter, q0, g, tt, a, accStride, w, gyrStride, stance, progress);
+    if (states.empty()) return out;  // cancelled
 
     out.first = first;
     out.position.reserve(n);

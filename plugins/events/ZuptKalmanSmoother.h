@@ -31,6 +31,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace athlos::events {
@@ -67,12 +68,15 @@ public:
     // Eq. 6 over every sample added: one smoothed state per sample.
     std::vector<ZuptKalmanState> smooth() const;
 
+    // Progress of a batch: fraction done (forward pass 0–0.9, backward 0.9–1); false cancels.
+    using Progress = std::function<bool(double)>;
+
     // Batch: every sample of a recording (acc/gyr: x of the first sample, strides in doubles
-    // between samples; stance one flag per sample).
+    // between samples; stance one flag per sample). Empty when cancelled through `progress`.
     static std::vector<ZuptKalmanState> smooth(const ZuptKalmanParams& params, const Eigen::Quaterniond& q0,
                                                double gravity, const double* t, const double* acc,
                                                std::size_t accStride, const double* gyr, std::size_t gyrStride,
-                                               const std::vector<bool>& stance);
+                                               const std::vector<bool>& stance, const Progress& progress = {});
 
 private:
     using Matrix9 = Eigen::Matrix<double, 9, 9>;
@@ -108,8 +112,10 @@ struct ZuptStrideParams {
 // always included), starts levelled with heading 0, g the mean accelerometer norm over the stance
 // samples; each stride is the displacement between its two mid-stance samples (same definitions as
 // integrateStrides). Also returns the number of stance samples in `stanceSamples`.
+// Cancelled through `progress` (ZuptKalmanSmoother::smooth): no strides and no positions.
 FootTrajectory smoothStrides(const ZuptStrideParams& params, const std::vector<StrideSegment>& segments,
                              const double* t, const double* acc, std::size_t accStride, const double* gyr,
-                             std::size_t gyrStride, std::size_t rows, std::size_t* stanceSamples = nullptr);
+                             std::size_t gyrStride, std::size_t rows, std::size_t* stanceSamples = nullptr,
+                             const ZuptKalmanSmoother::Progress& progress = {});
 
 }  // namespace athlos::events

@@ -5,8 +5,11 @@
 #include "plugins/events/ZuptKalmanSmoother.h"
 
 #include "plugins/events/FootMotionSimulator.h"
+#include "plugins/events/StrideSegmenter.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 using namespace athlos::events;
 
@@ -50,6 +53,38 @@ TEST(ZuptKalmanSmoother, PerSampleAndBatchAgree) {
     for (std::size_t k = 0; k < a.size(); ++k) ASSERT_EQ(a[k].position, b[k].position) << k;
     // The last sample has nothing after it: smoothed = filtered.
     EXPECT_EQ(a.back().position, smoother.filtered().position);
+}
+
+// The batch reports its progress (rising, up to 1) and stops when told to: empty states, and no
+// strides from smoothStrides (the processor then returns "cancelled" and stores nothing).
+TEST(ZuptKalmanSmoother, BatchReportsProgressAndCancels) {
+    SimConfig c = walk();
+    for (int i = 0; i < 200; ++i) c.strides.push_back(SimStride{});  // > 8192 samples: several reports
+    const SimRecording rec = simulateFoot(c);
+    const std::vector<bool> stance = stanceOf(rec);
+    const ZuptKalmanParams params;
+    std::vector<double> seen;
+    const auto all = ZuptKalmanSmoother::smooth(params, levelled(rec), 9.81, rec.t.data(), rec.values.data(), 6,
+                                                rec.values.data() + 3, 6, stance, [&](double f) {
+                                                    seen.push_back(f);
+                                                    return true;
+                                                });
+    EXPECT_EQ(all.size(), rec.t.size());
+    ASSERT_GE(seen.size(), 4u);
+    EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+    EXPECT_EQ(seen.back(), 1.0);
+    int calls = 0;
+    const auto none = ZuptKalmanSmoother::smooth(params, levelled(rec), 9.81, rec.t.data(), rec.values.data(), 6,
+                                                 rec.values.data() + 3, 6, stance, [&](double) { return ++calls < 2; });
+    EXPECT_TRUE(none.empty());
+    EXPECT_EQ(calls, 2);  // stopped at the second report, not at the end
+    const StrideSegmentation segmentation = segmentStrides({}, rec.t.data(), rec.values.data() + 3, rec.t.size(), 6);
+    ASSERT_GT(segmentation.strides.size(), 100u);
+    const FootTrajectory cancelled =
+        smoothStrides({}, segmentation.strides, rec.t.data(), rec.values.data(), 6, rec.values.data() + 3, 6,
+                      rec.t.size(), nullptr, [](double) { return false; });
+    EXPECT_TRUE(cancelled.strides.empty());
+    EXPECT_TRUE(cancelled.position.empty());
 }
 
 TEST(ZuptKalmanSmoother, VelocityIsZeroInStanceAndTheSwingsCoverTheStrides) {
