@@ -514,6 +514,7 @@ DriftReduction::Result DriftReduction::run(const std::vector<Segment>& segments,
     const int minCount =
         std::max(p.minWindowSamples, static_cast<int>(std::lround(p.minWindowShare * double(2 * halfWidth + 1))));
     const auto wahbaStep = static_cast<std::size_t>(std::max(1L, std::lround(p.wahbaStep / te)));
+    constexpr double kWindowPrior = 0.01;  // the window solution's pull to the identity (windowedWahba)
     // Smoothed drift taking `from` onto `to` (Eqs. 5.6–5.11 + Markley mean); returns the share of valid samples.
     const auto smoothedDrift = [&](const std::vector<Vec3>& from, const std::vector<Vec3>& to, bool horizontal,
                                    std::vector<Quat>& out) {
@@ -532,11 +533,11 @@ DriftReduction::Result DriftReduction::run(const std::vector<Segment>& segments,
             if (p.estimator == Estimator::Markley) delta[k] = ok ? Quat::FromTwoVectors(u, v) : Quat::Identity();
             used += ok;
         }
-        const bool any =
-            p.estimator == Estimator::Markley
-                ? windowedMean(delta, valid, halfWidth, minCount, out)
-                // The azimuth pass's Wahba solution uses only the horizontal components.
-                : windowedWahba(from, to, valid, halfWidth, wahbaStep, minCount, horizontal, out, 0.01, stride, n);
+        const bool any = p.estimator == Estimator::Markley
+                             ? windowedMean(delta, valid, halfWidth, minCount, out)
+                             // The azimuth pass's Wahba solution uses only the horizontal components.
+                             : windowedWahba(from, to, valid, halfWidth, wahbaStep, minCount, horizontal, out,
+                                             kWindowPrior, stride, n);
         if (!any) out.assign(n, Quat::Identity());
         return double(used) / double(ne);
     };

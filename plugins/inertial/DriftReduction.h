@@ -162,18 +162,19 @@ public:
     static std::vector<math::Vec3> zeroPhaseLowPass(const std::vector<math::Vec3>& x, double cutoff, double ts);
     // Markley et al. 2007 mean of unit quaternions (the eigenvector of Σ q qᵀ with the largest eigenvalue).
     static math::Quat markleyMean(const std::vector<math::Quat>& q);
-    // Per-sample Markley mean of the valid quaternions within ±halfWidth samples; samples whose window
-    // holds fewer than minCount valid ones are filled by SLERP between neighbours (held at the ends).
-    // Returns false when no sample could be estimated (all identity then).
     // Per-sample solution of Wahba's problem over the valid pairs within ±halfWidth samples (rotation R
-    // minimising Σ|R from − to|²), computed every `step` samples and interpolated by SLERP; with
-    // aboutVertical, R is restricted to rotations about earth z (the azimuth pass). With stride > 1 the
-    // inputs are every stride-th sample (i ↦ output sample i·stride; halfWidth, step in input samples) and
-    // out gets max(outSize, (n − 1)·stride + 1) samples.
+    // minimising Σ|R from − to|², pulled towards the identity by `prior`), computed every `step` samples
+    // and interpolated by SLERP; with aboutVertical, R is restricted to rotations about earth z (the
+    // azimuth pass). With stride > 1 the inputs are every stride-th sample (i ↦ output sample i·stride;
+    // halfWidth, step in input samples) and out gets max(outSize, (n − 1)·stride + 1) samples. Returns
+    // false when no window had minCount valid pairs (all identity then).
     static bool windowedWahba(const std::vector<math::Vec3>& from, const std::vector<math::Vec3>& to,
                               const std::vector<unsigned char>& valid, std::size_t halfWidth, std::size_t step,
                               int minCount, bool aboutVertical, std::vector<math::Quat>& out, double prior = 0.01,
                               std::size_t stride = 1, std::size_t outSize = 0);
+    // Per-sample Markley mean of the valid quaternions within ±halfWidth samples; samples whose window
+    // holds fewer than minCount valid ones are filled by SLERP between neighbours (held at the ends).
+    // Returns false when no sample could be estimated (all identity then).
     static bool windowedMean(const std::vector<math::Quat>& q, const std::vector<unsigned char>& valid,
                              std::size_t halfWidth, int minCount, std::vector<math::Quat>& out);
 
