@@ -43,12 +43,23 @@ ZuptKalmanSmoother::ZuptKalmanSmoother(const ZuptKalmanParams& params, const Qua
 }
 
 void ZuptKalmanSmoother::addSample(double t, const Vector3d& acc, const Vector3d& gyr, bool stance) {
-    if (nominal_.empty()) {
+    Matrix9 gain;
+    Vector9 delta;
+    if (advance(t, acc, gyr, stance, &gain, delta)) {
+        gain_.push_back(gain);
+        correction_.push_back(delta);
+    }
+    nominal_.push_back(state_);
+}
+
+bool ZuptKalmanSmoother::advance(double t, const Vector3d& acc, const Vector3d& gyr, bool stance, Matrix9* gain,
+                                 Vector9& correction) {
+    if (!started_) {
+        started_ = true;
         t_ = t;
         acc_ = acc;
         gyr_ = gyr;
-        nominal_.push_back(state_);
-        return;
+        return false;
     }
     const double dt = t - t_;
     // Eq. 1: strapdown step with the mean rate and the mean specific force in the world frame.
@@ -62,14 +73,18 @@ void ZuptKalmanSmoother::addSample(double t, const Vector3d& acc, const Vector3d
     acc_ = acc;
     gyr_ = gyr;
 
-    // Eqs. 2–3.
-    Matrix9 Phi = Matrix9::Identity();
+    // Eqs. 2–3, with Φ = I + N and N's three non-zero blocks written out: Φ P = P + N P and
+    // (Φ P) Φᵀ = Φ P + (Φ P) Nᵀ, so only the products with [f]× remain (a quarter of the full products).
     const Matrix3d F = skew(f);
-    Phi.block<3, 3>(0, 3) = dt * Matrix3d::Identity();
-    Phi.block<3, 3>(0, 6) = -0.5 * dt * dt * F;
-    Phi.block<3, 3>(3, 6) = -dt * F;
-    const Matrix9 PhiP = Phi * P_;
-    Matrix9 prior = PhiP * Phi.transpose();
+    const double h = 0.5 * dt * dt;
+    const Eigen::Matrix<double, 3, 9> G = F * P_.middleRows<3>(6);  // [f]× (rows δθ of P)
+    Matrix9 PhiP = P_;
+    PhiP.middleRows<3>(0) += dt * P_.middleRows<3>(3) - h * G;
+    PhiP.middleRows<3>(3) -= dt * G;
+    const Eigen::Matrix<double, 9, 3> H = PhiP.middleCols<3>(6) * F.transpose();
+    Matrix9 prior = PhiP;
+    prior.middleCols<3>(0) += dt * PhiP.middleCols<3>(3) - h * H;
+    prior.middleCols<3>(3) -= dt * H;
     const double qa = params_.accNoise * dt, qw = params_.gyrNoise * dt;
     for (int i = 0; i < 3; ++i) {
         prior(3 + i, 3 + i) += qa * qa;
@@ -78,8 +93,10 @@ void ZuptKalmanSmoother::addSample(double t, const Vector3d& acc, const Vector3d
     prior = 0.5 * (prior + prior.transpose());
     // Eq. 6's gain A_k = P⁺_k Φᵀ (P⁻_{k+1})⁻¹, i.e. Aᵀ = (P⁻)⁻¹ Φ P⁺ (P⁻ symmetric). The jitter
     // keeps the position block (no process noise of its own) invertible right after the start.
-    const Eigen::LDLT<Matrix9> ldlt(prior + 1e-14 * Matrix9::Identity());
-    gain_.push_back(ldlt.solve(PhiP).transpose());
+    if (gain) {
+        const Eigen::LDLT<Matrix9> ldlt(prior + 1e-14 * Matrix9::Identity());
+        *gain = ldlt.solve(PhiP).transpose();
+    }
 
     Vector9 delta = Vector9::Zero();
     if (stance) {
@@ -89,14 +106,17 @@ void ZuptKalmanSmoother::addSample(double t, const Vector3d& acc, const Vector3d
         delta = K * (-state_.velocity);
         Matrix9 IKH = Matrix9::Identity();
         IKH.block<9, 3>(0, 3) -= K;
-        P_ = IKH * prior * IKH.transpose() +
-             params_.zuptNoise * params_.zuptNoise * K * K.transpose();  // K R Kᵀ with R = σ_z² I
+        // Small fixed-size products coefficient by coefficient (lazyProduct): Eigen's general matrix
+        // product path (packing, blocking) costs more than the arithmetic at 9 × 9.
+        const Matrix9 IKHP = IKH.lazyProduct(prior);
+        P_ = IKHP.lazyProduct(IKH.transpose()) +
+             params_.zuptNoise * params_.zuptNoise * K.lazyProduct(K.transpose());  // K R Kᵀ with R = σ_z² I
         inject(state_, delta);                                           // eq. 5
     } else {
         P_ = prior;
     }
-    correction_.push_back(delta);
-    nominal_.push_back(state_);
+    correction = delta;
+    return true;
 }
 
 std::vector<ZuptKalmanState> ZuptKalmanSmoother::smooth() const {
@@ -113,18 +133,42 @@ std::vector<ZuptKalmanState> ZuptKalmanSmoother::smooth(const ZuptKalmanParams& 
                                                         double gravity, const double* t, const double* acc,
                                                         std::size_t accStride, const double* gyr, std::size_t gyrStride,
                                                         const std::vector<bool>& stance, const Progress& progress) {
-    ZuptKalmanSmoother smoother(params, q0, gravity);
     const std::size_t n = stance.size();
-    smoother.nominal_.reserve(n);
-    smoother.gain_.reserve(n);
-    smoother.correction_.reserve(n);
+    std::vector<ZuptKalmanState> out(n);
+    if (n == 0) return out;
+    const auto step = [&](ZuptKalmanSmoother& f, std::size_t k, Matrix9* gain, Vector9& delta) {
+        f.advance(t[k], Vector3d(acc + k * accStride), Vector3d(gyr + k * gyrStride), stance[k], gain, delta);
+    };
+    // Forward pass: the filtered states, and a copy of the filter after every kBlock-th sample. The
+    // gains are not needed yet (the filter does not depend on them), which halves its work.
+    ZuptKalmanSmoother filter(params, q0, gravity);
+    std::vector<ZuptKalmanSmoother> checkpoints;  // after sample b·kBlock
+    checkpoints.reserve(n / kBlock + 1);
+    Vector9 delta;
     constexpr std::size_t kReportEvery = 8192;  // samples (a few ms of work)
     for (std::size_t k = 0; k < n; ++k) {
-        if (progress && k % kReportEvery == 0 && !progress(0.9 * double(k) / double(n))) return {};
-        smoother.addSample(t[k], Vector3d(acc + k * accStride), Vector3d(gyr + k * gyrStride), stance[k]);
+        if (progress && k % kReportEvery == 0 && !progress(0.45 * double(k) / double(n))) return {};
+        step(filter, k, nullptr, delta);
+        out[k] = filter.state_;
+        if (k % kBlock == 0) checkpoints.push_back(filter);
     }
-    if (progress && !progress(0.9)) return {};
-    std::vector<ZuptKalmanState> out = smoother.smooth();
+    // Backward pass (eq. 6), block by block from the end: a block's gains A_k and corrections δ_{k+1}
+    // are formed again from its checkpoint — the same operations on the same numbers as in the forward
+    // pass — so only one block of them is ever kept.
+    std::vector<Matrix9> gains(kBlock);
+    std::vector<Vector9> deltas(kBlock);
+    Vector9 e = Vector9::Zero();  // e_N = 0: the last sample's filtered state is its smoothed one
+    for (std::size_t b = checkpoints.size(); b-- > 0;) {
+        if (progress && !progress(0.45 + 0.55 * double(checkpoints.size() - 1 - b) / double(checkpoints.size())))
+            return {};
+        const std::size_t k0 = b * kBlock, k1 = std::min(n - 1, k0 + kBlock);  // A_k, k = k0 … k1 − 1
+        ZuptKalmanSmoother f = checkpoints[b];
+        for (std::size_t k = k0 + 1; k <= k1; ++k) step(f, k, &gains[k - 1 - k0], deltas[k - 1 - k0]);
+        for (std::size_t k = k1; k-- > k0;) {
+            e = gains[k - k0] * (deltas[k - k0] + e);
+            inject(out[k], e);
+        }
+    }
     if (progress && !progress(1.0)) return {};
     return out;
 }

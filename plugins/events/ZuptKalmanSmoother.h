@@ -25,7 +25,7 @@
 //     and the smoothed state is x⁺_k ⊕ e_k (eq. 5 applied with e_k).
 // The gain A_k is computed in the forward pass, so only A_k and δ_{k+1} are kept per sample
 // (90 doubles, 0.7 KB; core/estimation/RtsSmoother keeps five 9 × 9 matrices per node, which for
-// 10 min at 204.8 Hz would be 250 MB).
+// 10 min at 204.8 Hz would be 250 MB); the batch smooth() keeps them for one block at a time.
 #include "plugins/events/StrideIntegrator.h"
 
 #include <Eigen/Core>
@@ -68,11 +68,16 @@ public:
     // Eq. 6 over every sample added: one smoothed state per sample.
     std::vector<ZuptKalmanState> smooth() const;
 
-    // Progress of a batch: fraction done (forward pass 0–0.9, backward 0.9–1); false cancels.
+    // Progress of a batch: fraction done (forward pass 0–0.45, backward 0.45–1); false cancels.
     using Progress = std::function<bool(double)>;
 
     // Batch: every sample of a recording (acc/gyr: x of the first sample, strides in doubles
-    // between samples; stance one flag per sample). Empty when cancelled through `progress`.
+    // between samples; stance one flag per sample). Empty when cancelled through `progress`. Equal to
+    // addSample() for every sample then smooth(), in bounded memory: instead of A_k and δ_{k+1} for every
+    // sample it keeps the filter after every kBlock-th sample and forms them again per block in the
+    // backward pass (the first forward pass skips the gains; ~80 B per sample for the states instead of
+    // ~0.8 KB).
+    static constexpr std::size_t kBlock = 4096;
     static std::vector<ZuptKalmanState> smooth(const ZuptKalmanParams& params, const Eigen::Quaterniond& q0,
                                                double gravity, const double* t, const double* acc,
                                                std::size_t accStride, const double* gyr, std::size_t gyrStride,
@@ -82,12 +87,19 @@ private:
     using Matrix9 = Eigen::Matrix<double, 9, 9>;
     using Vector9 = Eigen::Matrix<double, 9, 1>;
 
+    // Eqs. 1–5 for one sample: the filter moves on, and A_{k−1} (when `gain` is given) and δ_k of this
+    // sample k are returned (false for the first sample, which only sets the start).
+    bool advance(double t, const Eigen::Vector3d& acc, const Eigen::Vector3d& gyr, bool stance, Matrix9* gain,
+                 Vector9& correction);
+
     ZuptKalmanParams params_;
     double gravity_;
     ZuptKalmanState state_;
     Matrix9 P_;
     double t_ = 0.0;
+    bool started_ = false;
     Eigen::Vector3d acc_ = Eigen::Vector3d::Zero(), gyr_ = Eigen::Vector3d::Zero();
+    // Per-sample interface only (addSample / smooth()):
     std::vector<ZuptKalmanState> nominal_;  // x⁺_k
     std::vector<Matrix9> gain_;             // A_k, k = 0 … n − 2
     std::vector<Vector9> correction_;       // δ_{k+1}, k = 0 … n − 2

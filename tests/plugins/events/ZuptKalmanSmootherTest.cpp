@@ -55,6 +55,35 @@ TEST(ZuptKalmanSmoother, PerSampleAndBatchAgree) {
     EXPECT_EQ(a.back().position, smoother.filtered().position);
 }
 
+// The batch keeps the gains of one block at a time and forms them again from a copy of the filter:
+// over several blocks (and a last block of a few samples) it must give what the per-sample interface,
+// which keeps every gain, gives.
+TEST(ZuptKalmanSmoother, BatchInBlocksEqualsPerSample) {
+    SimConfig c = walk();
+    for (int i = 0; i < 120; ++i) c.strides.push_back(SimStride{});
+    const SimRecording rec = simulateFoot(c);
+    const std::vector<bool> stance = stanceOf(rec);
+    ASSERT_GT(rec.t.size(), 3 * ZuptKalmanSmoother::kBlock);
+    const ZuptKalmanParams params;
+    // Whole blocks plus 1, plus 2 and plus a few hundred samples: the edge cases of the last block.
+    for (const std::size_t n : {2 * ZuptKalmanSmoother::kBlock + 1, 2 * ZuptKalmanSmoother::kBlock + 2, rec.t.size()}) {
+        ZuptKalmanSmoother smoother(params, levelled(rec), 9.81);
+        for (std::size_t k = 0; k < n; ++k)
+            smoother.addSample(rec.t[k], Eigen::Vector3d(&rec.values[6 * k]), Eigen::Vector3d(&rec.values[6 * k + 3]),
+                               stance[k]);
+        const auto a = smoother.smooth();
+        const std::vector<bool> first(stance.begin(), stance.begin() + static_cast<std::ptrdiff_t>(n));
+        const auto b = ZuptKalmanSmoother::smooth(params, levelled(rec), 9.81, rec.t.data(), rec.values.data(), 6,
+                                                  rec.values.data() + 3, 6, first);
+        ASSERT_EQ(a.size(), b.size());
+        for (std::size_t k = 0; k < n; ++k) {
+            ASSERT_LT((a[k].position - b[k].position).norm(), 1e-12) << n << ' ' << k;
+            ASSERT_LT((a[k].velocity - b[k].velocity).norm(), 1e-12) << n << ' ' << k;
+            ASSERT_LT(a[k].orientation.angularDistance(b[k].orientation), 1e-12) << n << ' ' << k;
+        }
+    }
+}
+
 // The batch reports its progress (rising, up to 1) and stops when told to: empty states, and no
 // strides from smoothStrides (the processor then returns "cancelled" and stores nothing).
 TEST(ZuptKalmanSmoother, BatchReportsProgressAndCancels) {
