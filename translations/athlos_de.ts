@@ -436,10 +436,6 @@
         <translation>Initialkontakt, Zehenablösung und Mittelstand aus dem medio-lateralen Gyroskop einer am Fuß getragenen IMU (negative Spitzen des in der Schwungphase positiven Signals nach und vor jeder Schwungspitze; Minimum der Gyroskopnorm im Stand). Schreibt die Doppelschritte (IC bis zum nächsten IC) als vorhergesagte Annotationen mit Konfidenz und eine Tabelle der Ereignisse.</translation>
     </message>
     <message>
-        <source>Sensor axis along the medio-lateral direction (y when x points forward and z up).</source>
-        <translation>Sensorachse in medio-lateraler Richtung (y, wenn x nach vorn und z nach oben zeigt).</translation>
-    </message>
-    <message>
         <source>Sign of the medio-lateral angular velocity during swing; auto: the sign of the longest sustained rotation.</source>
         <translation>Vorzeichen der medio-lateralen Winkelgeschwindigkeit im Schwung; auto: das Vorzeichen der längsten anhaltenden Drehung.</translation>
     </message>
@@ -479,16 +475,16 @@
         <source>Strides (IC to next IC) as predicted annotations with confidence.</source>
         <translation>Doppelschritte (IC bis zum nächsten IC) als vorhergesagte Annotationen mit Konfidenz.</translation>
     </message>
+    <message>
+        <source>Sensor axis along the medio-lateral direction (y when x points forward and z up); auto: the principal axis of the angular velocity, whatever the mounting.</source>
+        <translation>Sensorachse in medio-lateraler Richtung (y, wenn x nach vorn und z nach oben zeigt); auto: die Hauptachse der Winkelgeschwindigkeit, unabhängig von der Befestigung.</translation>
+    </message>
 </context>
 <context>
     <name>athlos::events::GaitParametersProcessor</name>
     <message>
         <source>Gait parameters (foot IMU)</source>
         <translation>Gangparameter (Fuß-IMU)</translation>
-    </message>
-    <message>
-        <source>Sensor axis along the medio-lateral direction (y when x points forward and z up).</source>
-        <translation>Sensorachse in medio-lateraler Richtung (y, wenn x nach vorn und z nach oben zeigt).</translation>
     </message>
     <message>
         <source>Sign of the medio-lateral angular velocity during swing; auto: the sign of the longest sustained rotation.</source>
@@ -543,16 +539,8 @@
         <translation>Mittelung des Beschleunigungsmessers bei einem Mittelstand, die die Aufwärtsrichtung liefert.</translation>
     </message>
     <message>
-        <source>Foot-mounted IMU: acc_x..z (m/s^2), gyr_x..z (rad/s), x forward along the foot, z up through the sole.</source>
-        <translation>Am Fuß getragene IMU: acc_x..z (m/s^2), gyr_x..z (rad/s), x nach vorn entlang des Fußes, z nach oben durch die Sohle.</translation>
-    </message>
-    <message>
         <source>One row per stride: start, end, stride_length, stride_height, stride_time, stance_time, swing_time, cadence, gait_speed, max_toe_clearance, turning_angle.</source>
         <translation>Eine Zeile je Doppelschritt: start, end, stride_length, stride_height, stride_time, stance_time, swing_time, cadence, gait_speed, max_toe_clearance, turning_angle.</translation>
-    </message>
-    <message>
-        <source>Foot (sensor) positions x, y, z (m): z up, x the heading at the first mid-stance.</source>
-        <translation>Positionen von Fuß (Sensor) x, y, z (m): z nach oben, x die Richtung beim ersten Mittelstand.</translation>
     </message>
     <message>
         <source>instant: per stride, zero velocity at the two mid-stance instants, drift removed linearly. rts: zero-velocity-aided error-state Kalman filter with Rauch-Tung-Striebel smoothing over the whole recording, zero velocity on every stance sample (Skog et al. 2010; gaitmap RtsKalman).</source>
@@ -581,6 +569,18 @@
     <message>
         <source>Strides between consecutive mid-stance (minimum-velocity) instants of a foot-mounted IMU and zero-velocity-aided integration (method rts: a Kalman smoother over the whole recording with zero velocity on every stance sample; method instant: per stride, levelled from gravity at each mid-stance, inclination and velocity drift removed linearly): stride length (horizontal) and height, stride, stance and swing time, cadence, gait speed, toe clearance and turning angle; plus the foot trajectory.</source>
         <translation>Doppelschritte zwischen aufeinanderfolgenden Standphasenmitten (minimale Geschwindigkeit) eines am Fuß getragenen IMU und Integration mit Nullgeschwindigkeits-Stützung (Methode rts: ein Kalman-Glätter über die ganze Aufnahme mit Nullgeschwindigkeit an jedem Standphasen-Sample; Methode instant: je Doppelschritt, an jeder Standphasenmitte aus der Schwerkraft horizontiert, Neigungs- und Geschwindigkeitsdrift linear entfernt): Schrittlänge (horizontal) und -höhe, Schritt-, Stand- und Schwungzeit, Kadenz, Ganggeschwindigkeit, Bodenfreiheit und Drehwinkel; dazu die Fußtrajektorie.</translation>
+    </message>
+    <message>
+        <source>Sensor axis along the medio-lateral direction (y when x points forward and z up); auto: the principal axis of the angular velocity, whatever the mounting.</source>
+        <translation>Sensorachse in medio-lateraler Richtung (y, wenn x nach vorn und z nach oben zeigt); auto: die Hauptachse der Winkelgeschwindigkeit, unabhängig von der Befestigung.</translation>
+    </message>
+    <message>
+        <source>Foot-mounted IMU: acc_x..z (m/s^2), gyr_x..z (rad/s), in any sensor frame (ml_axis = auto finds the medio-lateral axis; give it when the recording is too short to tell).</source>
+        <translation>Am Fuß getragenes IMU: acc_x..z (m/s^2), gyr_x..z (rad/s), in beliebigem Sensorsystem (ml_axis = auto findet die medio-laterale Achse; bei zu kurzen Aufnahmen angeben).</translation>
+    </message>
+    <message>
+        <source>Foot (sensor) positions x, y, z (m): z up, heading 0 at the first mid-stance.</source>
+        <translation>Fuß-(Sensor-)Positionen x, y, z (m): z nach oben, Kurs 0 in der ersten Standphasenmitte.</translation>
     </message>
 </context>
 <context>

@@ -62,6 +62,11 @@ double headingAngle(const Quat& q) {
     return std::atan2(x.y(), x.x());
 }
 
+double twistHeadingAngle(const Quat& q) {
+    const Quat c = canonical(q);  // w ≥ 0: the angle in (−π, π]
+    return 2.0 * std::atan2(c.z(), c.w());
+}
+
 double inclinationAngle(const Quat& q) {
     const Vec3 z = q * Vec3::UnitZ();
     return std::acos(std::clamp(z.z(), -1.0, 1.0));

@@ -44,6 +44,12 @@ Quat headingRotation(double angle);
 // Heading of a sensor→earth quaternion: the angle of the sensor's x axis projected on the
 // horizontal plane, counter-clockwise from East (rad). Undefined (0) when x points straight up/down.
 double headingAngle(const Quat& q);
+// Heading as the twist of q about the earth's vertical (the heading factor of
+// splitHeadingInclination below): 2·atan2(q_z, q_w) in (−π, π], counter-clockwise (rad); q = Rz(ψ)·q_i
+// with q_i a rotation about a horizontal axis gives ψ. Applied to the rotation between two
+// orientations, q1 ⊗ q0*, it is their heading change whatever the sensor's mounting (the mounting
+// cancels; no sensor axis has to be horizontal).
+double twistHeadingAngle(const Quat& q);
 // Inclination: angle between the sensor's z axis and the earth's vertical (rad).
 double inclinationAngle(const Quat& q);
 

@@ -42,10 +42,10 @@ void GaitEventDetector::update(double t, double gyrMl, double gyrNorm) {
 }
 
 void GaitEventDetector::updateBatch(const double* t, const double* gyr, std::size_t rows, std::size_t stride,
-                                    int mlAxis) {
+                                    const Eigen::Vector3d& mlAxis) {
     for (std::size_t k = 0; k < rows; ++k) {
-        const double* g = gyr + k * stride;
-        update(t[k], g[mlAxis], std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]));
+        const Eigen::Map<const Eigen::Vector3d> g(gyr + k * stride);
+        update(t[k], mlAxis.dot(g), g.norm());
     }
     finish();
 }
@@ -145,12 +145,14 @@ void GaitEventDetector::confirmPeak(std::size_t c) {
     s.previousIcT = tIc;
 }
 
-int GaitEventDetector::swingSign(const double* t, const double* gyr, std::size_t rows, std::size_t stride, int mlAxis) {
+int GaitEventDetector::swingSign(const double* t, const double* gyr, std::size_t rows, std::size_t stride,
+                                 const Eigen::Vector3d& mlAxis) {
+    const auto ml = [&](std::size_t k) { return mlAxis.dot(Eigen::Map<const Eigen::Vector3d>(gyr + k * stride)); };
     double lo = 0.0, hi = 0.0, sum = 0.0;
     std::size_t first = 0;
     for (std::size_t k = 0; k < rows; ++k) {
-        sum += gyr[k * stride + std::size_t(mlAxis)];
-        while (t[k] - t[first] > 0.25) sum -= gyr[first++ * stride + std::size_t(mlAxis)];
+        sum += ml(k);
+        while (t[k] - t[first] > 0.25) sum -= ml(first++);
         const double mean = sum / double(k - first + 1);
         lo = std::min(lo, mean);
         hi = std::max(hi, mean);

@@ -13,6 +13,8 @@
 // All parameters are in seconds and rad/s, so the detector is independent of the sampling rate.
 // update() runs per sample with a fixed delay (events come out once the windows after them have
 // been seen); updateBatch() runs a whole recording and flushes.
+#include <Eigen/Core>
+
 #include <deque>
 #include <utility>
 #include <vector>
@@ -75,8 +77,9 @@ public:
     // One sample: time (s), ML angular velocity (rad/s) and the gyroscope norm (rad/s).
     void update(double t, double gyrMl, double gyrNorm);
     // Whole recording: gyr points at x,y,z of the first sample, `stride` doubles between samples;
-    // mlAxis 0..2. Ends with finish().
-    void updateBatch(const double* t, const double* gyr, std::size_t rows, std::size_t stride, int mlAxis);
+    // ω_ml = mlAxis · ω (a unit vector in the sensor frame, see MediolateralAxis.h). Ends with finish().
+    void updateBatch(const double* t, const double* gyr, std::size_t rows, std::size_t stride,
+                     const Eigen::Vector3d& mlAxis);
     // Evaluates the peaks still waiting for their trailing windows (end of data).
     void finish();
 
@@ -88,7 +91,8 @@ public:
 
     // The sign of the ML axis during swing: the sign of the larger extreme of ω_ml averaged over
     // 0.25 s (the swing is the longest sustained rotation of a stride; push-off and impact are short).
-    static int swingSign(const double* t, const double* gyr, std::size_t rows, std::size_t stride, int mlAxis);
+    static int swingSign(const double* t, const double* gyr, std::size_t rows, std::size_t stride,
+                         const Eigen::Vector3d& mlAxis);
 
 private:
     void evaluate(bool flushing);

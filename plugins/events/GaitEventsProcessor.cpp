@@ -2,7 +2,9 @@
 
 #include "core/processing/Translator.h"
 #include "plugins/events/GaitEventDetector.h"
+#include "plugins/events/MediolateralAxis.h"
 
+#include <QJsonArray>
 #include <cmath>
 #include <limits>
 
@@ -15,7 +17,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 struct Plan {
     std::shared_ptr<const StreamData> data;
     int gyr = -1;
-    int axis = 1;
+    QString axis;  // ml_axis: x, y, z or auto (resolved on the data in run())
     int sign = 0;  // 0: auto
     GaitEventDetector::Params params;
     QString foot, label;
@@ -37,8 +39,7 @@ Expected<Plan> makePlan(const RunContext& c) {
             return c.inputError(0, QStringLiteral("column %1 is in '%2'; gait-events expects rad/s")
                                        .arg(info.columns[std::size_t(plan.gyr + k)].name, unit));
     }
-    const QString axis = c.text(QStringLiteral("ml_axis"));
-    plan.axis = axis == QLatin1String("x") ? 0 : axis == QLatin1String("z") ? 2 : 1;
+    plan.axis = c.text(QStringLiteral("ml_axis"));
     const QString sign = c.text(QStringLiteral("swing_sign"));
     plan.sign = sign == QLatin1String("positive") ? 1 : sign == QLatin1String("negative") ? -1 : 0;
     auto& p = plan.params;
@@ -92,9 +93,12 @@ QString GaitEventsProcessor::description() const {
 ParameterSpecs GaitEventsProcessor::parameters() const {
     const GaitEventDetector::Params d;
     return {
-        ParameterSpec::choice(QStringLiteral("ml_axis"),
-                              {QStringLiteral("x"), QStringLiteral("y"), QStringLiteral("z")}, QStringLiteral("y"),
-                              tr("Sensor axis along the medio-lateral direction (y when x points forward and z up).")),
+        ParameterSpec::choice(
+            QStringLiteral("ml_axis"),
+            {QStringLiteral("auto"), QStringLiteral("x"), QStringLiteral("y"), QStringLiteral("z")},
+            QStringLiteral("auto"),
+            tr("Sensor axis along the medio-lateral direction (y when x points forward and z up); auto: the "
+               "principal axis of the angular velocity, whatever the mounting.")),
         ParameterSpec::choice(QStringLiteral("swing_sign"),
                               {QStringLiteral("auto"), QStringLiteral("positive"), QStringLiteral("negative")},
                               QStringLiteral("auto"),
@@ -139,13 +143,15 @@ Expected<std::vector<ProcessorOutput>> GaitEventsProcessor::run(const RunContext
     const StreamData& d = *plan->data;
     const double* gyr = d.values.data() + plan->gyr;
     const auto stride = std::size_t(d.columns);
+    const auto ml = mediolateralAxis(plan->axis, gyr, d.rows(), stride);
+    if (!ml) return makeError(QStringLiteral("ml_axis: '%1' is not one of auto, x, y, z").arg(plan->axis));
     const int sign =
-        plan->sign ? plan->sign : GaitEventDetector::swingSign(d.t.data(), gyr, d.rows(), stride, plan->axis);
+        plan->sign ? plan->sign : GaitEventDetector::swingSign(d.t.data(), gyr, d.rows(), stride, ml->axis);
     GaitEventDetector detector(plan->params, sign);
     const std::size_t chunk = 20000;
     for (std::size_t k = 0; k < d.rows(); ++k) {
-        const double* g = gyr + k * stride;
-        detector.update(d.t[k], g[plan->axis], std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]));
+        const Eigen::Map<const Eigen::Vector3d> g(gyr + k * stride);
+        detector.update(d.t[k], ml->axis.dot(g), g.norm());
         if (k % chunk == chunk - 1) {
             if (context.isCancelled()) return cancelledError();
             context.report(0.95 * double(k) / double(d.rows()), QStringLiteral("detecting gait events"));
@@ -154,17 +160,18 @@ Expected<std::vector<ProcessorOutput>> GaitEventsProcessor::run(const RunContext
     detector.finish();
     // Nothing found is refused with the likely causes, not stored as an empty table (issue #13 item 8).
     if (detector.events().empty())
-        return context.inputError(0,
-                                  QStringLiteral("no gait event found in %1 s of data (ml_axis = %2, swing_threshold = "
-                                                 "%3 rad/s): is it a foot-mounted IMU during walking or running, "
-                                                 "with the medio-lateral axis as ml_axis?")
-                                      .arg(d.rows() ? d.t.back() - d.t.front() : 0.0, 0, 'g', 4)
-                                      .arg(context.text(QStringLiteral("ml_axis")))
-                                      .arg(plan->params.swingThreshold));
+        return context.inputError(
+            0, QStringLiteral("no gait event found in %1 s of data (ml_axis = %2 %3, swing_threshold "
+                              "= %4 rad/s): is it a foot-mounted IMU during walking or running, "
+                              "with the medio-lateral axis as ml_axis?")
+                   .arg(d.rows() ? d.t.back() - d.t.front() : 0.0, 0, 'g', 4)
+                   .arg(plan->axis, axisText(ml->axis))
+                   .arg(plan->params.swingThreshold));
 
     Table table;
     table.kind = QStringLiteral("gait-events");
     table.attributes = QJsonObject{{QStringLiteral("swing_sign"), sign},
+                                   {QStringLiteral("ml_axis"), QJsonArray{ml->axis.x(), ml->axis.y(), ml->axis.z()}},
                                    {QStringLiteral("foot"), plan->foot},
                                    {QStringLiteral("strides"), int(detector.strides().size())}};
     TableColumn t{QStringLiteral("t"), QStringLiteral("s"), false, {}, {}};

@@ -11,7 +11,7 @@ public:
     QString id() const override { return QStringLiteral("gait-events"); }
     QString name() const override;
     QString description() const override;
-    QString version() const override { return QStringLiteral("1"); }
+    QString version() const override { return QStringLiteral("2"); }  // 2: ml_axis = auto
     ParameterSpecs parameters() const override;
     QList<InputSpec> inputs() const override;
     QList<OutputSpec> outputs() const override;

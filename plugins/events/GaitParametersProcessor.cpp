@@ -3,6 +3,7 @@
 #include "core/processing/OutputStreams.h"
 #include "core/processing/Translator.h"
 #include "plugins/events/GaitEventsProcessor.h"
+#include "plugins/events/MediolateralAxis.h"
 #include "plugins/events/StaticGyroBias.h"
 #include "plugins/events/StrideIntegrator.h"
 #include "plugins/events/ZuptKalmanSmoother.h"
@@ -25,7 +26,7 @@ struct Plan {
     bool smoother = false;  // method = rts
     ZuptStrideParams zupt;
     double staticThreshold = 0.0, staticDuration = 0.0;
-    QString foot;
+    QString foot, mlAxis;  // mlAxis: the parameter (x, y, z or auto), resolved on the data in run()
 };
 
 // Index of x of three adjacent columns <prefix>x, y, z in the expected unit, or an error.
@@ -57,8 +58,7 @@ Expected<Plan> makePlan(const RunContext& c) {
     plan.acc = *acc;
     plan.gyr = *gyr;
     auto& p = plan.segmentation;
-    const QString axis = c.text(QStringLiteral("ml_axis"));
-    p.mlAxis = axis == QLatin1String("x") ? 0 : axis == QLatin1String("z") ? 2 : 1;
+    plan.mlAxis = c.text(QStringLiteral("ml_axis"));
     const QString sign = c.text(QStringLiteral("swing_sign"));
     p.swingSign = sign == QLatin1String("positive") ? 1 : sign == QLatin1String("negative") ? -1 : 0;
     p.swingThreshold = c.number(QStringLiteral("swing_threshold"));
@@ -126,9 +126,12 @@ ParameterSpecs GaitParametersProcessor::parameters() const {
             tr("instant: per stride, zero velocity at the two mid-stance instants, drift removed linearly. rts: "
                "zero-velocity-aided error-state Kalman filter with Rauch-Tung-Striebel smoothing over the whole "
                "recording, zero velocity on every stance sample (Skog et al. 2010; gaitmap RtsKalman).")),
-        ParameterSpec::choice(QStringLiteral("ml_axis"),
-                              {QStringLiteral("x"), QStringLiteral("y"), QStringLiteral("z")}, QStringLiteral("y"),
-                              tr("Sensor axis along the medio-lateral direction (y when x points forward and z up).")),
+        ParameterSpec::choice(
+            QStringLiteral("ml_axis"),
+            {QStringLiteral("auto"), QStringLiteral("x"), QStringLiteral("y"), QStringLiteral("z")},
+            QStringLiteral("auto"),
+            tr("Sensor axis along the medio-lateral direction (y when x points forward and z up); auto: the "
+               "principal axis of the angular velocity, whatever the mounting.")),
         ParameterSpec::choice(QStringLiteral("swing_sign"),
                               {QStringLiteral("auto"), QStringLiteral("positive"), QStringLiteral("negative")},
                               QStringLiteral("auto"),
@@ -194,8 +197,8 @@ QList<InputSpec> GaitParametersProcessor::inputs() const {
                       {QStringLiteral("imu")},
                       false,
                       false,
-                      tr("Foot-mounted IMU: acc_x..z (m/s^2), gyr_x..z (rad/s), x forward along the foot, z up "
-                         "through the sole.")}};
+                      tr("Foot-mounted IMU: acc_x..z (m/s^2), gyr_x..z (rad/s), in any sensor frame (ml_axis = auto "
+                         "finds the medio-lateral axis; give it when the recording is too short to tell).")}};
 }
 
 QList<OutputSpec> GaitParametersProcessor::outputs() const {
@@ -203,7 +206,7 @@ QList<OutputSpec> GaitParametersProcessor::outputs() const {
                        tr("One row per stride: start, end, stride_length, stride_height, stride_time, "
                           "stance_time, swing_time, cadence, gait_speed, max_toe_clearance, turning_angle.")},
             OutputSpec{QStringLiteral("trajectory"), false, QStringLiteral("trajectory"),
-                       tr("Foot (sensor) positions x, y, z (m): z up, x the heading at the first mid-stance.")}};
+                       tr("Foot (sensor) positions x, y, z (m): z up, heading 0 at the first mid-stance.")}};
 }
 
 Status GaitParametersProcessor::prepare(const RunContext& context) const { return statusOf(makePlan(context)); }
@@ -223,15 +226,18 @@ Expected<std::vector<ProcessorOutput>> GaitParametersProcessor::run(const RunCon
         for (int i = 0; i < 3; ++i)
             unbiased[3 * k + std::size_t(i)] = d.values[k * stride + std::size_t(plan->gyr + i)] - bias.bias[i];
     const double* gyr = unbiased.data();
+    const auto ml = mediolateralAxis(plan->mlAxis, gyr, d.rows(), 3);
+    if (!ml) return makeError(QStringLiteral("ml_axis: '%1' is not one of auto, x, y, z").arg(plan->mlAxis));
+    plan->segmentation.mlAxis = ml->axis;
     context.report(0.1, QStringLiteral("finding strides"));
     const StrideSegmentation segmentation = segmentStrides(plan->segmentation, d.t.data(), gyr, d.rows(), 3);
     // Nothing found is refused with the likely causes, not stored as an empty table.
     if (segmentation.strides.empty()) {
         const QString why =
             segmentation.swings == 0
-                ? QStringLiteral("no swing above swing_threshold = %1 rad/s about ml_axis = %2")
+                ? QStringLiteral("no swing above swing_threshold = %1 rad/s about ml_axis = %2 %3")
                       .arg(plan->segmentation.swingThreshold)
-                      .arg(context.text(QStringLiteral("ml_axis")))
+                      .arg(plan->mlAxis, axisText(ml->axis))
                 : QStringLiteral("%1 swings, none with a mid-stance below rest_threshold = %2 rad/s on both sides")
                       .arg(segmentation.swings)
                       .arg(plan->segmentation.restThreshold);
@@ -259,6 +265,7 @@ Expected<std::vector<ProcessorOutput>> GaitParametersProcessor::run(const RunCon
     table.attributes =
         QJsonObject{{QStringLiteral("foot"), plan->foot},
                     {QStringLiteral("swing_sign"), segmentation.swingSign},
+                    {QStringLiteral("ml_axis"), QJsonArray{ml->axis.x(), ml->axis.y(), ml->axis.z()}},
                     {QStringLiteral("gyr_bias"), QJsonArray{bias.bias.x(), bias.bias.y(), bias.bias.z()}},
                     {QStringLiteral("gyr_bias_static_time"), bias.staticTime},
                     {QStringLiteral("strides"), int(trajectory.strides.size())},
@@ -293,6 +300,11 @@ Expected<std::vector<ProcessorOutput>> GaitParametersProcessor::run(const RunCon
     }
     table.columns = std::move(c);
     if (plan->smoother) table.attributes.insert(QStringLiteral("zupt_samples"), double(stanceSamples));
+    if (plan->mlAxis == QLatin1String("auto")) {
+        table.attributes.insert(QStringLiteral("ml_axis_principal"),
+                                QJsonArray{ml->principal.x(), ml->principal.y(), ml->principal.z()});
+        table.attributes.insert(QStringLiteral("ml_axis_dominance"), ml->dominance);
+    }
 
     StreamData positions(trajectory.position.size(), 3);
     for (std::size_t r = 0; r < trajectory.position.size(); ++r) {
@@ -302,7 +314,9 @@ Expected<std::vector<ProcessorOutput>> GaitParametersProcessor::run(const RunCon
     const QString frame = QStringLiteral("foot-world");
     QJsonObject attributes{
         {QStringLiteral("frame_definition"),
-         QStringLiteral("z up, x the sensor's heading at the first mid-stance, origin at the first mid-stance")},
+         QStringLiteral("z up; heading 0: the sensor's orientation at the first mid-stance turned level "
+                        "about a horizontal axis (x forward for a sensor with x along the foot); origin at "
+                        "the first mid-stance")},
         {QStringLiteral("foot"), plan->foot}};
     context.report(1.0);
     std::vector<ProcessorOutput> outputs;

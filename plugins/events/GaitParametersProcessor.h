@@ -3,7 +3,8 @@
 // mid-stance, StrideSegmenter) with the spatial parameters from zero-velocity-aided integration
 // (StrideIntegrator, or with method = rts the zero-velocity Kalman smoother over the whole recording,
 // ZuptKalmanSmoother) and the temporal ones from the gyroscope events, plus the foot trajectory as a
-// stream (suffix "trajectory"). Version 2: the `method` parameter and the rts parameters.
+// stream (suffix "trajectory"). Version 2: the `method` parameter and the rts parameters. Version 3:
+// ml_axis = auto (the default, MediolateralAxis.h) and heading changes independent of the mounting.
 #include "core/processing/Processor.h"
 
 namespace athlos::events {
@@ -13,7 +14,7 @@ public:
     QString id() const override { return QStringLiteral("gait-parameters"); }
     QString name() const override;
     QString description() const override;
-    QString version() const override { return QStringLiteral("2"); }
+    QString version() const override { return QStringLiteral("3"); }
     ParameterSpecs parameters() const override;
     QList<InputSpec> inputs() const override;
     QList<OutputSpec> outputs() const override;

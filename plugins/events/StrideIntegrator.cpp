@@ -1,9 +1,10 @@
 #include "plugins/events/StrideIntegrator.h"
 
+#include "core/math/QuaternionOps.h"
+
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 namespace athlos::events {
 
@@ -35,19 +36,24 @@ Vector3d meanAcc(const Imu& imu, std::size_t k, double window) {
     return sum / double(n);
 }
 
-// Heading of the sensor x axis projected on the horizontal plane.
-double headingOf(const Quaterniond& q) {
-    const Vector3d x = q * Vector3d::UnitX();
-    return std::atan2(x.y(), x.x());
-}
-
-double wrap(double a) { return std::remainder(a, 2.0 * std::numbers::pi); }
-
-// Eq. 1: levelled orientation with the accelerometer mean `up` and the given heading.
+// Eq. 1: levelled orientation with the accelerometer mean `up` and the given heading: the smallest
+// rotation taking `up` to the vertical (its axis is horizontal, so it has no heading of its own),
+// then the heading about the vertical.
 Quaterniond levelled(const Vector3d& up, double heading) {
     const Quaterniond tilt = Quaterniond::FromTwoVectors(up, Vector3d::UnitZ());
-    const Quaterniond yaw(Eigen::AngleAxisd(heading - headingOf(tilt), Vector3d::UnitZ()));
-    return (yaw * tilt).normalized();
+    return (Quaterniond(Eigen::AngleAxisd(heading, Vector3d::UnitZ())) * tilt).normalized();
+}
+
+// Eq. 1 at a later mid-stance: q turned about a horizontal axis so that `up` points up. The heading
+// is kept without naming a sensor axis, so this holds for any mounting.
+Quaterniond relevelled(const Quaterniond& q, const Vector3d& up) {
+    return (Quaterniond::FromTwoVectors(q * up, Vector3d::UnitZ()) * q).normalized();
+}
+
+// Heading change from q0 to q1: the twist about the vertical of the rotation between them (earth
+// frame). The sensor's mounting cancels in q1 q0*, so no sensor axis has to be horizontal.
+double headingChange(const Quaterniond& q0, const Quaterniond& q1) {
+    return math::twistHeadingAngle((q1 * q0.conjugate()).normalized());
 }
 
 // Eq. 2: one gyroscope step from k to k + 1 (body-frame rotation by the mean rate).
@@ -90,7 +96,7 @@ FootTrajectory integrateStrides(const StrideIntegrationParams& params, const std
         }
         const Vector3d upStart = meanAcc(imu, s.start, params.levelWindow);
         const Vector3d upEnd = meanAcc(imu, s.end, params.levelWindow);
-        q = levelled(upStart, headingOf(q));
+        q = relevelled(q, upStart);
         const std::size_t n = s.end - s.start + 1;
         orientation.assign(n, q);
         for (std::size_t i = 1; i < n; ++i) orientation[i] = step(imu, s.start + i - 1, orientation[i - 1]);
@@ -130,7 +136,7 @@ FootTrajectory integrateStrides(const StrideIntegrationParams& params, const std
         e.length = d.head<2>().norm();
         e.height = d.z();
         e.maxClearance = maxZ - std::max(0.0, e.height);
-        e.turningAngle = wrap(headingOf(orientation.back()) - headingOf(orientation.front()));
+        e.turningAngle = headingChange(orientation.front(), orientation.back());
         e.tilt = error.angle();
         e.endSpeed = drift.norm();
         out.strides.push_back(e);

@@ -52,7 +52,8 @@ StrideSegmentation segmentStrides(const StrideSegmentationParams& p, const doubl
     out.swingSign =
         p.swingSign ? (p.swingSign < 0 ? -1 : 1) : GaitEventDetector::swingSign(t, gyr, rows, stride, p.mlAxis);
     std::vector<double> w(rows);
-    for (std::size_t k = 0; k < rows; ++k) w[k] = out.swingSign * gyr[k * stride + std::size_t(p.mlAxis)];
+    for (std::size_t k = 0; k < rows; ++k)
+        w[k] = out.swingSign * p.mlAxis.dot(Eigen::Map<const Eigen::Vector3d>(gyr + k * stride));
     const std::vector<double> rest = meanGyroNorm(t, gyr, rows, stride, p.restWindow);
 
     // Swing peaks: the largest ω_ml within ±minStrideTime/2, at least minStrideTime apart.

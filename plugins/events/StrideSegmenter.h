@@ -16,13 +16,15 @@
 //  - one stride per swing whose mid-stances on both sides are accepted; toe-off is the most
 //    negative ω_ml within tcWindow before the swing peak, initial contact the most negative
 //    within icWindow after it (the event definitions of GaitEventDetector).
+#include <Eigen/Core>
+
 #include <cstddef>
 #include <vector>
 
 namespace athlos::events {
 
 struct StrideSegmentationParams {
-    int mlAxis = 1;                 // sensor axis along the medio-lateral direction
+    Eigen::Vector3d mlAxis = Eigen::Vector3d::UnitY();  // unit vector along the medio-lateral direction
     int swingSign = 0;              // +1 / −1, 0: GaitEventDetector::swingSign
     double swingThreshold = 1.5;    // rad/s, as GaitEventParams::swingThreshold
     double minStrideTime = 0.5;     // s

@@ -6,7 +6,6 @@
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 namespace athlos::events {
 
@@ -238,8 +237,8 @@ FootTrajectory smoothStrides(const ZuptStrideParams& params, const std::vector<S
         for (std::size_t k = s.start; k <= s.end; ++k)
             maxZ = std::max(maxZ, states[k - first].position.z() - x0.position.z());
         e.maxClearance = maxZ - std::max(0.0, e.height);
-        e.turningAngle = std::remainder(math::headingAngle(x1.orientation) - math::headingAngle(x0.orientation),
-                                        2.0 * std::numbers::pi);
+        // The twist about the vertical of the rotation between the two mid-stances (the mounting cancels).
+        e.turningAngle = math::twistHeadingAngle((x1.orientation * x0.orientation.conjugate()).normalized());
         e.endSpeed = x1.velocity.norm();
         out.strides.push_back(e);
     }

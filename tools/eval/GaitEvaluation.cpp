@@ -2,6 +2,7 @@
 
 #include "core/io/Importer.h"
 #include "plugins/events/GaitEventsProcessor.h"
+#include "plugins/events/MediolateralAxis.h"
 
 #include <QFile>
 #include <QTextStream>
@@ -149,9 +150,12 @@ Expected<std::vector<FootDetection>> detectGaitmapFile(const QString& imuCsv, co
         f.foot = GaitEventsProcessor::footOf(s->info());
         f.rate = 1.0 / d.medianInterval();
         const double* g = d.values.data() + gyr;
-        f.swingSign = GaitEventDetector::swingSign(d.t.data(), g, d.rows(), std::size_t(d.columns), 1);
+        // As the processor's default ml_axis = auto: the principal axis of the angular velocity.
+        const Eigen::Vector3d axis =
+            mediolateralAxis(QStringLiteral("auto"), g, d.rows(), std::size_t(d.columns))->axis;
+        f.swingSign = GaitEventDetector::swingSign(d.t.data(), g, d.rows(), std::size_t(d.columns), axis);
         GaitEventDetector detector(params, f.swingSign);
-        detector.updateBatch(d.t.data(), g, d.rows(), std::size_t(d.columns), 1);
+        detector.updateBatch(d.t.data(), g, d.rows(), std::size_t(d.columns), axis);
         for (const auto& e : detector.events())
             if (e.type == GaitEventType::InitialContact) f.ics.push_back(e.t);
         f.strides = detector.strides();

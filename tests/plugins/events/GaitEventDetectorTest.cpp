@@ -68,10 +68,11 @@ TEST_P(GaitEventDetectorRates, FindsEveryEventAtItsTime) {
     const double rate = GetParam();
     for (double sign : {1.0, -1.0}) {
         const Walk w = simulate(rate, 1.1, 12, sign, 7);
-        const int detected = GaitEventDetector::swingSign(w.t.data(), w.gyr.data(), w.t.size(), 3, 1);
+        const int detected =
+            GaitEventDetector::swingSign(w.t.data(), w.gyr.data(), w.t.size(), 3, Eigen::Vector3d::UnitY());
         EXPECT_EQ(detected, int(sign));
         GaitEventDetector d({}, detected);
-        d.updateBatch(w.t.data(), w.gyr.data(), w.t.size(), 3, 1);
+        d.updateBatch(w.t.data(), w.gyr.data(), w.t.size(), 3, Eigen::Vector3d::UnitY());
         const double tol = 1.5 / rate + 0.005;
         expectMatches(w.truth.ic, eventsOf(d, GaitEventType::InitialContact), tol);
         expectMatches(w.truth.tc, eventsOf(d, GaitEventType::TerminalContact), tol);
@@ -95,7 +96,7 @@ TEST(GaitEventDetector, WrongSignFindsNoProperStrides) {
     // With the swing sign flipped the push-off dips become "swing peaks": the events land elsewhere.
     const Walk w = simulate(100.0, 1.1, 10, 1.0, 3);
     GaitEventDetector d({}, -1);
-    d.updateBatch(w.t.data(), w.gyr.data(), w.t.size(), 3, 1);
+    d.updateBatch(w.t.data(), w.gyr.data(), w.t.size(), 3, Eigen::Vector3d::UnitY());
     const auto ics = eventsOf(d, GaitEventType::InitialContact);
     int close = 0;
     for (double t : ics)
@@ -113,7 +114,7 @@ TEST(GaitEventDetector, PauseSplitsStridesAndLowersNothingElse) {
         a.gyr.insert(a.gyr.end(), b.gyr.begin() + long(3 * k), b.gyr.begin() + long(3 * k + 3));
     }
     GaitEventDetector d;
-    d.updateBatch(a.t.data(), a.gyr.data(), a.t.size(), 3, 1);
+    d.updateBatch(a.t.data(), a.gyr.data(), a.t.size(), 3, Eigen::Vector3d::UnitY());
     EXPECT_EQ(d.strides().size(), 8u);  // 5 swings → 5 ICs → 4 strides per bout
     for (const auto& s : d.strides()) EXPECT_LT(s.tEnd - s.tStart, 1.2);
 }
@@ -121,7 +122,7 @@ TEST(GaitEventDetector, PauseSplitsStridesAndLowersNothingElse) {
 TEST(GaitEventDetector, IrregularStrideHasLowerConfidence) {
     Walk w = simulate(100.0, 1.0, 8, 1.0, 5);
     GaitEventDetector regular;
-    regular.updateBatch(w.t.data(), w.gyr.data(), w.t.size(), 3, 1);
+    regular.updateBatch(w.t.data(), w.gyr.data(), w.t.size(), 3, Eigen::Vector3d::UnitY());
     // Stretch one stride by delaying everything after t = 5 s by 0.35 s (a hesitation step).
     Walk h;
     for (std::size_t k = 0; k < w.t.size(); ++k) {
@@ -135,7 +136,7 @@ TEST(GaitEventDetector, IrregularStrideHasLowerConfidence) {
         h.gyr.insert(h.gyr.end(), w.gyr.begin() + long(3 * k), w.gyr.begin() + long(3 * k + 3));
     }
     GaitEventDetector hesitant;
-    hesitant.updateBatch(h.t.data(), h.gyr.data(), h.t.size(), 3, 1);
+    hesitant.updateBatch(h.t.data(), h.gyr.data(), h.t.size(), 3, Eigen::Vector3d::UnitY());
     ASSERT_EQ(hesitant.strides().size(), regular.strides().size());
     double minRegular = 1.0, minHesitant = 1.0;
     for (const auto& s : regular.strides()) minRegular = std::min(minRegular, s.confidence);
@@ -146,7 +147,7 @@ TEST(GaitEventDetector, IrregularStrideHasLowerConfidence) {
 TEST(GaitEventDetector, PerSampleUpdateEqualsBatch) {
     const Walk w = simulate(102.4, 1.05, 6, 1.0, 9);
     GaitEventDetector batch, online;
-    batch.updateBatch(w.t.data(), w.gyr.data(), w.t.size(), 3, 1);
+    batch.updateBatch(w.t.data(), w.gyr.data(), w.t.size(), 3, Eigen::Vector3d::UnitY());
     std::size_t seenBeforeEnd = 0;
     for (std::size_t k = 0; k < w.t.size(); ++k) {
         const double* g = &w.gyr[3 * k];

@@ -126,7 +126,8 @@ TEST_F(GaitEventsProcessorTest, ClearErrors) {
     ASSERT_FALSE(none.ok());
     EXPECT_TRUE(
         none.message().startsWith(QStringLiteral("gait-events: input 'walk/still' (imu): no gait event found in "
-                                                 "4.99 s of data (ml_axis = y, swing_threshold = ")))
+                                                 "4.99 s of data (ml_axis = auto [0.000, 1.000, 0.000], "
+                                                 "swing_threshold = ")))
         << qPrintable(none.message());
     EXPECT_EQ(project_->table(QStringLiteral("walk/g")), nullptr);
 }

@@ -5,10 +5,12 @@
 // off the pivot, pivots in turns) and scale errors, both methods side by side.
 // Figures: docs/validation/gait-parameters.md.
 #include "plugins/events/FootMotionSimulator.h"
+#include "plugins/events/MediolateralAxis.h"
 #include "plugins/events/StaticGyroBias.h"
 #include "plugins/events/StrideIntegrator.h"
 #include "plugins/events/ZuptKalmanSmoother.h"
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <gtest/gtest.h>
 
@@ -24,9 +26,17 @@ struct Result {
     StaticGyroBias bias;
 };
 
-Result run(const SimConfig& config, StrideSegmentationParams params = {}) {
+// mount: the sensor frame the signals are expressed in, v_mounted = mount · v (identity: the simulator's
+// "x forward, z up"); autoAxis: the medio-lateral axis from the data (ml_axis = auto) instead of params'.
+Result run(const SimConfig& config, StrideSegmentationParams params = {},
+           const Eigen::Matrix3d& mount = Eigen::Matrix3d::Identity(), bool autoAxis = false) {
     Result r;
     r.rec = simulateFoot(config);
+    for (std::size_t k = 0; k < r.rec.t.size(); ++k)
+        for (std::size_t c : {std::size_t(0), std::size_t(3)}) {
+            Eigen::Map<Eigen::Vector3d> v(r.rec.values.data() + 6 * k + c);
+            v = mount * Eigen::Vector3d(v);
+        }
     const double* v = r.rec.values.data();
     const std::size_t n = r.rec.t.size();
     // As the processor does: the gyroscope bias from the standing phases removed first.
@@ -34,6 +44,7 @@ Result run(const SimConfig& config, StrideSegmentationParams params = {}) {
     std::vector<double> gyr(3 * n);
     for (std::size_t k = 0; k < n; ++k)
         for (std::size_t i = 0; i < 3; ++i) gyr[3 * k + i] = v[6 * k + 3 + i] - r.bias.bias[int(i)];
+    if (autoAxis) params.mlAxis = mediolateralAxis(QStringLiteral("auto"), gyr.data(), n, 3)->axis;
     r.segmentation = segmentStrides(params, r.rec.t.data(), gyr.data(), n, 3);
     r.trajectory = integrateStrides({}, r.segmentation.strides, r.rec.t.data(), v, 6, gyr.data(), 3, n);
     r.smoothed = smoothStrides({}, r.segmentation.strides, r.rec.t.data(), v, 6, gyr.data(), 3, n);
@@ -154,6 +165,50 @@ TEST(GaitParametersSimulation, TurnsGiveTheirHeadingChange) {
     EXPECT_LT(lengthError(r, r.smoothed).worst, 0.02);
     for (std::size_t i = 0; i < r.rec.truth.size(); ++i)
         EXPECT_NEAR(r.smoothed.strides[i].turningAngle, r.rec.truth[i].turn, 0.03) << "stride " << i;
+}
+
+TEST(GaitParametersSimulation, AnyMountingWithTheAutomaticAxis) {
+    // The same turning walk expressed in three other sensor frames: gaitmap's raw lateral NilsPod
+    // (x up, ML along z), an oblique mount and one upside down. With ml_axis = auto the axis is found
+    // along the true medio-lateral direction, and strides, lengths and turns are those of the aligned
+    // sensor for both methods (the mounting cancels in the levelling and in the heading change).
+    SimConfig c = levelWalk();
+    const double turns[] = {0.0, 0.4, -0.3, 0.0, 0.8, -0.6, 0.0, 0.2, 0.0, -0.4, 0.3, 0.0};
+    for (std::size_t i = 0; i < c.strides.size(); ++i) c.strides[i].turn = turns[i];
+    const Result a = run(c);
+    expectMatched(a);
+    const Eigen::Matrix3d mounts[] = {
+        (Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()))
+            .toRotationMatrix(),
+        Eigen::AngleAxisd(2.0, Eigen::Vector3d(1.0, -2.0, 0.5).normalized()).toRotationMatrix(),
+        Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitX()).toRotationMatrix()};
+    for (const Eigen::Matrix3d& mount : mounts) {
+        const Result b = run(c, {}, mount, true);
+        std::vector<double> gyr(3 * b.rec.t.size());
+        for (std::size_t k = 0; k < b.rec.t.size(); ++k)
+            for (std::size_t i = 0; i < 3; ++i) gyr[3 * k + i] = b.rec.values[6 * k + 3 + i];
+        const MediolateralAxis axis = *mediolateralAxis(QStringLiteral("auto"), gyr.data(), b.rec.t.size(), 3);
+        EXPECT_GT(std::abs(axis.axis.dot(mount * Eigen::Vector3d::UnitY())), 0.99) << axis.axis.transpose();
+        std::printf(
+            "[ figures  ] mount: true ML axis [%.3f %.3f %.3f], principal [%.3f %.3f %.3f], used [%.3f %.3f "
+            "%.3f], dominance %.2f\n",
+            (mount * Eigen::Vector3d::UnitY()).x(), (mount * Eigen::Vector3d::UnitY()).y(),
+            (mount * Eigen::Vector3d::UnitY()).z(), axis.principal.x(), axis.principal.y(), axis.principal.z(),
+            axis.axis.x(), axis.axis.y(), axis.axis.z(), axis.dominance);
+        EXPECT_GT(axis.dominance, 0.6);
+        expectMatched(b);
+        ASSERT_EQ(b.smoothed.strides.size(), a.smoothed.strides.size());
+        for (std::size_t i = 0; i < a.trajectory.strides.size(); ++i) {
+            const auto &x = a.trajectory.strides[i], &y = b.trajectory.strides[i];
+            EXPECT_DOUBLE_EQ(x.tStart, y.tStart) << "stride " << i;
+            EXPECT_NEAR(x.length, y.length, 1e-6) << "stride " << i;
+            EXPECT_NEAR(x.turningAngle, y.turningAngle, 1e-6) << "stride " << i;
+            EXPECT_NEAR(y.turningAngle, b.rec.truth[i].turn, 0.03) << "stride " << i;
+            EXPECT_LT(relativeError(y.length, b.rec.truth[i].length), 0.015) << "stride " << i;
+            EXPECT_NEAR(a.smoothed.strides[i].length, b.smoothed.strides[i].length, 1e-6) << "stride " << i;
+            EXPECT_NEAR(b.smoothed.strides[i].turningAngle, b.rec.truth[i].turn, 0.03) << "stride " << i;
+        }
+    }
 }
 
 TEST(GaitParametersSimulation, StairsGiveHorizontalLengthAndStepPairHeight) {

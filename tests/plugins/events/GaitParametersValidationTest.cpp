@@ -2,7 +2,8 @@
 // the strides segmented from motion capture: every reference stride (IC to IC) contains the
 // midpoint of exactly one estimated stride (the judged rule of issue #17). The shared data has no
 // stride-length reference, so lengths are checked for plausibility only (healthy walking
-// 1.0–1.8 m, small spread). Stairs: stride height ≈ a step pair. Figures:
+// 1.0–1.8 m, small spread). Stairs: stride height ≈ a step pair. The walk rotated into the raw
+// sensor frames gives the same results (ml_axis = auto). Figures:
 // docs/validation/gait-parameters.md.
 #include "plugins/events/GaitParametersProcessor.h"
 
@@ -10,7 +11,9 @@
 #include "core/processing/ProcessorRunner.h"
 #include "tools/eval/GaitEvaluation.h"
 
+#include <Eigen/Geometry>
 #include <QDir>
+#include <QJsonArray>
 #include <QTemporaryDir>
 #include <algorithm>
 #include <cmath>
@@ -217,6 +220,63 @@ TEST_F(GaitParametersValidation, MethodRtsMatchesEveryStrideAndTheFeetAgree) {
         "[ figures  ] gaitmap walk: rts − instant on the 14 matched strides mean %+.1f %%, largest %.1f %%; "
         "left/right mean stride per straight bout differs by %.2f %% (instant) and %.2f %% (rts) over %d bouts\n",
         100.0 * sumDifference / matched, 100.0 * maxDifference, 100.0 * instantLr, 100.0 * rtsLr, bouts);
+}
+
+TEST_F(GaitParametersValidation, SensorMountingDoesNotMatter) {
+    // gaitmap's files are turned into "x forward, z up"; its raw lateral NilsPods are not (the
+    // rotations of gaitmap's example_data/extract_example_data.py: raw = Rz(±90°) Rx(±90°) aligned, so
+    // the medio-lateral axis is z and x points up). The same walk expressed in those raw frames must
+    // give the same strides, lengths and turns with the default ml_axis = auto: the principal axis of
+    // ω turns with the sensor, the heading change is taken from the rotation between mid-stances.
+    import(QStringLiteral("imu_sample_ic_stride.csv"), QStringLiteral("walk"));
+    for (const auto& [foot, sign] :
+         {std::pair{QStringLiteral("left"), 1.0}, std::pair{QStringLiteral("right"), -1.0}}) {
+        const Stream* aligned = project_->stream(QStringLiteral("walk/%1-foot").arg(foot));
+        ASSERT_NE(aligned, nullptr);
+        auto data = aligned->data();
+        ASSERT_TRUE(data.ok()) << qPrintable(data.message());
+        const Eigen::Matrix3d mount = (Eigen::AngleAxisd(sign * M_PI / 2, Eigen::Vector3d::UnitZ()) *
+                                       Eigen::AngleAxisd(sign * M_PI / 2, Eigen::Vector3d::UnitX()))
+                                          .toRotationMatrix();
+        StreamData raw = **data;
+        const int acc = aligned->info().columnIndex(QStringLiteral("acc_x")),
+                  gyr = aligned->info().columnIndex(QStringLiteral("gyr_x"));
+        for (std::size_t k = 0; k < raw.rows(); ++k)
+            for (const int c : {acc, gyr}) {
+                const Eigen::Vector3d v = mount * Eigen::Vector3d(raw.at(k, c), raw.at(k, c + 1), raw.at(k, c + 2));
+                for (int i = 0; i < 3; ++i) raw.at(k, c + i) = v[i];
+            }
+        StreamInfo info = aligned->info();
+        info.name = QStringLiteral("walk/%1-raw").arg(foot);
+        project_->putStream(info.name, Stream(info, std::move(raw)));
+
+        const Table* a = run(QStringLiteral("walk/%1-foot").arg(foot), QStringLiteral("walk/%1-a").arg(foot));
+        const Table* b = run(info.name, QStringLiteral("walk/%1-b").arg(foot));
+        ASSERT_NE(a, nullptr);
+        ASSERT_NE(b, nullptr);
+        // In the raw frame the medio-lateral axis is z.
+        const QJsonArray axis = b->attributes.value(QStringLiteral("ml_axis")).toArray();
+        ASSERT_EQ(axis.size(), 3);
+        EXPECT_GT(std::abs(axis[2].toDouble()), 0.95) << qPrintable(foot);
+        const double dominance = b->attributes.value(QStringLiteral("ml_axis_dominance")).toDouble();
+        EXPECT_GT(dominance, 0.5);
+        const QJsonArray u = b->attributes.value(QStringLiteral("ml_axis_principal")).toArray();
+        ASSERT_EQ(u.size(), 3);
+        std::printf(
+            "[ figures  ] %s foot, raw lateral frame: principal axis [%.3f, %.3f, %.3f], used [%.0f, %.0f, "
+            "%.0f], dominance %.2f\n",
+            qPrintable(foot), u[0].toDouble(), u[1].toDouble(), u[2].toDouble(), axis[0].toDouble(), axis[1].toDouble(),
+            axis[2].toDouble(), dominance);
+        EXPECT_EQ(column(*a, "start"), column(*b, "start")) << qPrintable(foot);
+        EXPECT_EQ(column(*a, "end"), column(*b, "end")) << qPrintable(foot);
+        for (const char* name :
+             {"stride_length", "stride_height", "max_toe_clearance", "turning_angle", "swing_time"}) {
+            const auto x = column(*a, name), y = column(*b, name);
+            ASSERT_EQ(x.size(), y.size()) << name;
+            for (std::size_t i = 0; i < x.size(); ++i)
+                EXPECT_NEAR(x[i], y[i], 1e-6) << qPrintable(foot) << " " << name << " stride " << i;
+        }
+    }
 }
 
 TEST_F(GaitParametersValidation, StairsClimbAStepPairPerStride) {

@@ -1,0 +1,52 @@
+#include "plugins/events/MediolateralAxis.h"
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+
+namespace athlos::events {
+
+MediolateralAxis principalRotationAxis(const double* gyr, std::size_t rows, std::size_t stride) {
+    Eigen::Matrix3d s = Eigen::Matrix3d::Zero();
+    for (std::size_t k = 0; k < rows; ++k) {
+        const Eigen::Vector3d w(gyr + k * stride);
+        if (w.allFinite()) s.noalias() += w * w.transpose();
+    }
+    MediolateralAxis out;
+    const double trace = s.trace();
+    if (!(trace > 0.0)) return out;
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(s);  // eigenvalues in increasing order
+    Eigen::Vector3d u = eig.eigenvectors().col(2);
+    Eigen::Index largest = 0;
+    u.cwiseAbs().maxCoeff(&largest);
+    if (u[largest] < 0.0) u = -u;
+    out.axis = out.principal = u.normalized();
+    out.dominance = eig.eigenvalues()[2] / trace;
+    return out;
+}
+
+std::optional<MediolateralAxis> mediolateralAxis(const QString& choice, const double* gyr, std::size_t rows,
+                                                 std::size_t stride) {
+    if (choice == QLatin1String("auto")) {
+        MediolateralAxis out = principalRotationAxis(gyr, rows, stride);
+        Eigen::Index nearest = 0;
+        if (out.principal.cwiseAbs().maxCoeff(&nearest) >= std::cos(kSnapAngle))
+            out.axis = Eigen::Vector3d::Unit(nearest);  // the largest component is positive
+        return out;
+    }
+    MediolateralAxis out;
+    if (choice == QLatin1String("x"))
+        out.axis = Eigen::Vector3d::UnitX();
+    else if (choice == QLatin1String("y"))
+        out.axis = Eigen::Vector3d::UnitY();
+    else if (choice == QLatin1String("z"))
+        out.axis = Eigen::Vector3d::UnitZ();
+    else
+        return std::nullopt;
+    return out;
+}
+
+QString axisText(const Eigen::Vector3d& axis) {
+    return QStringLiteral("[%1, %2, %3]").arg(axis.x(), 0, 'f', 3).arg(axis.y(), 0, 'f', 3).arg(axis.z(), 0, 'f', 3);
+}
+
+}  // namespace athlos::events
