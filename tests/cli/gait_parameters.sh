@@ -4,8 +4,8 @@
 # of exactly one estimated stride, and the matched stride lengths must be plausible (no length
 # reference in the shared data). A still recording is refused and leaves the project unchanged.
 source "$(dirname "$0")/lib/common.bash" "$@"
+need_shared gaitmap/imu_sample_ic_stride.csv gaitmap/stride_borders_sample_ic_stride.csv gaitmap/imu_sample_healthy_stair_up.csv
 G="$SHARED_DATA/gaitmap"
-[ -f "$G/imu_sample_ic_stride.csv" ] || { echo "no gaitmap data, skipped"; exit 0; }
 P="$WORK/p.athlos"
 sed '1s/^/sensor/; 2s/^/axis/' "$G/imu_sample_ic_stride.csv" > "$WORK/walk.csv"
 expect_ok "new" "$ATHLOS" new "$P"

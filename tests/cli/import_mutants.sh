@@ -3,6 +3,7 @@
 # ranging, BROAD) never crash or hang `athlos import`; a refused import prints its reason and leaves
 # the project byte-identical; an accepted one leaves a readable project.
 source "$(dirname "$0")/lib/common.bash" "$@"
+need_shared gaitmap/imu_sample_ic_stride.csv uwb-outdoor/LOS_Trajectory_A_Case_1/A3.csv nmea/haicom-305N.log broad/33_disturbed_attached_magnet_2cm.hdf5
 P="$WORK/p.athlos"
 make_imu_csv "$WORK/imu.csv" 400
 expect_ok "new" "$ATHLOS" new "$P"

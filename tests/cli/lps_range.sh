@@ -3,6 +3,7 @@
 # lps-range stream (auto-detected ROS CSV, ns stamps), the same files with --kind beacons the beacon
 # table, and the range stream exports back in long form. A folder imports one stream per athlete.
 source "$(dirname "$0")/lib/common.bash" "$@"
+need_shared uwb-outdoor/NLOS_Trajectory_B_Case_3
 P="$WORK/p.athlos"
 CASE="$SHARED_DATA/uwb-outdoor/NLOS_Trajectory_B_Case_3"
 expect_ok "new" "$ATHLOS" new "$P"

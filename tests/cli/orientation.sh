@@ -5,6 +5,7 @@
 # Bounds are generous (the unit-level validation test holds the judged ones). Also: the simulated
 # GNSS/IMU session fuses, and parameter errors name the parameter.
 source "$(dirname "$0")/lib/common.bash" "$@"
+need_shared broad/02_undisturbed_slow_rotation_B.hdf5 broad/24_disturbed_tapping_A.hdf5
 P="$WORK/p.athlos"
 expect_ok "new" "$ATHLOS" new "$P"
 

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The real recordings import through their formats, and the screenshot shows them.
 source "$(dirname "$0")/lib/common.bash" "$@"
+need_shared broad/02_undisturbed_slow_rotation_B.hdf5 broad/24_disturbed_tapping_A.hdf5 gaitmap/imu_sample_ic_stride.csv
 P="$WORK/p.athlos"
 expect_ok "new" "$ATHLOS" new "$P"
 expect_ok "import broad" "$ATHLOS" import "$P" "$SHARED_DATA/broad/02_undisturbed_slow_rotation_B.hdf5" --as trial02 --format broad

@@ -6,6 +6,7 @@
 # must be ≤ 0.6 × the ESKF mean; per-instant ToA fixes from lps-positioning must beat the authors' LS. Then the refusals: ranges without beacons, unknown beacon ids,
 # model=pseudo, filter=ukf — each naming the cause and leaving the project unchanged.
 source "$(dirname "$0")/lib/common.bash" "$@"
+need_shared uwb-outdoor/LOS_Trajectory_A_Case_1 uwb-outdoor/NLOS_Trajectory_B_Case_3
 EVAL="$(dirname "$ATHLOS")/athlos-eval-uwb"
 [ -x "$EVAL" ] || { echo "athlos-eval-uwb not built"; exit 77; }
 sum_ours=0; sum_eskf=0

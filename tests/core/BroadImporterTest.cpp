@@ -1,6 +1,8 @@
 // BROAD import against the real trial, checked with direct HDF5 reads; damaged and incomplete files.
 #include "core/io/Importer.h"
 
+#include "tests/SharedData.h"
+
 #include <gtest/gtest.h>
 
 #include <QFile>
@@ -65,6 +67,7 @@ void writeDataset(hid_t file, const char* name, hsize_t rows, hsize_t columns) {
 }  // namespace
 
 TEST(BroadImport, ImportsImuAndReferenceOfTheRealTrial) {
+    ATHLOS_SKIP_WITHOUT_SHARED(kTrial);
     const auto r = importBroad(kTrial);
     ASSERT_TRUE(r.ok()) << r.message().toStdString();
     ASSERT_EQ(r->items.size(), 2u);
@@ -134,6 +137,7 @@ TEST(BroadImport, ImportsImuAndReferenceOfTheRealTrial) {
 }
 
 TEST(BroadImport, AutoDetectionAndTargetNaming) {
+    ATHLOS_SKIP_WITHOUT_SHARED(kTrial);
     const auto r = importBroad(kTrial, "auto", "t2/broad");
     ASSERT_TRUE(r.ok()) << r.message().toStdString();
     EXPECT_EQ(r->items[0].path, "t2/broad-imu");
@@ -143,6 +147,7 @@ TEST(BroadImport, AutoDetectionAndTargetNaming) {
 }
 
 TEST(BroadImport, RefusesTruncatedAndGarbageFiles) {
+    ATHLOS_SKIP_WITHOUT_SHARED(kTrial);
     QTemporaryDir dir;
     QFile source(kTrial);
     ASSERT_TRUE(source.open(QIODevice::ReadOnly));

@@ -2,6 +2,8 @@
 #include "core/io/GaitmapImporter.h"
 #include "core/io/Importer.h"
 
+#include "tests/SharedData.h"
+
 #include <gtest/gtest.h>
 
 #include <QFile>
@@ -79,6 +81,7 @@ void expectMatchesRaw(const ImportResult& result, const Raw& raw) {
 }  // namespace
 
 TEST(GaitmapImport, StrideFileWithSampleIndexAndInterleavedColumns) {
+    ATHLOS_SKIP_WITHOUT_SHARED(kStride);
     const Raw raw = readRaw(kStride);
     ASSERT_EQ(raw.rows.size(), 4053u);
     const auto r = importGaitmap(kStride);
@@ -96,6 +99,7 @@ TEST(GaitmapImport, StrideFileWithSampleIndexAndInterleavedColumns) {
 }
 
 TEST(GaitmapImport, StairFileWithTimeInSecondsAndGroupedColumns) {
+    ATHLOS_SKIP_WITHOUT_SHARED(kStairUp);
     const Raw raw = readRaw(kStairUp);
     const auto r = importGaitmap(kStairUp, "auto");
     ASSERT_TRUE(r.ok()) << r.message().toStdString();
@@ -108,6 +112,7 @@ TEST(GaitmapImport, StairFileWithTimeInSecondsAndGroupedColumns) {
 }
 
 TEST(GaitmapImport, PandasLevelNamesInTheIndexColumn) {
+    ATHLOS_SKIP_WITHOUT_SHARED(kStride);
     // pandas' to_csv of a MultiIndex frame writes the level names ("sensor", "axis") into the index
     // column, and a third row with the index name when it has one: the same streams as with empty cells.
     const Raw raw = readRaw(kStride);
@@ -181,6 +186,8 @@ TEST(GaitmapImport, ErrorsNameFileLineAndColumn) {
 }
 
 TEST(GaitmapImport, SampleIndexRateFromTheMotion) {
+    ATHLOS_SKIP_WITHOUT_SHARED(kStairUp);
+    ATHLOS_SKIP_WITHOUT_SHARED(kStride);
     // The stair file (204.8 Hz, time in seconds) rewritten with a sample index, as pandas writes
     // gaitmap's imu_sample.csv: the rate comes from the gyroscope/accelerometer agreement, not 102.4 Hz.
     const Raw raw = readRaw(kStairUp);

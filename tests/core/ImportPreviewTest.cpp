@@ -3,6 +3,8 @@
 #include "TestFiles.h"
 #include "core/io/ImportPreview.h"
 
+#include "tests/SharedData.h"
+
 #include <gtest/gtest.h>
 
 #include <QFile>
@@ -130,6 +132,7 @@ TEST_F(Preview, TimeUnitFromColumnName) {
 }
 
 TEST_F(Preview, Gaitmap) {
+    ATHLOS_SKIP_WITHOUT_SHARED(kGaitmap);
     const auto p = previewFile(kGaitmap, "auto", 5);
     ASSERT_TRUE(p.ok()) << qPrintable(p.message());
     EXPECT_EQ(p->format, QStringLiteral("gaitmap"));
@@ -147,6 +150,7 @@ TEST_F(Preview, Gaitmap) {
 }
 
 TEST_F(Preview, Broad) {
+    ATHLOS_SKIP_WITHOUT_SHARED(kBroad);
     const auto p = previewFile(kBroad, "auto", 4);
     ASSERT_TRUE(p.ok()) << qPrintable(p.message());
     EXPECT_EQ(p->format, QStringLiteral("broad"));

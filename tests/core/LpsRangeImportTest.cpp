@@ -7,6 +7,8 @@
 #include "core/io/MultiImport.h"
 #include "core/io/TdoaLayout.h"
 
+#include "tests/SharedData.h"
+
 #include <QDir>
 #include <QFile>
 #include <QJsonArray>
@@ -73,6 +75,7 @@ TEST(LpsRange, LongCsvIsStoredWideAndExportedLong) {
 }
 
 TEST(LpsRange, RosAnchorFileIsDetectedWithNanosecondStamps) {
+    ATHLOS_SKIP_WITHOUT_SHARED(kUwb + "A3.csv");
     const auto chosen = chooseImporter(kUwb + "A3.csv", "auto");
     ASSERT_TRUE(chosen.ok());
     EXPECT_EQ((*chosen)->format(), QStringLiteral("ros"));
@@ -89,6 +92,7 @@ TEST(LpsRange, RosAnchorFileIsDetectedWithNanosecondStamps) {
 }
 
 TEST(LpsRange, FourAnchorFilesMergeIntoOneStream) {
+    ATHLOS_SKIP_WITHOUT_SHARED(kUwb + "A12.csv");
     const auto r = importFiles(anchorFiles(), optionsFor("lps-range"));
     ASSERT_TRUE(r.ok()) << qPrintable(r.message());
     ASSERT_EQ(r->items.size(), 1u);
@@ -108,6 +112,7 @@ TEST(LpsRange, FourAnchorFilesMergeIntoOneStream) {
 }
 
 TEST(LpsRange, AnchorFilesGiveTheBeaconTable) {
+    ATHLOS_SKIP_WITHOUT_SHARED(kUwb + "A12.csv");
     const auto r = importFiles(anchorFiles(), optionsFor("beacons"));
     ASSERT_TRUE(r.ok()) << qPrintable(r.message());
     ASSERT_EQ(r->items.size(), 1u);

@@ -4,6 +4,8 @@
 #include "TestFiles.h"
 #include "core/io/Importer.h"
 
+#include "tests/SharedData.h"
+
 #include <QTemporaryDir>
 #include <gtest/gtest.h>
 #include <cmath>
@@ -172,6 +174,7 @@ TEST(NmeaImporter, SharedLogs) {
     for (const Case& c : {Case{"haicom-305N.log", "2007-04-08T09:53:04.802Z", 70.985, 68},
                           Case{"nmea-rtk.log", "2020-03-18T13:28:19.600Z", 641.9, 122}}) {
         const QString file = QString::fromUtf8(ATHLOS_SHARED_DATA_DIR "/nmea/") + QLatin1String(c.file);
+        ATHLOS_SKIP_WITHOUT_SHARED(file);
         ImportOptions options;
         options.target = QStringLiteral("g");
         const auto r = importFile(file, options);  // auto-detected despite the leading comments

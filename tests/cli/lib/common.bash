@@ -23,3 +23,10 @@ make_imu_csv() {
     for(i=0;i<n;i++){t=i/100; printf "%.2f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.4f,%.4f,%.4f\n",
       t, sin(t), cos(t), 9.81+0.1*sin(3*t), 0.5*sin(2*t), 0.2*cos(t), 0.1, 20+sin(t), -5, 40}}' > "$1"
 }
+# need_shared <path under shared/data…>: skip the whole script (exit 77, ctest's SKIP_RETURN_CODE) when a
+# shared recording is missing, naming it, rather than failing on it.
+need_shared() {
+  local f; for f in "$@"; do
+    [ -e "$SHARED_DATA/$f" ] || { echo "SKIP: shared recording not found: $SHARED_DATA/$f"; exit 77; }
+  done
+}
