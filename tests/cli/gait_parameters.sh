@@ -38,6 +38,25 @@ grep -q '"path": "walk/left-rts-strides-trajectory"' "$WORK/out" || fail "no rts
 expect_fail "unknown method" "method" "$ATHLOS" run "$P" gait-parameters --input walk/left-foot --output walk/x \
   --param method=kalman
 
+# Another mounting (the held-out walk may come from other devices): the same walk in the raw frames of
+# gaitmap's lateral NilsPods (its extract_example_data.py: raw = Rz(±90°) Rx(±90°) aligned, so x points
+# up and the medio-lateral axis is z). The default ml_axis=auto must give the same strides and lengths.
+awk -F, 'NR <= 2 { print; next }
+  { printf "%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n",
+      $1, $6, $7, $2, -$3, $4, -$5, $12, $13, $8, -$9, $10, -$11 }' "$WORK/walk.csv" > "$WORK/raw.csv"
+expect_ok "import raw mounting" "$ATHLOS" import "$P" "$WORK/raw.csv" --as raw --format gaitmap
+for foot in left right; do
+  expect_ok "run raw $foot" "$ATHLOS" run "$P" gait-parameters --input "raw/$foot-foot" --output "raw/$foot-strides"
+  expect_ok "export raw $foot" "$ATHLOS" export "$P" "raw/$foot-strides" --to "$WORK/raw-$foot.csv"
+  expect_ok "export aligned $foot" "$ATHLOS" export "$P" "walk/$foot-strides" --to "$WORK/aligned-$foot.csv"
+  result=$(awk -F, 'NR == FNR { a[FNR] = $0; n = FNR; next }
+    { split(a[FNR], x, ","); for (c = 1; c <= 11; ++c) { d = x[c] - $c; if (d < 0) d = -d;
+        if (d > 1e-6) { printf "row %d column %d: %s against %s; ", FNR, c, $c, x[c]; bad = 1 } } }
+    END { if (FNR != n) printf "%d rows against %d; ", FNR, n; print (bad || FNR != n) ? "" : "ok" }' \
+    "$WORK/aligned-$foot.csv" "$WORK/raw-$foot.csv")
+  [ "$result" = "ok" ] || fail "raw mounting, $foot: $result"
+done
+
 # A sample-index file at 204.8 Hz (the stair file rewritten the way pandas writes gaitmap's imu_sample.csv):
 # the import tells the rate from the motion and says so, --rate overrides it, a bad --rate is a usage error.
 awk -F, 'BEGIN { OFS = "," } NR == 1 { print "sensor" $0; next } NR == 2 { print; next } { $1 = NR - 3; print }' \
