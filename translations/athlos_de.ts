@@ -381,6 +381,14 @@
         <source>The ski stands still for this long at the start of the recording (first inclination and gyroscope bias).</source>
         <translation>So lange steht der Ski zu Beginn der Aufnahme still (erste Neigung und Gyroskop-Bias).</translation>
     </message>
+    <message>
+        <source>Sensor axis along the medio-lateral direction (y when x points forward and z up); auto: the principal axis of the angular velocity, whatever the mounting.</source>
+        <translation>Sensorachse in medio-lateraler Richtung (y, wenn x nach vorn und z nach oben zeigt); auto: die Hauptachse der Winkelgeschwindigkeit, unabhängig von der Befestigung.</translation>
+    </message>
+    <message>
+        <source>Sign of the medio-lateral angular velocity during swing; auto: the sign of the longest sustained rotation.</source>
+        <translation>Vorzeichen der medio-lateralen Winkelgeschwindigkeit im Schwung; auto: das Vorzeichen der längsten anhaltenden Drehung.</translation>
+    </message>
 </context>
 <context>
     <name>athlos::events::AlpineTurnsProcessor</name>
@@ -436,10 +444,6 @@
         <translation>Initialkontakt, Zehenablösung und Mittelstand aus dem medio-lateralen Gyroskop einer am Fuß getragenen IMU (negative Spitzen des in der Schwungphase positiven Signals nach und vor jeder Schwungspitze; Minimum der Gyroskopnorm im Stand). Schreibt die Doppelschritte (IC bis zum nächsten IC) als vorhergesagte Annotationen mit Konfidenz und eine Tabelle der Ereignisse.</translation>
     </message>
     <message>
-        <source>Sign of the medio-lateral angular velocity during swing; auto: the sign of the longest sustained rotation.</source>
-        <translation>Vorzeichen der medio-lateralen Winkelgeschwindigkeit im Schwung; auto: das Vorzeichen der längsten anhaltenden Drehung.</translation>
-    </message>
-    <message>
         <source>Minimum mid-swing angular velocity of a stride.</source>
         <translation>Minimale Winkelgeschwindigkeit eines Doppelschritts in der Schwungmitte.</translation>
     </message>
@@ -475,20 +479,12 @@
         <source>Strides (IC to next IC) as predicted annotations with confidence.</source>
         <translation>Doppelschritte (IC bis zum nächsten IC) als vorhergesagte Annotationen mit Konfidenz.</translation>
     </message>
-    <message>
-        <source>Sensor axis along the medio-lateral direction (y when x points forward and z up); auto: the principal axis of the angular velocity, whatever the mounting.</source>
-        <translation>Sensorachse in medio-lateraler Richtung (y, wenn x nach vorn und z nach oben zeigt); auto: die Hauptachse der Winkelgeschwindigkeit, unabhängig von der Befestigung.</translation>
-    </message>
 </context>
 <context>
     <name>athlos::events::GaitParametersProcessor</name>
     <message>
         <source>Gait parameters (foot IMU)</source>
         <translation>Gangparameter (Fuß-IMU)</translation>
-    </message>
-    <message>
-        <source>Sign of the medio-lateral angular velocity during swing; auto: the sign of the longest sustained rotation.</source>
-        <translation>Vorzeichen der medio-lateralen Winkelgeschwindigkeit im Schwung; auto: das Vorzeichen der längsten anhaltenden Drehung.</translation>
     </message>
     <message>
         <source>Minimum mid-swing angular velocity of a stride (gait-events&apos; default; walking peaks are 4–7 rad/s, Rampp et al. 2015).</source>
@@ -569,10 +565,6 @@
     <message>
         <source>Strides between consecutive mid-stance (minimum-velocity) instants of a foot-mounted IMU and zero-velocity-aided integration (method rts: a Kalman smoother over the whole recording with zero velocity on every stance sample; method instant: per stride, levelled from gravity at each mid-stance, inclination and velocity drift removed linearly): stride length (horizontal) and height, stride, stance and swing time, cadence, gait speed, toe clearance and turning angle; plus the foot trajectory.</source>
         <translation>Doppelschritte zwischen aufeinanderfolgenden Standphasenmitten (minimale Geschwindigkeit) eines am Fuß getragenen IMU und Integration mit Nullgeschwindigkeits-Stützung (Methode rts: ein Kalman-Glätter über die ganze Aufnahme mit Nullgeschwindigkeit an jedem Standphasen-Sample; Methode instant: je Doppelschritt, an jeder Standphasenmitte aus der Schwerkraft horizontiert, Neigungs- und Geschwindigkeitsdrift linear entfernt): Schrittlänge (horizontal) und -höhe, Schritt-, Stand- und Schwungzeit, Kadenz, Ganggeschwindigkeit, Bodenfreiheit und Drehwinkel; dazu die Fußtrajektorie.</translation>
-    </message>
-    <message>
-        <source>Sensor axis along the medio-lateral direction (y when x points forward and z up); auto: the principal axis of the angular velocity, whatever the mounting.</source>
-        <translation>Sensorachse in medio-lateraler Richtung (y, wenn x nach vorn und z nach oben zeigt); auto: die Hauptachse der Winkelgeschwindigkeit, unabhängig von der Befestigung.</translation>
     </message>
     <message>
         <source>Foot-mounted IMU: acc_x..z (m/s^2), gyr_x..z (rad/s), in any sensor frame (ml_axis = auto finds the medio-lateral axis; give it when the recording is too short to tell).</source>

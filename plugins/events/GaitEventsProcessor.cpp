@@ -40,8 +40,7 @@ Expected<Plan> makePlan(const RunContext& c) {
                                        .arg(info.columns[std::size_t(plan.gyr + k)].name, unit));
     }
     plan.axis = c.text(QStringLiteral("ml_axis"));
-    const QString sign = c.text(QStringLiteral("swing_sign"));
-    plan.sign = sign == QLatin1String("positive") ? 1 : sign == QLatin1String("negative") ? -1 : 0;
+    plan.sign = swingSignOf(c.text(QStringLiteral("swing_sign")));
     auto& p = plan.params;
     p.swingThreshold = c.number(QStringLiteral("swing_threshold"));
     p.minStrideTime = c.number(QStringLiteral("min_stride"));
@@ -93,17 +92,8 @@ QString GaitEventsProcessor::description() const {
 ParameterSpecs GaitEventsProcessor::parameters() const {
     const GaitEventDetector::Params d;
     return {
-        ParameterSpec::choice(
-            QStringLiteral("ml_axis"),
-            {QStringLiteral("auto"), QStringLiteral("x"), QStringLiteral("y"), QStringLiteral("z")},
-            QStringLiteral("auto"),
-            tr("Sensor axis along the medio-lateral direction (y when x points forward and z up); auto: the "
-               "principal axis of the angular velocity, whatever the mounting.")),
-        ParameterSpec::choice(QStringLiteral("swing_sign"),
-                              {QStringLiteral("auto"), QStringLiteral("positive"), QStringLiteral("negative")},
-                              QStringLiteral("auto"),
-                              tr("Sign of the medio-lateral angular velocity during swing; auto: the sign of "
-                                 "the longest sustained rotation.")),
+        mlAxisParameter(),
+        swingSignParameter(),
         ParameterSpec::number(QStringLiteral("swing_threshold"), d.swingThreshold, 0.0, kInf, QStringLiteral("rad/s"),
                               tr("Minimum mid-swing angular velocity of a stride.")),
         ParameterSpec::number(QStringLiteral("min_stride"), d.minStrideTime, 0.05, kInf, QStringLiteral("s"),

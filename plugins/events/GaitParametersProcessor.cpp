@@ -59,8 +59,7 @@ Expected<Plan> makePlan(const RunContext& c) {
     plan.gyr = *gyr;
     auto& p = plan.segmentation;
     plan.mlAxis = c.text(QStringLiteral("ml_axis"));
-    const QString sign = c.text(QStringLiteral("swing_sign"));
-    p.swingSign = sign == QLatin1String("positive") ? 1 : sign == QLatin1String("negative") ? -1 : 0;
+    p.swingSign = swingSignOf(c.text(QStringLiteral("swing_sign")));
     p.swingThreshold = c.number(QStringLiteral("swing_threshold"));
     p.minStrideTime = c.number(QStringLiteral("min_stride"));
     p.maxStrideTime = c.number(QStringLiteral("max_stride"));
@@ -126,17 +125,8 @@ ParameterSpecs GaitParametersProcessor::parameters() const {
             tr("instant: per stride, zero velocity at the two mid-stance instants, drift removed linearly. rts: "
                "zero-velocity-aided error-state Kalman filter with Rauch-Tung-Striebel smoothing over the whole "
                "recording, zero velocity on every stance sample (Skog et al. 2010; gaitmap RtsKalman).")),
-        ParameterSpec::choice(
-            QStringLiteral("ml_axis"),
-            {QStringLiteral("auto"), QStringLiteral("x"), QStringLiteral("y"), QStringLiteral("z")},
-            QStringLiteral("auto"),
-            tr("Sensor axis along the medio-lateral direction (y when x points forward and z up); auto: the "
-               "principal axis of the angular velocity, whatever the mounting.")),
-        ParameterSpec::choice(QStringLiteral("swing_sign"),
-                              {QStringLiteral("auto"), QStringLiteral("positive"), QStringLiteral("negative")},
-                              QStringLiteral("auto"),
-                              tr("Sign of the medio-lateral angular velocity during swing; auto: the sign of "
-                                 "the longest sustained rotation.")),
+        mlAxisParameter(),
+        swingSignParameter(),
         ParameterSpec::number(QStringLiteral("swing_threshold"), d.swingThreshold, 0.0, kInf, QStringLiteral("rad/s"),
                               tr("Minimum mid-swing angular velocity of a stride (gait-events' default; walking "
                                  "peaks are 4–7 rad/s, Rampp et al. 2015).")),

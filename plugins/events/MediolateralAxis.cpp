@@ -1,9 +1,15 @@
 #include "plugins/events/MediolateralAxis.h"
 
+#include "core/processing/Translator.h"
+
 #include <Eigen/Eigenvalues>
 #include <cmath>
 
 namespace athlos::events {
+
+namespace {
+constexpr Translator tr{"athlos::events"};
+}  // namespace
 
 MediolateralAxis principalRotationAxis(const double* gyr, std::size_t rows, std::size_t stride) {
     Eigen::Matrix3d s = Eigen::Matrix3d::Zero();
@@ -43,6 +49,26 @@ std::optional<MediolateralAxis> mediolateralAxis(const QString& choice, const do
     else
         return std::nullopt;
     return out;
+}
+
+ParameterSpec mlAxisParameter() {
+    return ParameterSpec::choice(
+        QStringLiteral("ml_axis"),
+        {QStringLiteral("auto"), QStringLiteral("x"), QStringLiteral("y"), QStringLiteral("z")}, QStringLiteral("auto"),
+        tr("Sensor axis along the medio-lateral direction (y when x points forward and z up); auto: the "
+           "principal axis of the angular velocity, whatever the mounting."));
+}
+
+ParameterSpec swingSignParameter() {
+    return ParameterSpec::choice(QStringLiteral("swing_sign"),
+                                 {QStringLiteral("auto"), QStringLiteral("positive"), QStringLiteral("negative")},
+                                 QStringLiteral("auto"),
+                                 tr("Sign of the medio-lateral angular velocity during swing; auto: the sign of "
+                                    "the longest sustained rotation."));
+}
+
+int swingSignOf(const QString& choice) {
+    return choice == QLatin1String("positive") ? 1 : choice == QLatin1String("negative") ? -1 : 0;
 }
 
 QString axisText(const Eigen::Vector3d& axis) {

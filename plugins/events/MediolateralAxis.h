@@ -19,6 +19,8 @@
 // tilted u loses the first swing of the right foot (a turning step onto the stairs). Foot sensors are
 // usually mounted along the foot, so `ml_axis = auto` takes the sensor axis nearest to u when it lies
 // within kSnapAngle of it, and u itself otherwise (an oblique mount).
+#include "core/processing/ParameterSpec.h"
+
 #include <Eigen/Core>
 #include <QString>
 
@@ -45,6 +47,13 @@ MediolateralAxis principalRotationAxis(const double* gyr, std::size_t rows, std:
 // then the nearest sensor axis if within kSnapAngle). Anything else: nullopt.
 std::optional<MediolateralAxis> mediolateralAxis(const QString& choice, const double* gyr, std::size_t rows,
                                                  std::size_t stride);
+
+// The two declarations gait-events and gait-parameters share: `ml_axis` (auto | x | y | z, default
+// auto) and `swing_sign` (auto | positive | negative, default auto: GaitEventDetector::swingSign).
+ParameterSpec mlAxisParameter();
+ParameterSpec swingSignParameter();
+// swing_sign's value: +1, −1, or 0 for auto.
+int swingSignOf(const QString& choice);
 
 // For attributes and messages: "[0.021, 0.998, -0.055]".
 QString axisText(const Eigen::Vector3d& axis);
