@@ -30,12 +30,15 @@ QString mismatch(const Project& project, const Provenance& stored, const Process
         if (stored.inputs[i].hash != inputs[i].hash)
             return QStringLiteral("input '%1' changed since").arg(inputs[i].name);
     }
-    // Streams the run read besides its declared inputs (RunContext::recordRead): compared as they are now.
+    // Streams and tables the run read besides its declared inputs (RunContext::recordRead): compared as
+    // they are now.
     for (std::size_t i = inputs.size(); i < stored.inputs.size(); ++i) {
-        const Stream* s = project.stream(stored.inputs[i].name);
-        if (!s) return QStringLiteral("made from '%1', which is gone").arg(stored.inputs[i].name);
-        if (s->info().contentHash != stored.inputs[i].hash)
-            return QStringLiteral("input '%1' changed since").arg(stored.inputs[i].name);
+        const QString& name = stored.inputs[i].name;
+        const Stream* s = project.stream(name);
+        const Table* t = s ? nullptr : project.table(name);
+        if (!s && !t) return QStringLiteral("made from '%1', which is gone").arg(name);
+        if ((s ? s->info().contentHash : tableHash(*t)) != stored.inputs[i].hash)
+            return QStringLiteral("input '%1' changed since").arg(name);
     }
     return {};
 }

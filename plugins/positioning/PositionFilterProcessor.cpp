@@ -1,5 +1,6 @@
 #include "plugins/positioning/PositionFilterProcessor.h"
 
+#include "core/processing/ProcessorRunner.h"
 #include "core/math/Angles.h"
 #include "core/processing/Translator.h"
 #include "plugins/lps/BeaconTable.h"
@@ -257,6 +258,9 @@ Expected<std::optional<NoiseProfile>> PositionFilterProcessor::noiseProfile(cons
         return makeError(QStringLiteral("parameter 'noise': no table '%1' in the project (estimate a profile with "
                                         "the noise-profile processor and give its output path)")
                              .arg(path));
+    // The profile table is an input of the run, though not a declared one: in the provenance, so that
+    // athlos batch re-runs the filter when the profile is estimated again.
+    context.recordRead(path, tableHash(*table));
     auto profile = noiseProfileFromTable(*table, path);
     if (!profile) return makeError(QStringLiteral("parameter 'noise': %1").arg(profile.message()));
     if (profile->model != model)

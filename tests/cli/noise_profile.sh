@@ -32,6 +32,20 @@ awk -v p="$RP" -v a="$RA" 'BEGIN { exit !(p != "nan" && p <= 1.15 * a) }' || fai
 expect_ok "info" "$ATHLOS" info "$P" --json
 grep -q '"noise_profile": "train1/noise"' "$WORK/out" || fail "the filtered stream does not name its profile"
 
+# The profile is an input of the filter run: athlos batch skips the step while the profile is unchanged and
+# runs it again once the profile is estimated anew (from other training runs).
+cat > "$WORK/pipe.json" <<'JSON'
+{"name": "profiled", "steps": [{"processor": "position-filter", "input": "new/run", "output": "new/batch",
+  "params": {"noise": "profile:train1/noise", "output_rate": 10}}]}
+JSON
+expect_ok "batch-task runs" "$ATHLOS" batch-task "$WORK/pipe.json" "$P"
+grep -q 'wrote new/batch' "$WORK/out" || fail "batch-task did not run the filter: $(cat "$WORK/out")"
+expect_ok "batch-task skips" "$ATHLOS" batch-task "$WORK/pipe.json" "$P"
+grep -q 'skipped (done)' "$WORK/out" || fail "unchanged profile, yet not skipped: $(cat "$WORK/out")"
+expect_ok "profile again" "$ATHLOS" run "$P" noise-profile --input train1/run --output train1/noise
+expect_ok "batch-task after a new profile" "$ATHLOS" batch-task "$WORK/pipe.json" "$P"
+grep -q 'wrote new/batch' "$WORK/out" || fail "the profile changed, yet the filter was skipped: $(cat "$WORK/out")"
+
 # Refusals leave the project byte-identical.
 before=$(sha256sum "$P" | cut -d' ' -f1)
 expect_fail "missing profile" "train1/none" "$ATHLOS" run "$P" position-filter --input new/run --output new/x \
