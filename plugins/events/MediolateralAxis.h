@@ -35,8 +35,8 @@ struct MediolateralAxis {
     double dominance = 0.0;                                // λ₁ / (λ₁ + λ₂ + λ₃) of eq. 1; 0 when given
 };
 
-// auto: a sensor axis within this angle of u is taken instead of u (20°: above the 11° of gaitmap's
-// stairs, below the angle at which the sensor axis keeps less than cos 20° = 94 % of the swing).
+// auto: a sensor axis within this angle of u is taken instead of u. 20° is above the 11° of gaitmap's
+// stairs, and a sensor axis 20° off the true one still sees cos 20° = 94 % of the swing.
 inline constexpr double kSnapAngle = 20.0 * 3.14159265358979323846 / 180.0;  // rad
 
 // Eq. 1 over `rows` samples (gyr: x of the first sample, `stride` doubles between samples). Samples
