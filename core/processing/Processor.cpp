@@ -53,6 +53,8 @@ Expected<InputSamples> RunContext::samples(int index) const {
     return InputSamples{s, std::move(data).value(), inputPath(index), inputRole(index)};
 }
 
+// Tables may be recorded as well as streams (position-filter's noise profile, with tableHash):
+// checkPipelineDone looks a recorded path up as a stream, then as a table.
 void RunContext::recordRead(const QString& path, const QByteArray& hash) const {
     for (const QString& declared : inputPaths_)
         if (declared == path) return;
