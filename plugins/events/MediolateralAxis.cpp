@@ -1,8 +1,8 @@
 #include "plugins/events/MediolateralAxis.h"
 
+#include "core/math/PrincipalAxis.h"
 #include "core/processing/Translator.h"
 
-#include <Eigen/Eigenvalues>
 #include <cmath>
 
 namespace athlos::events {
@@ -18,15 +18,14 @@ MediolateralAxis principalRotationAxis(const double* gyr, std::size_t rows, std:
         if (w.allFinite()) s.noalias() += w * w.transpose();
     }
     MediolateralAxis out;
-    const double trace = s.trace();
-    if (!(trace > 0.0)) return out;
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(s);  // eigenvalues in increasing order
-    Eigen::Vector3d u = eig.eigenvectors().col(2);
+    const math::PrincipalAxis p = math::principalAxisOfMoment(s, Eigen::Vector3d::UnitY());
+    if (p.share == 0.0) return out;
+    Eigen::Vector3d u = p.axis;
     Eigen::Index largest = 0;
     u.cwiseAbs().maxCoeff(&largest);
     if (u[largest] < 0.0) u = -u;
     out.axis = out.principal = u.normalized();
-    out.dominance = eig.eigenvalues()[2] / trace;
+    out.dominance = p.share;
     return out;
 }
 

@@ -1,9 +1,9 @@
 #include "plugins/inertial/FunctionalCalibration.h"
+#include "core/math/PrincipalAxis.h"
 
 #include "core/math/Angles.h"
 #include "plugins/inertial/SegmentCalibration.h"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -75,10 +75,9 @@ AxisStats axisStats(const std::vector<Vec3>& gyr, Range r, const Vec3& bias) {
         const Vec3 w = gyr[k] - bias;
         moment += w * w.transpose();
     }
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> pca(moment);
-    const Eigen::Vector3d v = pca.eigenvalues();
-    s.axis = pca.eigenvectors().col(2);
-    s.share = v.sum() > 0.0 ? v[2] / v.sum() : 0.0;
+    const math::PrincipalAxis p = math::principalAxisOfMoment(moment);
+    s.axis = p.axis;
+    s.share = p.share;
     s.rms = std::sqrt(std::max(0.0, moment.trace()) / double(r.size()));
     return s;
 }

@@ -1,8 +1,8 @@
 #include "plugins/inertial/SegmentCalibration.h"
+#include "core/math/PrincipalAxis.h"
 
 #include "core/math/Angles.h"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -31,16 +31,15 @@ Expected<SegmentCalibration::Result> SegmentCalibration::calibrate(std::span<con
     // (not the covariance) keeps a one-way turn on its axis too.
     Eigen::Matrix3d moment = Eigen::Matrix3d::Zero();
     for (const Vec3& w : movementGyr) moment += w * w.transpose();
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> pca(moment);
-    const Eigen::Vector3d values = pca.eigenvalues();  // ascending
-    if (!(values[2] > 0.0)) return makeError(QStringLiteral("the segment does not rotate in the movement window"));
-    r.axisShare = values[2] / values.sum();
+    const math::PrincipalAxis pca = math::principalAxisOfMoment(moment);
+    if (pca.share == 0.0) return makeError(QStringLiteral("the segment does not rotate in the movement window"));
+    r.axisShare = pca.share;
     if (r.axisShare < 0.5)
         return makeError(
             QStringLiteral("the movement has no dominant rotation axis (%1 % of the angular velocity on the main "
                            "axis); repeat slow sagittal movements (squats)")
                 .arg(100.0 * r.axisShare, 0, 'f', 0));
-    Vec3 axis = pca.eigenvectors().col(2);
+    Vec3 axis = pca.axis;
 
     // The direction of the first clear turn fixes the sign (see the header).
     double turned = 0.0;
