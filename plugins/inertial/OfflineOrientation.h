@@ -8,14 +8,17 @@
 //     estimates are fused per sample with inverse-variance weights from each pass's Kalman covariance
 //     (a two-filter smoother, Fraser & Potter 1969), so the bias at the start of the recording is
 //     known as well as at its end;
-//  2. orientation: forward and backward passes with the smoothed bias subtracted and bias estimation
-//     off. Their inclinations (gravity direction in the sensor frame) are averaged — the
-//     forward/backward Butterworth in the almost inertial frame then acts as a zero-phase filter —
-//     and the correction is applied about a horizontal axis, so heading is untouched (cf. eq. 9);
-//  3. 9D: the heading offsets of both passes relative to the fused 6D orientation are averaged on the
-//     circle with equal weights; the magnetic disturbance detection of both passes uses the reference
-//     field of the whole recording. (Weighting a pass down while it rides out a disturbance was
-//     tried and made BROAD worse: 1.67°–1.95° instead of 1.59°, see docs/validation/inertial.md.)
+//  2. orientation passes: the online filter runs forwards and backwards again with the smoothed
+//     bias subtracted and bias estimation off; each pass keeps its own magnetic reference field and
+//     disturbance detector (a whole-recording reference was tried and made BROAD worse);
+//  3. inclination: the bias-corrected gyroscope is integrated (the almost inertial frame I, eq. 4),
+//     the accelerometer expressed in I is low-pass filtered forwards and then backwards (the
+//     Butterworth of eqs. 5–8 twice: zero phase), and each sample is turned about a horizontal axis
+//     so that the filtered vector points up (eq. 9); heading is untouched;
+//  4. 9D: the heading offsets of both passes relative to that 6D orientation are averaged on the
+//     circle with equal weights. (Weighting a pass down while it rides out a disturbance made BROAD
+//     worse, 1.67°–1.95° instead of 1.59°; so did filtering the magnetometer's heading disagreement
+//     forwards and backwards, 1.77°: docs/validation/inertial.md.)
 // Same outputs as the online filter: sensor→ENU quaternion, bias, rest and disturbance flags.
 #include "plugins/inertial/OrientationFilter.h"
 
