@@ -75,20 +75,9 @@ Expected<std::vector<ProcessorOutput>> SkimoPhasesProcessor::run(const RunContex
                                    .arg(p.zeroSpeed)
                                    .arg(p.minCycle)
                                    .arg(p.maxCycle));
-    std::vector<double> index, ts, te, tend, dur, speed, length, elev, slope;
     Annotations annotations;
     double gain = 0.0;
-    for (std::size_t k = 0; k < r.cycles.size(); ++k) {
-        const SkiCycle& cy = r.cycles[k];
-        index.push_back(double(k + 1));
-        ts.push_back(cy.thrustStart);
-        te.push_back(cy.thrustEnd);
-        tend.push_back(cy.end);
-        dur.push_back(cy.duration);
-        speed.push_back(cy.speed);
-        length.push_back(cy.length);
-        elev.push_back(cy.elevation);
-        slope.push_back(cy.slope);
+    for (const SkiCycle& cy : r.cycles) {
         gain += std::max(0.0, cy.elevation);
         Annotation a;
         a.label = QStringLiteral("skimo cycle");
@@ -104,15 +93,7 @@ Expected<std::vector<ProcessorOutput>> SkimoPhasesProcessor::run(const RunContex
     table.attributes = QJsonObject{{QStringLiteral("cycles"), int(r.cycles.size())},
                                    {QStringLiteral("elevation_gain"), gain},
                                    {QStringLiteral("elevation_gain_unit"), QStringLiteral("m")}};
-    table.columns = {numberColumn(QStringLiteral("cycle"), QStringLiteral("1"), index),
-                     numberColumn(QStringLiteral("still_start"), QStringLiteral("s"), ts),
-                     numberColumn(QStringLiteral("still_end"), QStringLiteral("s"), te),
-                     numberColumn(QStringLiteral("end"), QStringLiteral("s"), tend),
-                     numberColumn(QStringLiteral("duration"), QStringLiteral("s"), dur),
-                     numberColumn(QStringLiteral("speed"), QStringLiteral("m/s"), speed),
-                     numberColumn(QStringLiteral("length"), QStringLiteral("m"), length),
-                     numberColumn(QStringLiteral("elevation"), QStringLiteral("m"), elev),
-                     numberColumn(QStringLiteral("slope"), QStringLiteral("rad"), slope)};
+    table.columns = skiCycleColumns(r.cycles, QStringLiteral("still"), false);
     c.report(1.0);
     std::vector<ProcessorOutput> out;
     out.push_back({QString(), std::move(table)});

@@ -28,6 +28,31 @@ TableColumn numberColumn(const QString& name, const QString& unit, std::vector<d
     return TableColumn{name, unit, false, std::move(values), {}};
 }
 
+std::vector<TableColumn> skiCycleColumns(const std::vector<SkiCycle>& cycles, const QString& phase, bool glide) {
+    const auto column = [&](const QString& name, const QString& unit, double (*value)(const SkiCycle&)) {
+        std::vector<double> v;
+        v.reserve(cycles.size());
+        for (const SkiCycle& c : cycles) v.push_back(value(c));
+        return numberColumn(name, unit, std::move(v));
+    };
+    std::vector<double> index(cycles.size());
+    for (std::size_t k = 0; k < index.size(); ++k) index[k] = double(k + 1);
+    const QString s = QStringLiteral("s");
+    std::vector<TableColumn> out{
+        numberColumn(QStringLiteral("cycle"), QStringLiteral("1"), std::move(index)),
+        column(phase + QStringLiteral("_start"), s, [](const SkiCycle& c) { return c.thrustStart; }),
+        column(phase + QStringLiteral("_end"), s, [](const SkiCycle& c) { return c.thrustEnd; })};
+    if (glide) out.push_back(column(QStringLiteral("glide_start"), s, [](const SkiCycle& c) { return c.glideStart; }));
+    out.push_back(column(QStringLiteral("end"), s, [](const SkiCycle& c) { return c.end; }));
+    out.push_back(column(QStringLiteral("duration"), s, [](const SkiCycle& c) { return c.duration; }));
+    out.push_back(column(QStringLiteral("speed"), QStringLiteral("m/s"), [](const SkiCycle& c) { return c.speed; }));
+    out.push_back(column(QStringLiteral("length"), QStringLiteral("m"), [](const SkiCycle& c) { return c.length; }));
+    out.push_back(
+        column(QStringLiteral("elevation"), QStringLiteral("m"), [](const SkiCycle& c) { return c.elevation; }));
+    out.push_back(column(QStringLiteral("slope"), QStringLiteral("rad"), [](const SkiCycle& c) { return c.slope; }));
+    return out;
+}
+
 ParameterSpecs skiCycleParameters(bool xc) {
     const SkiCycleParams d;
     ParameterSpecs specs{
@@ -158,20 +183,9 @@ Expected<std::vector<ProcessorOutput>> XcSkiingCyclesProcessor::run(const RunCon
                                        .arg(pp.plantThreshold));
     }
 
-    std::vector<double> index, ts, te, tg, tend, dur, speed, length, elev, slope, plant, lift;
+    std::vector<double> plant, lift;
     Annotations annotations;
-    for (std::size_t k = 0; k < r.cycles.size(); ++k) {
-        const SkiCycle& cy = r.cycles[k];
-        index.push_back(double(k + 1));
-        ts.push_back(cy.thrustStart);
-        te.push_back(cy.thrustEnd);
-        tg.push_back(cy.glideStart);
-        tend.push_back(cy.end);
-        dur.push_back(cy.duration);
-        speed.push_back(cy.speed);
-        length.push_back(cy.length);
-        elev.push_back(cy.elevation);
-        slope.push_back(cy.slope);
+    for (const SkiCycle& cy : r.cycles) {
         // The pole plant nearest the thrust start, within half a cycle.
         double bestPlant = std::nan(""), bestLift = std::nan("");
         for (const PoleEvents& e : pole)
@@ -191,20 +205,11 @@ Expected<std::vector<ProcessorOutput>> XcSkiingCyclesProcessor::run(const RunCon
     Table table;
     table.kind = QStringLiteral("ski-cycles");
     double total = 0.0;
-    for (double l : length) total += l;
+    for (const SkiCycle& cy : r.cycles) total += cy.length;
     table.attributes = QJsonObject{{QStringLiteral("cycles"), int(r.cycles.size())},
                                    {QStringLiteral("distance"), total},
                                    {QStringLiteral("pole"), hasPole}};
-    table.columns = {numberColumn(QStringLiteral("cycle"), QStringLiteral("1"), index),
-                     numberColumn(QStringLiteral("thrust_start"), QStringLiteral("s"), ts),
-                     numberColumn(QStringLiteral("thrust_end"), QStringLiteral("s"), te),
-                     numberColumn(QStringLiteral("glide_start"), QStringLiteral("s"), tg),
-                     numberColumn(QStringLiteral("end"), QStringLiteral("s"), tend),
-                     numberColumn(QStringLiteral("duration"), QStringLiteral("s"), dur),
-                     numberColumn(QStringLiteral("speed"), QStringLiteral("m/s"), speed),
-                     numberColumn(QStringLiteral("length"), QStringLiteral("m"), length),
-                     numberColumn(QStringLiteral("elevation"), QStringLiteral("m"), elev),
-                     numberColumn(QStringLiteral("slope"), QStringLiteral("rad"), slope)};
+    table.columns = skiCycleColumns(r.cycles, QStringLiteral("thrust"), true);
     if (hasPole) {
         table.columns.push_back(numberColumn(QStringLiteral("pole_plant"), QStringLiteral("s"), plant));
         table.columns.push_back(numberColumn(QStringLiteral("pole_lift"), QStringLiteral("s"), lift));

@@ -5,7 +5,11 @@
 // predicted annotations ("xc cycle", "thrust", "glide start", "pole push").
 #include "core/processing/Processor.h"
 
+#include <vector>
+
 namespace athlos::events {
+
+struct SkiCycle;
 
 class XcSkiingCyclesProcessor : public Processor {
 public:
@@ -23,5 +27,9 @@ public:
 ParameterSpecs skiCycleParameters(bool crossCountry);
 // A per-cycle table column.
 TableColumn numberColumn(const QString& name, const QString& unit, std::vector<double> values);
+// The columns both ski-cycle tables share, one row per cycle: cycle (1-based), <phase>_start and
+// <phase>_end (the thrust, or the motionless phase of skimo), glide_start if `glide`, end, duration,
+// speed, length, elevation and slope.
+std::vector<TableColumn> skiCycleColumns(const std::vector<SkiCycle>& cycles, const QString& phase, bool glide);
 
 }  // namespace athlos::events

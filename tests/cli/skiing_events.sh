@@ -30,6 +30,8 @@ grep -q 'xc-skiing-cycles' "$WORK/xc-ann.csv" || fail "annotation source is not 
 expect_ok "simulate skimo" "$ATHLOS" run "$P" simulate-skiing --output up/ski --param scenario=skimo --param count=20
 expect_ok "skimo phases" "$ATHLOS" run "$P" skimo-phases --input up/ski --output up/cycles
 expect_ok "export skimo" "$ATHLOS" export "$P" up/cycles --to "$WORK/up.csv"
+head -1 "$WORK/up.csv" | grep -q '^cycle \[1\],still_start \[s\],still_end \[s\],end \[s\],duration \[s\],speed \[m/s\],length \[m\],elevation \[m\],slope \[rad\]$' \
+  || fail "skimo header: $(head -1 "$WORK/up.csv")"
 expect_ok "export skimo truth" "$ATHLOS" export "$P" up/ski-truth --to "$WORK/up-truth.csv"
 gain=$(awk -F, 'FNR > 1 && $8 > 0 { g += $8 } END { printf "%.3f", g }' "$WORK/up.csv")
 true_gain=$(awk -F, 'FNR > 2 { g += $8 } END { printf "%.3f", g }' "$WORK/up-truth.csv")
