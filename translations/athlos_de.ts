@@ -503,10 +503,6 @@
         <translation>Gleitender Mittelwert der Gyroskopnorm, dessen Minimum der Mittelstand ist (gaitmap NormZuptDetector: 0,15 s).</translation>
     </message>
     <message>
-        <source>Largest averaged gyroscope norm accepted as a zero-velocity mid-stance. gaitmap&apos;s static threshold is 15 deg/s (0.26 rad/s), but the quietest 0.15 s of a stance reaches only 0.2–1.3 rad/s in gaitmap&apos;s own walk (and more in running), so the default is 2 rad/s; it rejects a mid-stance cut off by the start or end of the data.</source>
-        <translation>Größte gemittelte Gyroskopnorm, die als Mittelstand mit Nullgeschwindigkeit akzeptiert wird. Die statische Schwelle von gaitmap ist 15 deg/s (0,26 rad/s), doch die ruhigsten 0,15 s eines Stands erreichen in gaitmaps eigenem Gang nur 0,2–1,3 rad/s (und beim Laufen mehr), daher ist die Vorgabe 2 rad/s; sie verwirft einen Mittelstand, der vom Anfang oder Ende der Daten abgeschnitten ist.</translation>
-    </message>
-    <message>
         <source>Standing: gyroscope norm averaged over rest_window below this (gaitmap NormZuptDetector: 15 deg/s); pauses end strides, and the mean rate while standing is the gyroscope bias, removed before integration.</source>
         <translation>Stehen: über rest_window gemittelte Gyroskopnorm unter diesem Wert (gaitmap NormZuptDetector: 15 deg/s); Pausen beenden Doppelschritte, und die mittlere Drehrate im Stehen ist der Gyroskop-Bias, der vor der Integration entfernt wird.</translation>
     </message>
@@ -543,10 +539,6 @@
         <translation>instant: je Schritt Nullgeschwindigkeit an den beiden Mittelstand-Zeitpunkten, Drift linear entfernt. rts: nullgeschwindigkeitsgestütztes Error-State-Kalman-Filter mit Rauch-Tung-Striebel-Glättung über die ganze Aufnahme, Nullgeschwindigkeit an jedem Sample der Standphase (Skog et al. 2010; gaitmap RtsKalman).</translation>
     </message>
     <message>
-        <source>rts: moving average of the gyroscope norm of the stance detector (gaitmap NormZuptDetector: 0.15 s). The samples within half of it around each mid-stance are always stance.</source>
-        <translation>rts: gleitender Mittelwert der Gyroskop-Norm für die Erkennung der Standphase (gaitmap NormZuptDetector: 0,15 s). Die Samples innerhalb der halben Fensterlänge um jeden Mittelstand gelten immer als Standphase.</translation>
-    </message>
-    <message>
         <source>rts: a sample is stance (zero velocity) when the averaged gyroscope norm is at most this (gaitmap NormZuptDetector: 15 deg/s).</source>
         <translation>rts: ein Sample gehört zur Standphase (Nullgeschwindigkeit), wenn die gemittelte Gyroskop-Norm höchstens diesen Wert hat (gaitmap NormZuptDetector: 15 °/s).</translation>
     </message>
@@ -573,6 +565,14 @@
     <message>
         <source>Foot (sensor) positions x, y, z (m): z up, heading 0 at the first mid-stance.</source>
         <translation>Fuß-(Sensor-)Positionen x, y, z (m): z nach oben, Kurs 0 in der ersten Standphasenmitte.</translation>
+    </message>
+    <message>
+        <source>Largest averaged gyroscope norm accepted as the mid-stance before the first swing or after the last one, where the data may start or end in motion. Between two swings the quietest instant is always the mid-stance (a running foot still rolls at 2–4 rad/s there). gaitmap&apos;s static threshold is 15 deg/s (0.26 rad/s), but the quietest 0.15 s of a stance reaches 0.2–1.3 rad/s in gaitmap&apos;s own walk, so the default is 2 rad/s.</source>
+        <translation>Größte gemittelte Gyroskopnorm, die als Mittelstand vor dem ersten Schwung oder nach dem letzten akzeptiert wird, wo die Daten in Bewegung beginnen oder enden können. Zwischen zwei Schwüngen ist der ruhigste Zeitpunkt immer der Mittelstand (ein laufender Fuß rollt dort noch mit 2–4 rad/s). Die statische Schwelle von gaitmap ist 15 deg/s (0,26 rad/s), doch die ruhigsten 0,15 s eines Stands erreichen in gaitmaps eigenem Gang 0,2–1,3 rad/s, daher ist die Vorgabe 2 rad/s.</translation>
+    </message>
+    <message>
+        <source>rts: moving average of the gyroscope norm of the stance detector (gaitmap NormZuptDetector: 0.15 s). The samples within half of it around each mid-stance are stance while their average is at most zupt_threshold above the mid-stance&apos;s.</source>
+        <translation>rts: gleitender Mittelwert der Gyroskop-Norm für die Erkennung der Standphase (gaitmap NormZuptDetector: 0,15 s). Die Samples innerhalb der halben Fensterlänge um jeden Mittelstand gelten als Standphase, solange ihr Mittelwert höchstens zupt_threshold über dem des Mittelstands liegt.</translation>
     </message>
 </context>
 <context>

@@ -140,10 +140,11 @@ ParameterSpecs GaitParametersProcessor::parameters() const {
                                  "(gaitmap NormZuptDetector: 0.15 s).")),
         ParameterSpec::number(
             QStringLiteral("rest_threshold"), d.restThreshold, 0.0, kInf, QStringLiteral("rad/s"),
-            tr("Largest averaged gyroscope norm accepted as a zero-velocity mid-stance. gaitmap's static "
-               "threshold is 15 deg/s (0.26 rad/s), but the quietest 0.15 s of a stance reaches only "
-               "0.2–1.3 rad/s in gaitmap's own walk (and more in running), so the default is 2 rad/s; it "
-               "rejects a mid-stance cut off by the start or end of the data.")),
+            tr("Largest averaged gyroscope norm accepted as the mid-stance before the first swing or after "
+               "the last one, where the data may start or end in motion. Between two swings the quietest "
+               "instant is always the mid-stance (a running foot still rolls at 2–4 rad/s there). gaitmap's "
+               "static threshold is 15 deg/s (0.26 rad/s), but the quietest 0.15 s of a stance reaches "
+               "0.2–1.3 rad/s in gaitmap's own walk, so the default is 2 rad/s.")),
         ParameterSpec::number(QStringLiteral("static_threshold"), d.staticThreshold, 0.0, kInf, QStringLiteral("rad/s"),
                               tr("Standing: gyroscope norm averaged over rest_window below this (gaitmap "
                                  "NormZuptDetector: 15 deg/s); pauses end strides, and the mean rate while "
@@ -167,7 +168,8 @@ ParameterSpecs GaitParametersProcessor::parameters() const {
         ParameterSpec::number(QStringLiteral("zupt_window"), dz.stanceWindow, 0.0, kInf, QStringLiteral("s"),
                               tr("rts: moving average of the gyroscope norm of the stance detector (gaitmap "
                                  "NormZuptDetector: 0.15 s). The samples within half of it around each "
-                                 "mid-stance are always stance.")),
+                                 "mid-stance are stance while their average is at most zupt_threshold above "
+                                 "the mid-stance's.")),
         ParameterSpec::number(QStringLiteral("zupt_threshold"), dz.stanceThreshold, 0.0, kInf, QStringLiteral("rad/s"),
                               tr("rts: a sample is stance (zero velocity) when the averaged gyroscope norm is at "
                                  "most this (gaitmap NormZuptDetector: 15 deg/s).")),
@@ -223,14 +225,15 @@ Expected<std::vector<ProcessorOutput>> GaitParametersProcessor::run(const RunCon
     const StrideSegmentation segmentation = segmentStrides(plan->segmentation, d.t.data(), gyr, d.rows(), 3);
     // Nothing found is refused with the likely causes, not stored as an empty table.
     if (segmentation.strides.empty()) {
-        const QString why =
-            segmentation.swings == 0
-                ? QStringLiteral("no swing above swing_threshold = %1 rad/s about ml_axis = %2 %3")
-                      .arg(plan->segmentation.swingThreshold)
-                      .arg(plan->mlAxis, axisText(ml->axis))
-                : QStringLiteral("%1 swings, none with a mid-stance below rest_threshold = %2 rad/s on both sides")
-                      .arg(segmentation.swings)
-                      .arg(plan->segmentation.restThreshold);
+        const QString why = segmentation.swings == 0
+                                ? QStringLiteral("no swing above swing_threshold = %1 rad/s about ml_axis = %2 %3")
+                                      .arg(plan->segmentation.swingThreshold)
+                                      .arg(plan->mlAxis, axisText(ml->axis))
+                                : QStringLiteral(
+                                      "%1 swing(s), but the mid-stance before the first or after the last is above "
+                                      "rest_threshold = %2 rad/s or cut off by the start or end of the data")
+                                      .arg(segmentation.swings)
+                                      .arg(plan->segmentation.restThreshold);
         return context.inputError(0, QStringLiteral("no stride found in %1 s of data (%2): is it a foot-mounted "
                                                     "IMU during walking or running?")
                                          .arg(d.rows() ? d.t.back() - d.t.front() : 0.0, 0, 'g', 4)

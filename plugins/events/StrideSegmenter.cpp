@@ -72,9 +72,15 @@ StrideSegmentation segmentStrides(const StrideSegmentationParams& p, const doubl
     out.swings = peaks.size();
     if (peaks.empty()) return out;
 
-    // A mid-stance must be a quiet stretch inside the data, not a minimum cut off by its edge.
-    const auto accept = [&](std::size_t k) {
-        return MidStance{k, k != std::size_t(-1) && k > 0 && k + 1 < rows && rest[k] <= p.restThreshold};
+    // Between two swings the foot stood on the ground, so the quietest instant there is the
+    // mid-stance however much the foot still rolls (running: 2–4 rad/s over restWindow). Before the
+    // first swing and after the last one the data may start or end in motion: a minimum there must be
+    // quiet (at most restThreshold), not one cut off by the edge.
+    const auto accept = [&](std::size_t k) { return MidStance{k, k != std::size_t(-1) && k > 0 && k + 1 < rows}; };
+    const auto acceptAtEdge = [&](std::size_t k) {
+        MidStance m = accept(k);
+        m.valid = m.valid && rest[k] <= p.restThreshold;
+        return m;
     };
     const auto firstAtOrAfter = [&](double time) { return std::size_t(std::lower_bound(t, t + rows, time) - t); };
     const auto lastAtOrBefore = [&](double time) {
@@ -86,10 +92,10 @@ StrideSegmentation segmentStrides(const StrideSegmentationParams& p, const doubl
     {
         const std::size_t p0 = peaks.front();
         const std::size_t from = firstAtOrAfter(t[p0] - p.stanceSearch);
-        if (t[p0] - p.stanceSearch >= t[0]) before.front() = accept(argMin(rest, from, p0 - 1));
+        if (t[p0] - p.stanceSearch >= t[0]) before.front() = acceptAtEdge(argMin(rest, from, p0 - 1));
         const std::size_t pn = peaks.back();
         const std::size_t to = lastAtOrBefore(t[pn] + p.stanceSearch);
-        if (t[pn] + p.stanceSearch <= t[rows - 1]) after.back() = accept(argMin(rest, pn + 1, to));
+        if (t[pn] + p.stanceSearch <= t[rows - 1]) after.back() = acceptAtEdge(argMin(rest, pn + 1, to));
     }
     // Initial contact after / toe-off before a swing peak (the event definitions of GaitEventDetector).
     const auto icAfter = [&](std::size_t peak, std::size_t limit) {

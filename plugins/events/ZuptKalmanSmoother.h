@@ -107,8 +107,9 @@ private:
 
 // Stance samples for the zero-velocity updates: the gyroscope norm averaged over `window` (s) at
 // most `threshold` (rad/s) — the gyroscope-energy detector of Skog et al. 2010 (as gaitmap's
-// NormZuptDetector) — or within window/2 of one of the given mid-stance samples, so that a foot that
-// is never still below the threshold still gets the zero-velocity instants of the segmentation.
+// NormZuptDetector) — or within window/2 of one of the given mid-stance samples m and no more than
+// `threshold` above the average at m, so that a foot that is never still below the threshold still
+// gets the zero-velocity instants of the segmentation, but not the fast roll around a short stance.
 std::vector<bool> detectStance(const double* t, const double* gyr, std::size_t rows, std::size_t stride, double window,
                                double threshold, const std::vector<std::size_t>& midStances);
 

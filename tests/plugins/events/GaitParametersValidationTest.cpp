@@ -93,8 +93,9 @@ std::vector<Bout> straightBouts(const Table& t) {
 }
 
 // Both feet walk the same path: per straight bout (paired by time overlap) the mean stride lengths
-// of the two feet should agree. Returns the mean relative difference and the number of bouts.
-std::pair<double, int> leftRightDifference(const Table& left, const Table& right) {
+// of the two feet should agree. Returns the mean relative difference and the number of bouts, and
+// prints each bout under `label`.
+std::pair<double, int> leftRightDifference(const Table& left, const Table& right, const char* label) {
     const auto l = straightBouts(left), r = straightBouts(right);
     double sum = 0.0;
     int n = 0;
@@ -109,6 +110,9 @@ std::pair<double, int> leftRightDifference(const Table& left, const Table& right
         if (!best) continue;
         sum += std::abs(best->meanLength / a.meanLength - 1.0);
         ++n;
+        std::printf("[ figures  ] %s bout %.1f-%.1f s: strides L/R %zu / %zu, mean L / R %.3f / %.3f m (%+.1f %%)\n",
+                    label, a.from, a.to, a.strides, best->strides, a.meanLength, best->meanLength,
+                    100.0 * (best->meanLength / a.meanLength - 1.0));
     }
     return {n ? sum / n : 1.0, n};
 }
@@ -206,9 +210,9 @@ TEST_F(GaitParametersValidation, MethodRtsMatchesEveryStrideAndTheFeetAgree) {
     EXPECT_EQ(matched, 14);
     EXPECT_GT(maxDifference, 0.005);  // the parameter does switch the method
     const auto [instantLr, bouts] =
-        leftRightDifference(*tables[QStringLiteral("instantleft")], *tables[QStringLiteral("instantright")]);
+        leftRightDifference(*tables[QStringLiteral("instantleft")], *tables[QStringLiteral("instantright")], "instant");
     const auto [rtsLr, rtsBouts] =
-        leftRightDifference(*tables[QStringLiteral("rtsleft")], *tables[QStringLiteral("rtsright")]);
+        leftRightDifference(*tables[QStringLiteral("rtsleft")], *tables[QStringLiteral("rtsright")], "rts");
     EXPECT_EQ(bouts, 4);
     EXPECT_EQ(rtsBouts, 4);
     // Left and right mean stride per straight bout agree within 2 % (one stride of 1.25 m in a
@@ -324,14 +328,39 @@ TEST_F(GaitParametersValidation, RefusesARecordingWithoutStrides) {
     EXPECT_TRUE(r.message().contains(QStringLiteral("no swing above swing_threshold = 100")))
         << qPrintable(r.message());
     EXPECT_EQ(project_->table(QStringLiteral("walk/x")), nullptr);
-    // Swings, but no mid-stance accepted as zero velocity.
+    // One swing (min_stride longer than the walk), and the mid-stances on its sides are held to
+    // rest_threshold = 0: the swing has no stride.
     r = runProcessor(*project_, processor_,
                      RunRequest{processor_.id(),
                                 {QStringLiteral("walk/left-foot")},
                                 QStringLiteral("walk/x"),
-                                {{QStringLiteral("rest_threshold"), 0.0}}});
+                                {{QStringLiteral("rest_threshold"), 0.0},
+                                 {QStringLiteral("min_stride"), 100.0},
+                                 {QStringLiteral("max_stride"), 200.0}}});
     ASSERT_FALSE(r.ok());
-    EXPECT_TRUE(r.message().contains(QStringLiteral("none with a mid-stance below rest_threshold = 0")))
+    EXPECT_TRUE(
+        r.message().contains(QStringLiteral("1 swing(s), but the mid-stance before the first or after the "
+                                            "last is above rest_threshold = 0")))
         << qPrintable(r.message());
     EXPECT_EQ(project_->table(QStringLiteral("walk/x")), nullptr);
+}
+
+TEST_F(GaitParametersValidation, RestThresholdOnlyHoldsTheFirstAndLastMidStance) {
+    // Between two swings the quietest instant is the mid-stance whatever its rate (a running foot
+    // rolls through stance); rest_threshold guards only the ends of the data. With it at 0 the walk
+    // keeps every stride but the first and the last.
+    import(QStringLiteral("imu_sample_ic_stride.csv"), QStringLiteral("walk"));
+    const Table* all = run(QStringLiteral("walk/left-foot"), QStringLiteral("walk/all"));
+    const Table* inner =
+        run(QStringLiteral("walk/left-foot"), QStringLiteral("walk/inner"), {{QStringLiteral("rest_threshold"), 0.0}});
+    ASSERT_TRUE(all && inner);
+    const auto start = column(*all, "start"), length = column(*all, "stride_length");
+    const auto innerStart = column(*inner, "start"), innerLength = column(*inner, "stride_length");
+    ASSERT_GE(start.size(), 3u);
+    ASSERT_EQ(innerStart.size() + 2, start.size());
+    for (std::size_t i = 0; i < innerStart.size(); ++i) {
+        EXPECT_DOUBLE_EQ(innerStart[i], start[i + 1]) << i;
+        // The smoother runs over a shorter span: the same strides, lengths within 2 cm.
+        EXPECT_NEAR(innerLength[i], length[i + 1], 0.02) << i;
+    }
 }

@@ -161,3 +161,17 @@ TEST(ZuptKalmanSmoother, StanceDetectorKeepsTheMidStances) {
     const std::vector<bool> all = detectStance(t.data(), gyr.data(), t.size(), 3, 0.105, 1.5, {});
     for (bool s : all) EXPECT_TRUE(s);
 }
+
+TEST(ZuptKalmanSmoother, StanceAroundAMidStanceEndsWhereTheFootTurnsFaster) {
+    // A short stance (1 rad/s on samples 48…52, 3 rad/s around it, as a running foot rolls): the
+    // 11-sample average is 23/11 rad/s from 47 to 53, 25/11 at 46 and 54, 27/11 at 45 and 55. Only
+    // the samples within the threshold (0.26) of the mid-stance's average are forced stance: 46…54,
+    // not the whole half window 45…55.
+    std::vector<double> t(100), gyr(300, 0.0);
+    for (std::size_t k = 0; k < t.size(); ++k) {
+        t[k] = 0.01 * double(k);
+        gyr[3 * k + 1] = k >= 48 && k <= 52 ? 1.0 : 3.0;
+    }
+    const std::vector<bool> stance = detectStance(t.data(), gyr.data(), t.size(), 3, 0.105, 0.26, {50});
+    for (std::size_t k = 0; k < t.size(); ++k) EXPECT_EQ(stance[k], k >= 46 && k <= 54) << k;
+}
