@@ -6,8 +6,9 @@
 //    at least minStrideTime after the previous one;
 //  - mid-stance between two swings: the minimum of the gyroscope norm averaged over restWindow
 //    (the foot is flat and still, "low gyro energy", cf. the SHOE detector of Skog et al. 2010 and
-//    gaitmap's NormZuptDetector); it is accepted as a zero-velocity instant when that average is
-//    at most restThreshold. A pause between two swings (the mean norm below staticThreshold for at
+//    gaitmap's NormZuptDetector), however fast the foot still rolls (running); before the first
+//    swing and after the last one, where the data may start or end in motion, it must be at most
+//    restThreshold. A pause between two swings (the mean norm below staticThreshold for at
 //    least standDuration) ends the stride before at the quietest instant of the pause's first
 //    standDuration/2 and starts the next one in its last standDuration/2. Swings more than
 //    maxStrideTime apart without such a pause: the stride before ends at the quietest instant within
@@ -30,7 +31,7 @@ struct StrideSegmentationParams {
     double minStrideTime = 0.5;     // s
     double maxStrideTime = 2.5;     // s: swings further apart have a standing foot between them
     double restWindow = 0.15;       // s: gaitmap NormZuptDetector window_length_s
-    double restThreshold = 2.0;     // rad/s: mean gyroscope norm accepted at a mid-stance
+    double restThreshold = 2.0;     // rad/s: mean gyroscope norm accepted at the first/last mid-stance
     double stanceSearch = 0.6;      // s: search for the mid-stance next to a long gap
     double staticThreshold = 0.26;  // rad/s: standing (gaitmap NormZuptDetector, 15 deg/s)
     double standDuration = 0.75;    // s: shortest pause that splits the stance between two strides

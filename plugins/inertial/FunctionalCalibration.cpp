@@ -1,7 +1,7 @@
 #include "plugins/inertial/FunctionalCalibration.h"
-#include "core/math/PrincipalAxis.h"
 
 #include "core/math/Angles.h"
+#include "core/math/PrincipalAxis.h"
 #include "plugins/inertial/SegmentCalibration.h"
 
 #include <algorithm>
