@@ -543,10 +543,6 @@
         <translation>rts: ein Sample gehört zur Standphase (Nullgeschwindigkeit), wenn die gemittelte Gyroskop-Norm höchstens diesen Wert hat (gaitmap NormZuptDetector: 15 °/s).</translation>
     </message>
     <message>
-        <source>rts: accelerometer process noise per sample; it also covers vibration and scale errors, so it is larger than the sensor noise.</source>
-        <translation>rts: Prozessrauschen des Beschleunigungsmessers je Sample; es deckt auch Vibration und Skalenfehler ab und ist daher größer als das Sensorrauschen.</translation>
-    </message>
-    <message>
         <source>rts: gyroscope process noise per sample.</source>
         <translation>rts: Prozessrauschen des Gyroskops je Sample.</translation>
     </message>
@@ -573,6 +569,18 @@
     <message>
         <source>rts: moving average of the gyroscope norm of the stance detector (gaitmap NormZuptDetector: 0.15 s). The samples within half of it around each mid-stance are stance while their average is at most zupt_threshold above the mid-stance&apos;s.</source>
         <translation>rts: gleitender Mittelwert der Gyroskop-Norm für die Erkennung der Standphase (gaitmap NormZuptDetector: 0,15 s). Die Samples innerhalb der halben Fensterlänge um jeden Mittelstand gelten als Standphase, solange ihr Mittelwert höchstens zupt_threshold über dem des Mittelstands liegt.</translation>
+    </message>
+    <message>
+        <source>rts: accelerometer process noise per m/s^2 of |acceleration norm - g|: scale, impact and shoe errors grow with the motion, so the smoother corrects the velocity at push-off and landing. 0: evenly over the swing (version 4).</source>
+        <translation>rts: Prozessrauschen des Beschleunigungsmessers je m/s^2 von |Beschleunigungsnorm - g|: Skalen-, Stoß- und Schuhfehler wachsen mit der Bewegung, daher korrigiert der Glätter die Geschwindigkeit beim Abstoßen und Aufsetzen. 0: gleichmäßig über den Schwung (Version 4).</translation>
+    </message>
+    <message>
+        <source>rts: gyroscope process noise per rad/s of rotation rate.</source>
+        <translation>rts: Prozessrauschen des Gyroskops je rad/s Drehrate.</translation>
+    </message>
+    <message>
+        <source>rts: accelerometer process noise per sample in quiet phases: sensor noise and vibration (OpenShoe: 0.01 m/s^2 for white noise alone); acc_noise_dynamic adds the errors that come with the motion.</source>
+        <translation>rts: Prozessrauschen des Beschleunigungsmessers je Sample in ruhigen Phasen: Sensorrauschen und Vibration (OpenShoe: 0,01 m/s^2 für weißes Rauschen allein); acc_noise_dynamic fügt die Fehler hinzu, die mit der Bewegung kommen.</translation>
     </message>
 </context>
 <context>

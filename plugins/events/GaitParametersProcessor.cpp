@@ -74,7 +74,9 @@ Expected<Plan> makePlan(const RunContext& c) {
     plan.zupt.stanceWindow = c.number(QStringLiteral("zupt_window"));
     plan.zupt.stanceThreshold = c.number(QStringLiteral("zupt_threshold"));
     plan.zupt.filter.accNoise = c.number(QStringLiteral("acc_noise"));
+    plan.zupt.filter.accNoiseDynamic = c.number(QStringLiteral("acc_noise_dynamic"));
     plan.zupt.filter.gyrNoise = c.number(QStringLiteral("gyr_noise"));
+    plan.zupt.filter.gyrNoiseDynamic = c.number(QStringLiteral("gyr_noise_dynamic"));
     plan.zupt.filter.zuptNoise = c.number(QStringLiteral("zupt_noise"));
     plan.staticThreshold = p.staticThreshold = c.number(QStringLiteral("static_threshold"));
     p.standDuration = c.number(QStringLiteral("stand_duration"));
@@ -174,10 +176,17 @@ ParameterSpecs GaitParametersProcessor::parameters() const {
                               tr("rts: a sample is stance (zero velocity) when the averaged gyroscope norm is at "
                                  "most this (gaitmap NormZuptDetector: 15 deg/s).")),
         ParameterSpec::number(QStringLiteral("acc_noise"), dz.filter.accNoise, 1e-6, kInf, QStringLiteral("m/s^2"),
-                              tr("rts: accelerometer process noise per sample; it also covers vibration and "
-                                 "scale errors, so it is larger than the sensor noise.")),
+                              tr("rts: accelerometer process noise per sample in quiet phases: sensor noise and "
+                                 "vibration (OpenShoe: 0.01 m/s^2 for white noise alone); acc_noise_dynamic "
+                                 "adds the errors that come with the motion.")),
+        ParameterSpec::number(QStringLiteral("acc_noise_dynamic"), dz.filter.accNoiseDynamic, 0.0, kInf, QString(),
+                              tr("rts: accelerometer process noise per m/s^2 of |acceleration norm - g|: scale, "
+                                 "impact and shoe errors grow with the motion, so the smoother corrects the "
+                                 "velocity at push-off and landing. 0: evenly over the swing (version 4).")),
         ParameterSpec::number(QStringLiteral("gyr_noise"), dz.filter.gyrNoise, 1e-6, kInf, QStringLiteral("rad/s"),
                               tr("rts: gyroscope process noise per sample.")),
+        ParameterSpec::number(QStringLiteral("gyr_noise_dynamic"), dz.filter.gyrNoiseDynamic, 0.0, kInf, QString(),
+                              tr("rts: gyroscope process noise per rad/s of rotation rate.")),
         ParameterSpec::number(QStringLiteral("zupt_noise"), dz.filter.zuptNoise, 1e-6, kInf, QStringLiteral("m/s"),
                               tr("rts: standard deviation of the zero-velocity pseudo-measurement (OpenShoe: "
                                  "0.01 m/s).")),

@@ -14,7 +14,7 @@ public:
     QString id() const override { return QStringLiteral("gait-parameters"); }
     QString name() const override;
     QString description() const override;
-    QString version() const override { return QStringLiteral("4"); }
+    QString version() const override { return QStringLiteral("5"); }
     ParameterSpecs parameters() const override;
     QList<InputSpec> inputs() const override;
     QList<OutputSpec> outputs() const override;

@@ -215,15 +215,40 @@ TEST_F(GaitParametersValidation, MethodRtsMatchesEveryStrideAndTheFeetAgree) {
         leftRightDifference(*tables[QStringLiteral("rtsleft")], *tables[QStringLiteral("rtsright")], "rts");
     EXPECT_EQ(bouts, 4);
     EXPECT_EQ(rtsBouts, 4);
-    // Left and right mean stride per straight bout agree within 2 % (one stride of 1.25 m in a
-    // 5-stride bout is 20 %); the smoother no worse than the instant method.
-    EXPECT_LT(instantLr, 0.02);
-    EXPECT_LT(rtsLr, 0.02);
-    EXPECT_LE(rtsLr, instantLr);
+    // Left and right mean stride per straight bout: a weak check, as the two feet's strides of a
+    // bout start and end at different footfalls, so their means may differ by up to a step over
+    // the bout's strides (0.6 m / 5 strides). Version 4 (white noise) had 0.62 % here and 12 cm
+    // of climb per stride on this level floor; the truth test is LevelFloorStridesStayLevel.
+    EXPECT_LT(instantLr, 0.03);
+    EXPECT_LT(rtsLr, 0.05);
     std::printf(
         "[ figures  ] gaitmap walk: rts − instant on the 14 matched strides mean %+.1f %%, largest %.1f %%; "
         "left/right mean stride per straight bout differs by %.2f %% (instant) and %.2f %% (rts) over %d bouts\n",
         100.0 * sumDifference / matched, 100.0 * maxDifference, 100.0 * instantLr, 100.0 * rtsLr, bouts);
+}
+
+TEST_F(GaitParametersValidation, LevelFloorStridesStayLevel) {
+    // The walk is on a level floor, so every stride's height change is 0: a reference that needs no
+    // motion capture. The smoother's velocity noise follows the dynamics (acc_noise_dynamic), so a
+    // stance's correction goes to push-off and landing, where the errors arise; with white noise
+    // (version 4, acc_noise 0.5, acc_noise_dynamic 0) the left foot climbed 0.12 m per stride.
+    import(QStringLiteral("imu_sample_ic_stride.csv"), QStringLiteral("walk"));
+    for (const QString& foot : {QStringLiteral("left"), QStringLiteral("right")}) {
+        const Table* dynamic = run(QStringLiteral("walk/%1-foot").arg(foot), QStringLiteral("walk/%1-d").arg(foot));
+        const Table* white = run(QStringLiteral("walk/%1-foot").arg(foot), QStringLiteral("walk/%1-w").arg(foot),
+                                 {{QStringLiteral("acc_noise"), 0.5}, {QStringLiteral("acc_noise_dynamic"), 0.0}});
+        ASSERT_TRUE(dynamic && white);
+        const auto meanAbs = [](const std::vector<double>& v) {
+            double sum = 0.0;
+            for (double x : v) sum += std::abs(x);
+            return sum / double(v.size());
+        };
+        const double d = meanAbs(column(*dynamic, "stride_height")), w = meanAbs(column(*white, "stride_height"));
+        std::printf("[ figures  ] %s foot, level floor: mean |stride height| %.3f m (white noise %.3f m)\n",
+                    qPrintable(foot), d, w);
+        EXPECT_LT(d, 0.035) << qPrintable(foot);
+        EXPECT_LT(d, 0.5 * w) << qPrintable(foot);
+    }
 }
 
 TEST_F(GaitParametersValidation, SensorMountingDoesNotMatter) {
@@ -360,7 +385,10 @@ TEST_F(GaitParametersValidation, RestThresholdOnlyHoldsTheFirstAndLastMidStance)
     ASSERT_EQ(innerStart.size() + 2, start.size());
     for (std::size_t i = 0; i < innerStart.size(); ++i) {
         EXPECT_DOUBLE_EQ(innerStart[i], start[i + 1]) << i;
-        // The smoother runs over a shorter span: the same strides, lengths within 2 cm.
-        EXPECT_NEAR(innerLength[i], length[i + 1], 0.02) << i;
+        // The smoother runs over a shorter span: the same strides, lengths within 2 cm, except the
+        // last five before the span's new end. There the end condition (the last sample's filtered
+        // state is its smoothed one) moves the tilt shared by the strides: up to 7 cm on this foot
+        // with the dynamic velocity noise (docs/validation/gait-parameters.md, gyr_noise_dynamic).
+        EXPECT_NEAR(innerLength[i], length[i + 1], i + 5 < innerStart.size() ? 0.02 : 0.08) << i;
     }
 }

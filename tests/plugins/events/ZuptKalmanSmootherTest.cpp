@@ -141,7 +141,13 @@ TEST(ZuptKalmanSmoother, AStillFootStaysPut) {
     const std::vector<bool> stance(rec.t.size(), true);
     const auto states = ZuptKalmanSmoother::smooth({}, levelled(rec), 9.81, rec.t.data(), rec.values.data(), 6,
                                                    rec.values.data() + 3, 6, stance);
-    for (const auto& s : states) ASSERT_LT(s.position.norm(), 0.005) << s.position.transpose();
+    // A still foot has no dynamics, so only the noise floor acc_noise drives its velocity noise:
+    // with a floor of 0.01 m/s² (an IMU's white noise alone) the simulated accelerometer bias
+    // would move it by 23 mm in 4 s; 0.05 m/s² keeps it at 2.3 mm.
+    double worst = 0.0;
+    for (const auto& s : states) worst = std::max(worst, s.position.norm());
+    std::printf("[ figures  ] still foot, 4 s: largest displacement %.4f m\n", worst);
+    EXPECT_LT(worst, 0.005);
 }
 
 TEST(ZuptKalmanSmoother, StanceDetectorKeepsTheMidStances) {
