@@ -84,7 +84,7 @@ bool ZuptKalmanSmoother::advance(double t, const Vector3d& acc, const Vector3d& 
     Matrix9 prior = PhiP;
     prior.middleCols<3>(0) += dt * PhiP.middleCols<3>(3) - h * H;
     prior.middleCols<3>(3) -= dt * H;
-    // Eq. 3a: the velocity noise grows with the dynamics of the new sample.
+    // Eqs. 3a–3b: the noise grows with the dynamics of the new sample.
     const double qa = (params_.accNoise + params_.accNoiseDynamic * std::abs(acc.norm() - gravity_)) * dt;
     const double qw = (params_.gyrNoise + params_.gyrNoiseDynamic * gyr.norm()) * dt;
     for (int i = 0; i < 3; ++i) {
