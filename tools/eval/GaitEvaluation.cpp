@@ -1,6 +1,7 @@
 #include "tools/eval/GaitEvaluation.h"
 
 #include "core/io/Importer.h"
+#include "core/model/Project.h"
 #include "plugins/events/GaitEventsProcessor.h"
 #include "plugins/events/MediolateralAxis.h"
 
@@ -11,6 +12,18 @@
 #include <numeric>
 
 namespace athlos::events {
+
+Expected<std::unique_ptr<Project>> importGaitmapWalk(const QString& dir, const QString& imuCsv) {
+    auto project = Project::create(dir + QStringLiteral("/p.athlos"));
+    if (!project) return makeError(QStringLiteral("cannot create a project in %1").arg(dir));
+    ImportOptions options;
+    options.format = QStringLiteral("gaitmap");
+    options.target = QStringLiteral("walk");
+    auto imported = importFile(imuCsv, options);
+    if (!imported) return imported.error();
+    if (Status s = applyImport(*project, std::move(imported).value(), false); !s.ok()) return s.error();
+    return project;
+}
 
 Expected<std::vector<ReferenceStride>> readStrideBorders(const QString& path, double rate) {
     QFile file(path);

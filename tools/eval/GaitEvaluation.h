@@ -9,9 +9,18 @@
 #include "plugins/events/GaitEventDetector.h"
 
 #include <QString>
+#include <memory>
 #include <vector>
 
+namespace athlos {
+class Project;
+}
+
 namespace athlos::events {
+
+// A new project in dir (which must outlive it) with a gaitmap IMU CSV imported as recording "walk"
+// (walk/left-foot, walk/right-foot; the rate from the file). Errors name the file.
+Expected<std::unique_ptr<Project>> importGaitmapWalk(const QString& dir, const QString& imuCsv);
 
 struct ReferenceStride {
     QString foot;       // "left" / "right"

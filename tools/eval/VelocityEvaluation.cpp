@@ -1,6 +1,5 @@
 #include "tools/eval/VelocityEvaluation.h"
 
-#include "core/io/Importer.h"
 #include "core/model/Project.h"
 #include "core/processing/ProcessorRunner.h"
 #include "plugins/events/GaitParametersProcessor.h"
@@ -220,14 +219,9 @@ Expected<GaitmapVelocityScore> evaluateGaitmapVelocity(const QString& imuCsv, co
                                                        const QVariantMap& resetParameters) {
     QTemporaryDir dir;
     if (!dir.isValid()) return makeError(QStringLiteral("cannot create a temporary folder"));
-    auto project = Project::create(dir.filePath(QStringLiteral("p.athlos")));
-    if (!project) return makeError(QStringLiteral("cannot create a project in %1").arg(dir.path()));
-    ImportOptions options;
-    options.format = QStringLiteral("gaitmap");
-    options.target = QStringLiteral("walk");
-    auto imported = importFile(imuCsv, options);
-    if (!imported) return imported.error();
-    if (Status s = applyImport(*project, std::move(imported).value(), false); !s.ok()) return s.error();
+    auto project = events::importGaitmapWalk(dir.path(), imuCsv);
+    if (!project) return project.error();
+    Project& walk = **project;
     GaitmapVelocityScore score;
     const OrientationProcessor orientation;
     const VelocityResetProcessor reset;
@@ -236,19 +230,19 @@ Expected<GaitmapVelocityScore> evaluateGaitmapVelocity(const QString& imuCsv, co
         const QString imu = QStringLiteral("walk/%1-foot").arg(foot);
         const QString q = imu + QStringLiteral("-q"), v = imu + QStringLiteral("-v"), g = imu + QStringLiteral("-g");
         auto r1 =
-            runProcessor(*project, orientation,
+            runProcessor(walk, orientation,
                          RunRequest{orientation.id(), {imu}, q, {{QStringLiteral("mode"), QStringLiteral("6d")}}});
         if (!r1) return r1.error();
-        auto r2 = runProcessor(*project, reset, RunRequest{reset.id(), {q, imu}, v, resetParameters});
+        auto r2 = runProcessor(walk, reset, RunRequest{reset.id(), {q, imu}, v, resetParameters});
         if (!r2) return r2.error();
         // Against gait-parameters' per-stride method (zero velocity at one instant per stance, like the
         // resets here); the figures in drift-reduction.md were measured so before rts became the default.
-        auto r3 = runProcessor(*project, gait,
-                               RunRequest{gait.id(), {imu}, g, {{QStringLiteral("method"), QStringLiteral("instant")}}});
+        auto r3 = runProcessor(
+            walk, gait, RunRequest{gait.id(), {imu}, g, {{QStringLiteral("method"), QStringLiteral("instant")}}});
         if (!r3) return r3.error();
-        const Table* phases = project->table(v + QStringLiteral("-zero-velocity"));
-        const Table* strides = project->table(g);
-        auto traj = project->stream(v)->data();
+        const Table* phases = walk.table(v + QStringLiteral("-zero-velocity"));
+        const Table* strides = walk.table(g);
+        auto traj = walk.stream(v)->data();
         if (!phases || !strides || !traj) return makeError(QStringLiteral("%1: an output is missing").arg(imu));
         const StreamData& d = **traj;
         const std::vector<double>& start = phases->column(QStringLiteral("start"))->numbers;

@@ -1,0 +1,75 @@
+// The heel-marker scoring of athlos-eval-gait-heel (tools/eval/HeelEvaluation.h) on a hand-made
+// gaitmap mocap file and hand-made strides, so that the figures of docs/validation/gait-parameters.md
+// rest on a checked scorer.
+#include "tools/eval/HeelEvaluation.h"
+
+#include <QFile>
+#include <QTemporaryDir>
+#include <QTextStream>
+#include <gtest/gtest.h>
+
+using namespace athlos::events;
+
+namespace {
+// 100 Hz: the left heel stands at x = 0 until 1 s, at 1.40 m from 2 s; the right heel stays at
+// (5, 5). Columns as gaitmap's mocap_sample.csv, marker names in the first row, axes in the second.
+QString writeMocap(const QTemporaryDir& dir) {
+    const QString path = dir.filePath(QStringLiteral("mocap.csv"));
+    QFile f(path);
+    EXPECT_TRUE(f.open(QIODevice::WriteOnly | QIODevice::Text));
+    QTextStream out(&f);
+    out << ",L_TOE,L_TOE,L_TOE,L_FCC,L_FCC,L_FCC,R_FCC,R_FCC,R_FCC\n,x,y,z,x,y,z,x,y,z\n";
+    for (int k = 0; k <= 300; ++k) {
+        const double x = k <= 100 ? 0.0 : k >= 200 ? 1400.0 : 14.0 * (k - 100);
+        out << k << ",0,0,0," << x << ",0,40," << 5000 << ",5000,40\n";
+    }
+    return path;
+}
+}  // namespace
+
+TEST(HeelEvaluation, ReadsTheHeelMarkersInMetres) {
+    QTemporaryDir dir;
+    auto heel = readGaitmapHeel(writeMocap(dir));
+    ASSERT_TRUE(heel.ok()) << qPrintable(heel.message());
+    ASSERT_EQ(heel->left.size(), 301u);
+    EXPECT_DOUBLE_EQ(heel->left[250].x(), 1.4);
+    EXPECT_DOUBLE_EQ(heel->right[0].y(), 5.0);
+}
+
+TEST(HeelEvaluation, ScoresMatchedStridesAgainstTheHeelDisplacement) {
+    QTemporaryDir dir;
+    auto heel = readGaitmapHeel(writeMocap(dir));
+    ASSERT_TRUE(heel.ok());
+    const std::vector<ReferenceStride> reference = {{QStringLiteral("left"), 0.5, 2.5}};
+    // Midpoint 1.5 s lies in the reference stride: 1.47 m against the heel's 1.40 m (+5 %); a
+    // second estimated stride outside it does not count there, but between its own borders the
+    // heel moved less than 0.2 m, so it is left out of the own-border figures too.
+    const std::vector<EstimatedStride> strides = {{0.6, 2.4, 1.47, 0.0}, {2.5, 2.9, 0.1, 0.5}};
+    HeelScore score;
+    scoreAgainstHeel(reference, heel->left, heel->rate, strides, score);
+    EXPECT_EQ(score.reference, 1);
+    EXPECT_EQ(score.matchedOnce, 1);
+    ASSERT_EQ(score.error.size(), 1u);
+    EXPECT_NEAR(score.error[0], 0.05, 1e-12);
+    ASSERT_EQ(score.straightError.size(), 1u);
+    ASSERT_EQ(score.ownError.size(), 1u);
+    EXPECT_NEAR(score.ownError[0], 0.05, 1e-12);
+
+    // Two estimated midpoints in one reference stride: not matched once, no error recorded.
+    HeelScore twice;
+    scoreAgainstHeel(reference, heel->left, heel->rate, {{0.6, 1.4, 0.7, 0.0}, {1.4, 2.4, 0.7, 0.0}}, twice);
+    EXPECT_EQ(twice.matchedOnce, 0);
+    EXPECT_TRUE(twice.error.empty());
+}
+
+TEST(HeelEvaluation, RefusesAFileWithoutHeelMarkers) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("no_heel.csv"));
+    QFile f(path);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly | QIODevice::Text));
+    f.write(",L_TOE,L_TOE\n,x,y\n0,1,2\n");
+    f.close();
+    auto heel = readGaitmapHeel(path);
+    ASSERT_FALSE(heel.ok());
+    EXPECT_TRUE(heel.message().contains(QStringLiteral("L_FCC"))) << qPrintable(heel.message());
+}
