@@ -3,6 +3,7 @@
 #include "core/processing/Translator.h"
 #include "plugins/events/GaitEventDetector.h"
 #include "plugins/events/MediolateralAxis.h"
+#include "plugins/events/VectorColumns.h"
 
 #include <QJsonArray>
 #include <cmath>
@@ -28,17 +29,9 @@ Expected<Plan> makePlan(const RunContext& c) {
     const Stream* stream = c.stream(0);
     if (!stream) return makeError(QStringLiteral("input '%1' was not given").arg(c.inputRole(0)));
     const StreamInfo& info = stream->info();
-    plan.gyr = info.columnIndex(QStringLiteral("gyr_x"));
-    if (plan.gyr < 0 || info.columnIndex(QStringLiteral("gyr_y")) != plan.gyr + 1 ||
-        info.columnIndex(QStringLiteral("gyr_z")) != plan.gyr + 2)
-        return c.inputError(0, QStringLiteral("needs adjacent columns gyr_x, gyr_y, gyr_z (it has: %1)")
-                                   .arg(info.columnNames().join(QStringLiteral(", "))));
-    for (int k = 0; k < 3; ++k) {
-        const QString unit = info.columns[std::size_t(plan.gyr + k)].unit;
-        if (!unit.isEmpty() && unit != QLatin1String("rad/s"))
-            return c.inputError(0, QStringLiteral("column %1 is in '%2'; gait-events expects rad/s")
-                                       .arg(info.columns[std::size_t(plan.gyr + k)].name, unit));
-    }
+    auto gyr = vectorColumns(c, 0, QStringLiteral("gyr_"), QStringLiteral("rad/s"), QStringLiteral("gait-events"));
+    if (!gyr) return gyr.error();
+    plan.gyr = *gyr;
     plan.axis = c.text(QStringLiteral("ml_axis"));
     plan.sign = swingSignOf(c.text(QStringLiteral("swing_sign")));
     auto& p = plan.params;

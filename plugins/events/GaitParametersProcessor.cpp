@@ -6,6 +6,7 @@
 #include "plugins/events/MediolateralAxis.h"
 #include "plugins/events/StaticGyroBias.h"
 #include "plugins/events/StrideIntegrator.h"
+#include "plugins/events/VectorColumns.h"
 #include "plugins/events/ZuptKalmanSmoother.h"
 
 #include <QJsonArray>
@@ -29,31 +30,15 @@ struct Plan {
     QString foot, mlAxis;  // mlAxis: the parameter (x, y, z or auto), resolved on the data in run()
 };
 
-// Index of x of three adjacent columns <prefix>x, y, z in the expected unit, or an error.
-Expected<int> vectorColumns(const RunContext& c, const StreamInfo& info, const QString& prefix, const QString& unit) {
-    const int i = info.columnIndex(prefix + QLatin1Char('x'));
-    if (i < 0 || info.columnIndex(prefix + QLatin1Char('y')) != i + 1 ||
-        info.columnIndex(prefix + QLatin1Char('z')) != i + 2)
-        return c.inputError(0, QStringLiteral("needs adjacent columns %1x, %1y, %1z (it has: %2)")
-                                   .arg(prefix, info.columnNames().join(QStringLiteral(", "))));
-    for (int k = 0; k < 3; ++k) {
-        const auto& column = info.columns[std::size_t(i + k)];
-        if (!column.unit.isEmpty() && column.unit != unit)
-            return c.inputError(
-                0,
-                QStringLiteral("column %1 is in '%2'; gait-parameters expects %3").arg(column.name, column.unit, unit));
-    }
-    return i;
-}
-
 Expected<Plan> makePlan(const RunContext& c) {
     Plan plan;
     const Stream* stream = c.stream(0);
     if (!stream) return makeError(QStringLiteral("input '%1' was not given").arg(c.inputRole(0)));
     const StreamInfo& info = stream->info();
-    auto acc = vectorColumns(c, info, QStringLiteral("acc_"), QStringLiteral("m/s^2"));
+    const QString id = QStringLiteral("gait-parameters");
+    auto acc = vectorColumns(c, 0, QStringLiteral("acc_"), QStringLiteral("m/s^2"), id);
     if (!acc) return acc.error();
-    auto gyr = vectorColumns(c, info, QStringLiteral("gyr_"), QStringLiteral("rad/s"));
+    auto gyr = vectorColumns(c, 0, QStringLiteral("gyr_"), QStringLiteral("rad/s"), id);
     if (!gyr) return gyr.error();
     plan.acc = *acc;
     plan.gyr = *gyr;

@@ -2,6 +2,7 @@
 
 #include "core/processing/OutputStreams.h"
 #include "core/processing/Translator.h"
+#include "plugins/events/VectorColumns.h"
 
 #include <cmath>
 #include <limits>
@@ -20,21 +21,9 @@ struct Plan {
 
 Expected<Plan> makePlan(const RunContext& c) {
     Plan plan;
-    const Stream* stream = c.stream(0);
-    if (!stream) return makeError(QStringLiteral("input '%1' was not given").arg(c.inputRole(0)));
-    const StreamInfo& info = stream->info();
-    const int i = info.columnIndex(QStringLiteral("acc_x"));
-    if (i < 0 || info.columnIndex(QStringLiteral("acc_y")) != i + 1 ||
-        info.columnIndex(QStringLiteral("acc_z")) != i + 2)
-        return c.inputError(0, QStringLiteral("needs adjacent columns acc_x, acc_y, acc_z (it has: %1)")
-                                   .arg(info.columnNames().join(QStringLiteral(", "))));
-    for (int k = 0; k < 3; ++k) {
-        const QString& unit = info.columns[std::size_t(i + k)].unit;
-        if (!unit.isEmpty() && unit != QLatin1String("m/s^2"))
-            return c.inputError(0, QStringLiteral("column %1 is in '%2'; wrist-cadence expects m/s^2")
-                                       .arg(info.columns[std::size_t(i + k)].name, unit));
-    }
-    plan.acc = i;
+    auto acc = vectorColumns(c, 0, QStringLiteral("acc_"), QStringLiteral("m/s^2"), QStringLiteral("wrist-cadence"));
+    if (!acc) return acc.error();
+    plan.acc = *acc;
     WristCadenceParams& p = plan.params;
     p.window = c.number(QStringLiteral("window"));
     p.hop = c.number(QStringLiteral("hop"));

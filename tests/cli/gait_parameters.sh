@@ -37,6 +37,13 @@ grep -q '"path": "walk/left-strides-trajectory"' "$WORK/out" || fail "no traject
 grep -q '"path": "walk/left-rts-strides-trajectory"' "$WORK/out" || fail "no rts trajectory stream"
 expect_fail "unknown method" "method" "$ATHLOS" run "$P" gait-parameters --input walk/left-foot --output walk/x \
   --param method=kalman
+# An IMU stream without the gyroscope is refused with the columns it has (the events family's shared check).
+awk 'BEGIN { print "t,acc_x,acc_y,acc_z"; for (i = 0; i < 50; ++i) printf "%.3f,0,0,9.81\n", i / 100 }' > "$WORK/acc.csv"
+expect_ok "import accelerometer only" "$ATHLOS" import "$P" "$WORK/acc.csv" --as acc --kind imu
+expect_fail "gait-parameters without gyroscope" "needs adjacent columns gyr_x, gyr_y, gyr_z \(it has: acc_x, acc_y, acc_z\)" \
+  "$ATHLOS" run "$P" gait-parameters --input acc/imu --output acc/x
+expect_fail "gait-events without gyroscope" "needs adjacent columns gyr_x, gyr_y, gyr_z \(it has: acc_x, acc_y, acc_z\)" \
+  "$ATHLOS" run "$P" gait-events --input acc/imu --output acc/x
 
 # Another mounting (the held-out walk may come from other devices): the same walk in the raw frames of
 # gaitmap's lateral NilsPods (its extract_example_data.py: raw = Rz(±90°) Rx(±90°) aligned, so x points
