@@ -389,6 +389,22 @@
         <source>Sign of the medio-lateral angular velocity during swing; auto: the sign of the longest sustained rotation.</source>
         <translation>Vorzeichen der medio-lateralen Winkelgeschwindigkeit im Schwung; auto: das Vorzeichen der längsten anhaltenden Drehung.</translation>
     </message>
+    <message>
+        <source>Minimum mid-swing angular velocity of a stride (walking peaks are 4–7 rad/s, Rampp et al. 2015).</source>
+        <translation>Minimale Winkelgeschwindigkeit in der Schwungmitte eines Doppelschritts (beim Gehen 4–7 rad/s, Rampp et al. 2015).</translation>
+    </message>
+    <message>
+        <source>Shortest stride; closer swing peaks count as one.</source>
+        <translation>Kürzester Doppelschritt; näher beieinanderliegende Schwungspitzen zählen als eine.</translation>
+    </message>
+    <message>
+        <source>Search window for toe-off before the swing peak.</source>
+        <translation>Suchfenster für die Zehenablösung vor der Schwungspitze.</translation>
+    </message>
+    <message>
+        <source>Search window for initial contact after the swing peak.</source>
+        <translation>Suchfenster für den Initialkontakt nach der Schwungspitze.</translation>
+    </message>
 </context>
 <context>
     <name>athlos::events::AlpineTurnsProcessor</name>
@@ -444,24 +460,8 @@
         <translation>Initialkontakt, Zehenablösung und Mittelstand aus dem medio-lateralen Gyroskop einer am Fuß getragenen IMU (negative Spitzen des in der Schwungphase positiven Signals nach und vor jeder Schwungspitze; Minimum der Gyroskopnorm im Stand). Schreibt die Doppelschritte (IC bis zum nächsten IC) als vorhergesagte Annotationen mit Konfidenz und eine Tabelle der Ereignisse.</translation>
     </message>
     <message>
-        <source>Minimum mid-swing angular velocity of a stride.</source>
-        <translation>Minimale Winkelgeschwindigkeit eines Doppelschritts in der Schwungmitte.</translation>
-    </message>
-    <message>
-        <source>Shortest stride; closer swing peaks count as one.</source>
-        <translation>Kürzester Doppelschritt; näher beieinanderliegende Schwungspitzen zählen als eine.</translation>
-    </message>
-    <message>
         <source>Longest stride; longer intervals between contacts are gaps.</source>
         <translation>Längster Doppelschritt; längere Intervalle zwischen Kontakten sind Lücken.</translation>
-    </message>
-    <message>
-        <source>Search window for toe-off before the swing peak.</source>
-        <translation>Suchfenster für die Zehenablösung vor der Schwungspitze.</translation>
-    </message>
-    <message>
-        <source>Search window for initial contact after the swing peak.</source>
-        <translation>Suchfenster für den Initialkontakt nach der Schwungspitze.</translation>
     </message>
     <message>
         <source>Annotation label of the strides; empty: &quot;stride left&quot; / &quot;stride right&quot; from the stream name.</source>
@@ -487,14 +487,6 @@
         <translation>Gangparameter (Fuß-IMU)</translation>
     </message>
     <message>
-        <source>Minimum mid-swing angular velocity of a stride (gait-events&apos; default; walking peaks are 4–7 rad/s, Rampp et al. 2015).</source>
-        <translation>Minimale Winkelgeschwindigkeit eines Doppelschritts in der Schwungmitte (Vorgabe von gait-events; Spitzen beim Gehen liegen bei 4–7 rad/s, Rampp et al. 2015).</translation>
-    </message>
-    <message>
-        <source>Shortest stride; closer swing peaks count as one.</source>
-        <translation>Kürzester Doppelschritt; näher beieinanderliegende Schwungspitzen zählen als eine.</translation>
-    </message>
-    <message>
         <source>Swings further apart have the foot standing between them: the strides end and start next to the standing phase.</source>
         <translation>Weiter auseinanderliegende Schwünge haben einen stehenden Fuß dazwischen: die Doppelschritte enden und beginnen neben der Standphase.</translation>
     </message>
@@ -517,14 +509,6 @@
     <message>
         <source>Next to a standing phase, the mid-stance is searched this long after the last swing and before the next one.</source>
         <translation>Neben einer Standphase wird der Mittelstand so lange nach dem letzten Schwung und vor dem nächsten gesucht.</translation>
-    </message>
-    <message>
-        <source>Search window for toe-off before the swing peak (as gait-events).</source>
-        <translation>Suchfenster für die Zehenablösung vor der Schwungspitze (wie gait-events).</translation>
-    </message>
-    <message>
-        <source>Search window for initial contact after the swing peak (as gait-events).</source>
-        <translation>Suchfenster für den Initialkontakt nach der Schwungspitze (wie gait-events).</translation>
     </message>
     <message>
         <source>Accelerometer average at a mid-stance that gives the up direction.</source>

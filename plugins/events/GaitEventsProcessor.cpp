@@ -3,17 +3,16 @@
 #include "core/processing/Translator.h"
 #include "plugins/events/GaitEventDetector.h"
 #include "plugins/events/MediolateralAxis.h"
+#include "plugins/events/SwingSearch.h"
 #include "plugins/events/VectorColumns.h"
 
 #include <QJsonArray>
 #include <cmath>
-#include <limits>
 
 namespace athlos::events {
 
 namespace {
 constexpr Translator tr{"athlos::events", "GaitEventsProcessor"};
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 struct Plan {
     std::shared_ptr<const StreamData> data;
@@ -35,15 +34,9 @@ Expected<Plan> makePlan(const RunContext& c) {
     plan.axis = c.text(QStringLiteral("ml_axis"));
     plan.sign = swingSignOf(c.text(QStringLiteral("swing_sign")));
     auto& p = plan.params;
-    p.swingThreshold = c.number(QStringLiteral("swing_threshold"));
-    p.minStrideTime = c.number(QStringLiteral("min_stride"));
-    p.maxStrideTime = c.number(QStringLiteral("max_stride"));
-    p.tcWindow = c.number(QStringLiteral("tc_window"));
-    p.icWindow = c.number(QStringLiteral("ic_window"));
-    if (p.maxStrideTime <= p.minStrideTime)
-        return makeError(QStringLiteral("max_stride: %1 s must be longer than min_stride (%2 s)")
-                             .arg(p.maxStrideTime)
-                             .arg(p.minStrideTime));
+    auto swing = readSwingSearch(c);
+    if (!swing) return swing.error();
+    swing->applyTo(p);
     auto input = c.samples(0);
     if (!input) return input.error();
     plan.data = input->data;
@@ -83,24 +76,13 @@ QString GaitEventsProcessor::description() const {
 }
 
 ParameterSpecs GaitEventsProcessor::parameters() const {
-    const GaitEventDetector::Params d;
-    return {
-        mlAxisParameter(),
-        swingSignParameter(),
-        ParameterSpec::number(QStringLiteral("swing_threshold"), d.swingThreshold, 0.0, kInf, QStringLiteral("rad/s"),
-                              tr("Minimum mid-swing angular velocity of a stride.")),
-        ParameterSpec::number(QStringLiteral("min_stride"), d.minStrideTime, 0.05, kInf, QStringLiteral("s"),
-                              tr("Shortest stride; closer swing peaks count as one.")),
-        ParameterSpec::number(QStringLiteral("max_stride"), d.maxStrideTime, 0.1, kInf, QStringLiteral("s"),
-                              tr("Longest stride; longer intervals between contacts are gaps.")),
-        ParameterSpec::number(QStringLiteral("tc_window"), d.tcWindow, 0.01, kInf, QStringLiteral("s"),
-                              tr("Search window for toe-off before the swing peak.")),
-        ParameterSpec::number(QStringLiteral("ic_window"), d.icWindow, 0.01, kInf, QStringLiteral("s"),
-                              tr("Search window for initial contact after the swing peak.")),
-        ParameterSpec::text(
-            QStringLiteral("label"), QString(),
-            tr("Annotation label of the strides; empty: \"stride left\" / \"stride right\" from the stream name.")),
-    };
+    ParameterSpecs specs{mlAxisParameter(), swingSignParameter()};
+    specs << swingSearchParameters(SwingSearch::of(GaitEventDetector::Params{}),
+                                   tr("Longest stride; longer intervals between contacts are gaps."));
+    specs << ParameterSpec::text(
+        QStringLiteral("label"), QString(),
+        tr("Annotation label of the strides; empty: \"stride left\" / \"stride right\" from the stream name."));
+    return specs;
 }
 
 QList<InputSpec> GaitEventsProcessor::inputs() const {

@@ -6,6 +6,7 @@
 #include "plugins/events/MediolateralAxis.h"
 #include "plugins/events/StaticGyroBias.h"
 #include "plugins/events/StrideIntegrator.h"
+#include "plugins/events/SwingSearch.h"
 #include "plugins/events/VectorColumns.h"
 #include "plugins/events/ZuptKalmanSmoother.h"
 
@@ -45,14 +46,12 @@ Expected<Plan> makePlan(const RunContext& c) {
     auto& p = plan.segmentation;
     plan.mlAxis = c.text(QStringLiteral("ml_axis"));
     p.swingSign = swingSignOf(c.text(QStringLiteral("swing_sign")));
-    p.swingThreshold = c.number(QStringLiteral("swing_threshold"));
-    p.minStrideTime = c.number(QStringLiteral("min_stride"));
-    p.maxStrideTime = c.number(QStringLiteral("max_stride"));
+    auto swing = readSwingSearch(c);
+    if (!swing) return swing.error();
+    swing->applyTo(p);
     p.restWindow = c.number(QStringLiteral("rest_window"));
     p.restThreshold = c.number(QStringLiteral("rest_threshold"));
     p.stanceSearch = c.number(QStringLiteral("stance_search"));
-    p.tcWindow = c.number(QStringLiteral("tc_window"));
-    p.icWindow = c.number(QStringLiteral("ic_window"));
     plan.integration.levelWindow = c.number(QStringLiteral("level_window"));
     plan.smoother = c.text(QStringLiteral("method")) == QLatin1String("rts");
     plan.zupt.levelWindow = plan.integration.levelWindow;
@@ -66,10 +65,6 @@ Expected<Plan> makePlan(const RunContext& c) {
     plan.staticThreshold = p.staticThreshold = c.number(QStringLiteral("static_threshold"));
     p.standDuration = c.number(QStringLiteral("stand_duration"));
     plan.staticDuration = c.number(QStringLiteral("static_duration"));
-    if (p.maxStrideTime <= p.minStrideTime)
-        return makeError(QStringLiteral("max_stride: %1 s must be longer than min_stride (%2 s)")
-                             .arg(p.maxStrideTime)
-                             .arg(p.minStrideTime));
     auto input = c.samples(0);
     if (!input) return input.error();
     plan.data = input->data;
@@ -106,7 +101,7 @@ ParameterSpecs GaitParametersProcessor::parameters() const {
     const StrideSegmentationParams d;
     const StrideIntegrationParams di;
     const ZuptStrideParams dz;
-    return {
+    ParameterSpecs specs{
         ParameterSpec::choice(
             QStringLiteral("method"), {QStringLiteral("instant"), QStringLiteral("rts")}, QStringLiteral("rts"),
             tr("instant: per stride, zero velocity at the two mid-stance instants, drift removed linearly. rts: "
@@ -114,14 +109,11 @@ ParameterSpecs GaitParametersProcessor::parameters() const {
                "recording, zero velocity on every stance sample (Skog et al. 2010; gaitmap RtsKalman).")),
         mlAxisParameter(),
         swingSignParameter(),
-        ParameterSpec::number(QStringLiteral("swing_threshold"), d.swingThreshold, 0.0, kInf, QStringLiteral("rad/s"),
-                              tr("Minimum mid-swing angular velocity of a stride (gait-events' default; walking "
-                                 "peaks are 4–7 rad/s, Rampp et al. 2015).")),
-        ParameterSpec::number(QStringLiteral("min_stride"), d.minStrideTime, 0.05, kInf, QStringLiteral("s"),
-                              tr("Shortest stride; closer swing peaks count as one.")),
-        ParameterSpec::number(QStringLiteral("max_stride"), d.maxStrideTime, 0.1, kInf, QStringLiteral("s"),
-                              tr("Swings further apart have the foot standing between them: the strides end "
-                                 "and start next to the standing phase.")),
+    };
+    specs << swingSearchParameters(SwingSearch::of(d), tr("Swings further apart have the foot standing between "
+                                                          "them: the strides end and start next to the standing "
+                                                          "phase."));
+    specs << ParameterSpecs{
         ParameterSpec::number(QStringLiteral("rest_window"), d.restWindow, 0.0, kInf, QStringLiteral("s"),
                               tr("Moving average of the gyroscope norm whose minimum is the mid-stance "
                                  "(gaitmap NormZuptDetector: 0.15 s).")),
@@ -146,10 +138,6 @@ ParameterSpecs GaitParametersProcessor::parameters() const {
         ParameterSpec::number(QStringLiteral("stance_search"), d.stanceSearch, 0.0, kInf, QStringLiteral("s"),
                               tr("Next to a standing phase, the mid-stance is searched this long after the "
                                  "last swing and before the next one.")),
-        ParameterSpec::number(QStringLiteral("tc_window"), d.tcWindow, 0.01, kInf, QStringLiteral("s"),
-                              tr("Search window for toe-off before the swing peak (as gait-events).")),
-        ParameterSpec::number(QStringLiteral("ic_window"), d.icWindow, 0.01, kInf, QStringLiteral("s"),
-                              tr("Search window for initial contact after the swing peak (as gait-events).")),
         ParameterSpec::number(QStringLiteral("level_window"), di.levelWindow, 0.0, kInf, QStringLiteral("s"),
                               tr("Accelerometer average at a mid-stance that gives the up direction.")),
         ParameterSpec::number(QStringLiteral("zupt_window"), dz.stanceWindow, 0.0, kInf, QStringLiteral("s"),
@@ -176,6 +164,7 @@ ParameterSpecs GaitParametersProcessor::parameters() const {
                               tr("rts: standard deviation of the zero-velocity pseudo-measurement (OpenShoe: "
                                  "0.01 m/s).")),
     };
+    return specs;
 }
 
 QList<InputSpec> GaitParametersProcessor::inputs() const {
