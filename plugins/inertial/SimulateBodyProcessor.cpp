@@ -4,6 +4,7 @@
 #include "core/processing/Translator.h"
 #include "plugins/inertial/BodySimulator.h"
 #include "plugins/inertial/SegmentMounts.h"
+#include "plugins/inertial/SimulatedStreams.h"
 
 #include <limits>
 
@@ -12,39 +13,15 @@ namespace athlos::inertial {
 namespace {
 constexpr Translator tr{"athlos::inertial", "SimulateBodyProcessor"};
 
-Stream imuStream(const BodySimulation& sim, int s, QJsonObject attributes) {
+Stream imuStream(const BodySimulation& sim, int s, const QJsonObject& attributes) {
     const BodySensor& seg = sim.sensors[s];
-    StreamData d(sim.t.size(), 6);
-    d.t = sim.t;
-    for (std::size_t k = 0; k < sim.t.size(); ++k)
-        for (int i = 0; i < 3; ++i) {
-            d.at(k, i) = seg.acc[k][i];
-            d.at(k, 3 + i) = seg.gyr[k][i];
-        }
-    attributes.insert(QStringLiteral("segment"), bodySegmentName(static_cast<BodySegment>(s)));
-    attributes.insert(QStringLiteral("true_mount"), formatQuaternion(seg.mount));
-    return outputStream(QStringLiteral("imu"), QStringLiteral("sensor"),
-                        columnsOf({"acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z"},
-                                  {"m/s^2", "m/s^2", "m/s^2", "rad/s", "rad/s", "rad/s"}),
-                        std::move(d), std::move(attributes));
+    return simulatedImuStream(sim.t, seg.acc, seg.gyr, bodySegmentName(static_cast<BodySegment>(s)), seg.mount,
+                              attributes);
 }
 
-Stream angleStream(const BodySimulation& sim, int j, QJsonObject attributes) {
+Stream angleStream(const BodySimulation& sim, int j, const QJsonObject& attributes) {
     const BodyJointInfo info = bodyJointInfo(static_cast<BodyJoint>(j));
-    StreamData d(sim.t.size(), 3);
-    d.t = sim.t;
-    for (std::size_t k = 0; k < sim.t.size(); ++k) {
-        const AnatomicalAngles& a = sim.joints[j].angles[k];
-        d.at(k, 0) = a.flexion;
-        d.at(k, 1) = a.abduction;
-        d.at(k, 2) = a.rotation;
-    }
-    attributes.insert(QStringLiteral("joint"), jointName(info.joint));
-    attributes.insert(QStringLiteral("side"), sideName(info.side));
-    attributes.insert(QStringLiteral("reference"), true);
-    return outputStream(QStringLiteral("joint-angles"), QStringLiteral("segment"),
-                        columnsOf({"flexion", "abduction", "rotation"}, {"rad", "rad", "rad"}), std::move(d),
-                        std::move(attributes));
+    return trueJointAngles(sim.t, sim.joints[j].angles, info.joint, info.side, attributes);
 }
 
 // The mounts of one side under the segment names joint-angles looks up (jointSegments()).
@@ -203,25 +180,13 @@ Expected<std::vector<ProcessorOutput>> SimulateBodyProcessor::run(const RunConte
     for (int s = 1; s < kBodySegments; ++s)
         out.push_back({bodySegmentName(static_cast<BodySegment>(s)), imuStream(sim, s, attrs)});
     {
-        StreamData d(n, 4 * kBodySegments);
-        d.t = sim.t;
-        QStringList names, units;
+        QStringList names;
+        std::vector<const std::vector<math::Quat>*> orientations;
         for (int s = 0; s < kBodySegments; ++s) {
-            for (const char* q : {"_qw", "_qx", "_qy", "_qz"}) {
-                names << bodySegmentName(static_cast<BodySegment>(s)) + QLatin1String(q);
-                units << QStringLiteral("1");
-            }
-            for (std::size_t k = 0; k < n; ++k) {
-                const math::Quat q = math::canonical(sim.sensors[s].segment[k]);
-                d.at(k, 4 * s) = q.w();
-                d.at(k, 4 * s + 1) = q.x();
-                d.at(k, 4 * s + 2) = q.y();
-                d.at(k, 4 * s + 3) = q.z();
-            }
+            names << bodySegmentName(static_cast<BodySegment>(s));
+            orientations.push_back(&sim.sensors[s].segment);
         }
-        out.push_back(
-            {QStringLiteral("segments"), outputStream(QStringLiteral("segment-orientation"), QStringLiteral("ENU"),
-                                                      columnsOf(names, units), std::move(d), attrs)});
+        out.push_back({QStringLiteral("segments"), trueSegmentOrientations(sim.t, names, orientations, attrs)});
     }
     {
         StreamData d(n, 3 * kBodyJoints);

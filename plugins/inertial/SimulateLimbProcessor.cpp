@@ -4,6 +4,7 @@
 #include "core/processing/Translator.h"
 #include "plugins/inertial/LimbSimulator.h"
 #include "plugins/inertial/SegmentMounts.h"
+#include "plugins/inertial/SimulatedStreams.h"
 
 namespace athlos::inertial {
 
@@ -12,38 +13,9 @@ constexpr Translator tr{"athlos::inertial", "SimulateLimbProcessor"};
 
 const QStringList kSegments{QStringLiteral("pelvis"), QStringLiteral("thigh"), QStringLiteral("shank")};
 
-Stream imuStream(const LimbSimulation& sim, int s, QJsonObject attributes) {
+Stream imuStream(const LimbSimulation& sim, int s, const QJsonObject& attributes) {
     const SimulatedSegment& seg = sim.segments[s];
-    StreamData d(sim.t.size(), 6);
-    d.t = sim.t;
-    for (std::size_t k = 0; k < sim.t.size(); ++k)
-        for (int i = 0; i < 3; ++i) {
-            d.at(k, i) = seg.acc[k][i];
-            d.at(k, 3 + i) = seg.gyr[k][i];
-        }
-    attributes.insert(QStringLiteral("segment"), kSegments[s]);
-    attributes.insert(QStringLiteral("true_mount"), formatQuaternion(seg.mount));
-    return outputStream(QStringLiteral("imu"), QStringLiteral("sensor"),
-                        columnsOf({"acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z"},
-                                  {"m/s^2", "m/s^2", "m/s^2", "rad/s", "rad/s", "rad/s"}),
-                        std::move(d), std::move(attributes));
-}
-
-Stream angleStream(const LimbSimulation& sim, const std::vector<AnatomicalAngles>& angles, Joint joint, Side side,
-                   QJsonObject attributes) {
-    StreamData d(sim.t.size(), 3);
-    d.t = sim.t;
-    for (std::size_t k = 0; k < sim.t.size(); ++k) {
-        d.at(k, 0) = angles[k].flexion;
-        d.at(k, 1) = angles[k].abduction;
-        d.at(k, 2) = angles[k].rotation;
-    }
-    attributes.insert(QStringLiteral("joint"), jointName(joint));
-    attributes.insert(QStringLiteral("side"), sideName(side));
-    attributes.insert(QStringLiteral("reference"), true);
-    return outputStream(QStringLiteral("joint-angles"), QStringLiteral("segment"),
-                        columnsOf({"flexion", "abduction", "rotation"}, {"rad", "rad", "rad"}), std::move(d),
-                        std::move(attributes));
+    return simulatedImuStream(sim.t, seg.acc, seg.gyr, kSegments[s], seg.mount, attributes);
 }
 }  // namespace
 
@@ -112,31 +84,16 @@ Expected<std::vector<ProcessorOutput>> SimulateLimbProcessor::run(const RunConte
                             {"side", sideName(p.side)}, {"walk_begin", sim.walkBegin},
                             {"walk_end", sim.walkEnd},  {"squat_begin", sim.squatBegin},
                             {"squat_end", sim.squatEnd}};
-    StreamData segments(sim.t.size(), 12);
-    segments.t = sim.t;
-    QStringList names, units;
-    for (int s = 0; s < 3; ++s) {
-        for (const char* q : {"_qw", "_qx", "_qy", "_qz"}) {
-            names << kSegments[s] + QLatin1String(q);
-            units << QStringLiteral("1");
-        }
-        for (std::size_t k = 0; k < sim.t.size(); ++k) {
-            const math::Quat q = math::canonical(sim.segments[s].segment[k]);
-            segments.at(k, 4 * s) = q.w();
-            segments.at(k, 4 * s + 1) = q.x();
-            segments.at(k, 4 * s + 2) = q.y();
-            segments.at(k, 4 * s + 3) = q.z();
-        }
-    }
     std::vector<ProcessorOutput> out;
     out.push_back({QString(), imuStream(sim, 1, attrs)});
     out.push_back({QStringLiteral("shank"), imuStream(sim, 2, attrs)});
     out.push_back({QStringLiteral("pelvis"), imuStream(sim, 0, attrs)});
     out.push_back(
-        {QStringLiteral("segments"), outputStream(QStringLiteral("segment-orientation"), QStringLiteral("ENU"),
-                                                  columnsOf(names, units), std::move(segments), attrs)});
-    out.push_back({QStringLiteral("knee-reference"), angleStream(sim, sim.knee, Joint::Knee, p.side, attrs)});
-    out.push_back({QStringLiteral("hip-reference"), angleStream(sim, sim.hip, Joint::Hip, p.side, attrs)});
+        {QStringLiteral("segments"),
+         trueSegmentOrientations(
+             sim.t, kSegments, {&sim.segments[0].segment, &sim.segments[1].segment, &sim.segments[2].segment}, attrs)});
+    out.push_back({QStringLiteral("knee-reference"), trueJointAngles(sim.t, sim.knee, Joint::Knee, p.side, attrs)});
+    out.push_back({QStringLiteral("hip-reference"), trueJointAngles(sim.t, sim.hip, Joint::Hip, p.side, attrs)});
     out.push_back(
         {QStringLiteral("mounts"),
          segmentMountTable(kSegments, {sim.segments[0].mount, sim.segments[1].mount, sim.segments[2].mount}, attrs)});
