@@ -97,9 +97,10 @@ public:
     bool flag(const QString& name) const { return parameters_.value(name).toBool(); }
     QString text(const QString& name) const { return parameters_.value(name).toString(); }
 
-    // Records a stream read besides the declared inputs (e.g. the other athletes' streams of a session),
-    // "rec/stream" with its content hash now, so that its provenance lists it and `athlos batch` sees it
-    // change. Appended to the run's provenance inputs after the declared ones; a path is recorded once.
+    // Records a stream or table read besides the declared inputs (e.g. the other athletes' streams of a
+    // session, a noise-profile table), "rec/name" with its content hash now, so that its provenance lists
+    // it and `athlos batch` sees it change. Appended to the run's provenance inputs after the declared
+    // ones; a path is recorded once.
     void recordRead(const QString& path, const QByteArray& hash) const;
     const std::vector<ProvenanceInput>& extraReads() const { return extraReads_; }
 
