@@ -568,6 +568,37 @@
     </message>
 </context>
 <context>
+    <name>athlos::events::GaitSummaryProcessor</name>
+    <message>
+        <source>Gait summary (steady state)</source>
+        <translation>Gangzusammenfassung (eingeschwungener Zustand)</translation>
+    </message>
+    <message>
+        <source>Steady-state summary of the stride tables of gait-parameters, one foot or both: turning strides and the first and last strides of every straight run left out, then per parameter the mean, standard deviation and coefficient of variation per foot, and for two feet both feet together with the symmetry index (Robinson et al. 1987).</source>
+        <translation>Zusammenfassung der Doppelschritt-Tabellen von gait-parameters im eingeschwungenen Zustand, ein Fuß oder beide: Doppelschritte mit Drehung sowie der erste und letzte Doppelschritt jeder geraden Folge werden ausgelassen, dann je Parameter Mittelwert, Standardabweichung und Variationskoeffizient je Fuß und für zwei Füße beide Füße zusammen mit dem Symmetrieindex (Robinson et al. 1987).</translation>
+    </message>
+    <message>
+        <source>Strides whose |turning_angle| is larger are turns and left out (0.3 rad = 17°, the straight strides of this project&apos;s validation).</source>
+        <translation>Doppelschritte mit größerem |turning_angle| sind Drehungen und werden ausgelassen (0,3 rad = 17°, die geraden Doppelschritte der Validierung dieses Projekts).</translation>
+    </message>
+    <message>
+        <source>Strides left out at each end of a run of adjacent straight strides: gait initiation and termination (steady state, Lindemann et al. 2008).</source>
+        <translation>An jedem Ende einer Folge aneinandergrenzender gerader Doppelschritte ausgelassene Doppelschritte: Gangbeginn und Gangende (eingeschwungener Zustand, Lindemann et al. 2008).</translation>
+    </message>
+    <message>
+        <source>Stride table of one foot (gait-parameters).</source>
+        <translation>Doppelschritt-Tabelle eines Fußes (gait-parameters).</translation>
+    </message>
+    <message>
+        <source>Stride table of the other foot (gait-parameters); with it, both feet together and the symmetry index.</source>
+        <translation>Doppelschritt-Tabelle des anderen Fußes (gait-parameters); mit ihr beide Füße zusammen und der Symmetrieindex.</translation>
+    </message>
+    <message>
+        <source>One row per foot (and both): foot, strides, used, then per parameter &lt;p&gt;_mean, &lt;p&gt;_sd, &lt;p&gt;_cv (%) and, for two feet, &lt;p&gt;_si (%, in the row both).</source>
+        <translation>Eine Zeile je Fuß (und both): foot, strides, used, dann je Parameter &lt;p&gt;_mean, &lt;p&gt;_sd, &lt;p&gt;_cv (%) und bei zwei Füßen &lt;p&gt;_si (%, in der Zeile both).</translation>
+    </message>
+</context>
+<context>
     <name>athlos::events::SimulateSkiingProcessor</name>
     <message>
         <source>Simulate skiing IMUs</source>

@@ -35,6 +35,43 @@ done
 expect_ok "info" "$ATHLOS" info "$P" --json
 grep -q '"path": "walk/left-strides-trajectory"' "$WORK/out" || fail "no trajectory stream"
 grep -q '"path": "walk/left-rts-strides-trajectory"' "$WORK/out" || fail "no rts trajectory stream"
+
+# gait-summary on both feet: its steady-state mean stride length per foot must equal the mean recomputed
+# here from the exported strides (|turning_angle| <= 0.3 rad, first and last stride of every run of
+# adjacent straight strides left out), and the symmetry index in the row "both" must follow from them.
+expect_ok "gait-summary" "$ATHLOS" run "$P" gait-summary --input walk/left-strides,walk/right-strides \
+  --output walk/summary
+expect_ok "export summary" "$ATHLOS" export "$P" walk/summary --to "$WORK/summary.csv"
+head -1 "$WORK/summary.csv" | grep -q '^foot,strides \[1\],used \[1\],stride_length_mean \[m\],stride_length_sd \[m\],stride_length_cv \[%\],stride_length_si \[%\]' \
+  || fail "summary header: $(head -1 "$WORK/summary.csv")"
+[ "$(cut -d, -f1 "$WORK/summary.csv" | tail -n +2 | tr '\n' ' ')" = "left right both " ] \
+  || fail "summary rows: $(cut -d, -f1 "$WORK/summary.csv" | tr '\n' ' ')"
+steady_mean() {  # the mean stride_length of the steady strides of an exported gait-parameters CSV
+  awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) c[$i] = i; next }
+    { n++; s[n] = $c["start"]; e[n] = $c["end"]; l[n] = $c["stride_length"]; a = $c["turning_angle"];
+      ok[n] = (a <= 0.3 && a >= -0.3) }
+    END { i = 1; while (i <= n) { if (!ok[i]) { i++; continue }
+            j = i; while (j < n && ok[j + 1] && (s[j + 1] - e[j])^2 <= 1e-6) j++
+            for (k = i + 1; k < j; ++k) { sum += l[k]; m++ }
+            i = j + 1 }
+          printf "%.9f %d\n", sum / m, m }' "$1"
+}
+for foot in left right; do
+  expect_ok "export $foot strides" "$ATHLOS" export "$P" "walk/$foot-strides" --to "$WORK/$foot-default.csv"
+  read -r mean used < <(steady_mean "$WORK/$foot-default.csv")
+  row=$(grep "^$foot," "$WORK/summary.csv")
+  [ "$(echo "$row" | cut -d, -f3)" = "$used" ] || fail "$foot: used $(echo "$row" | cut -d, -f3), expected $used"
+  awk -v a="$(echo "$row" | cut -d, -f4)" -v b="$mean" 'BEGIN { exit !((a - b)^2 < 1e-12) }' \
+    || fail "$foot: summary mean $(echo "$row" | cut -d, -f4), recomputed $mean"
+done
+awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) { h = $i; sub(/ \[.*\]$/, "", h); c[h] = i }; next } { m[$1] = $c["stride_length_mean"]; si[$1] = $c["stride_length_si"] }
+  END { want = 200 * (m["left"] - m["right"]) / (m["left"] + m["right"]); if (want < 0) want = -want
+        exit !((si["both"] - want)^2 < 1e-12 && m["left"] > 1.0 && m["left"] < 1.8) }' "$WORK/summary.csv" \
+  || fail "summary symmetry index: $(cat "$WORK/summary.csv")"
+expect_fail "summary of nothing" "no steady-state stride" "$ATHLOS" run "$P" gait-summary --input walk/left-strides \
+  --output walk/x --param edge_strides=100
+expect_fail "summary of one foot twice" "is also the left foot" "$ATHLOS" run "$P" gait-summary \
+  --input walk/left-strides,walk/left-rts-strides --output walk/x
 expect_fail "unknown method" "method" "$ATHLOS" run "$P" gait-parameters --input walk/left-foot --output walk/x \
   --param method=kalman
 # An IMU stream without the gyroscope is refused with the columns it has (the events family's shared check).
