@@ -2,7 +2,8 @@
 // gait-parameters (defaults, or --param) on both feet of a gaitmap walk against its heel marker, the
 // figures of docs/validation/gait-parameters.md ("Real data with a heel marker"): reference strides
 // matched once, mean absolute stride-length error over the reference strides (heel displacement over
-// each), over the straight ones, and between the estimated strides' own mid-stances.
+// each), over the straight ones, and between the estimated strides' own mid-stances; then gait-summary's
+// steady-state mean stride length, its CV and the symmetry index against the heel's.
 #include "tools/eval/HeelEvaluation.h"
 
 #include <QCoreApplication>
@@ -53,5 +54,14 @@ int main(int argc, char** argv) {
     line("reference strides", score->error);
     line("reference strides, |turn| < 0.3 rad", score->straightError);
     line("own borders (heel moved > 0.2 m)", score->ownError);
+    std::printf("steady state (gait-summary, stride length against the heel over the same strides):\n");
+    for (const SteadyLength& s : score->steady)
+        std::printf("  %-5s %2d strides: mean %.3f m (heel %.3f m, %+.2f %%), CV %.2f %% (heel %.2f %%)%s\n",
+                    qPrintable(s.foot), s.used, s.estimatedMean, s.heelMean,
+                    100.0 * (s.estimatedMean / s.heelMean - 1.0), s.estimatedCv, s.heelCv,
+                    s.foot == QLatin1String("both") ? qPrintable(QStringLiteral(", symmetry index %1 % (heel %2 %)")
+                                                                     .arg(s.estimatedSi, 0, 'f', 2)
+                                                                     .arg(s.heelSi, 0, 'f', 2))
+                                                    : "");
     return 0;
 }

@@ -3,11 +3,15 @@
 #include "core/model/Project.h"
 #include "core/processing/ProcessorRunner.h"
 #include "plugins/events/GaitParametersProcessor.h"
+#include "plugins/events/GaitSummary.h"
+#include "plugins/events/GaitSummaryProcessor.h"
 
 #include <QFile>
 #include <QTemporaryDir>
 #include <QTextStream>
+#include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace athlos::events {
 
@@ -82,6 +86,68 @@ void scoreAgainstHeel(const std::vector<ReferenceStride>& reference, const std::
             score.ownError.push_back(s.length / truth - 1.0);
 }
 
+namespace {
+// Mean and coefficient of variation (sample SD / mean, %) of the values where use is true.
+std::pair<double, double> meanCv(const std::vector<double>& v, const std::vector<bool>& use) {
+    double sum = 0.0, ss = 0.0;
+    int n = 0;
+    for (std::size_t i = 0; i < v.size(); ++i)
+        if (use[i]) sum += v[i], ++n;
+    const double mean = sum / n;
+    for (std::size_t i = 0; i < v.size(); ++i)
+        if (use[i]) ss += (v[i] - mean) * (v[i] - mean);
+    return {mean, 100.0 * std::sqrt(ss / (n - 1)) / mean};
+}
+
+// gait-summary on walk/left-foot-strides and walk/right-foot-strides, and the heel over the same strides.
+Expected<std::vector<SteadyLength>> steadyAgainstHeel(Project& walk, const HeelTrack& heel) {
+    const GaitSummaryProcessor summary;
+    const QStringList tables{QStringLiteral("walk/left-foot-strides"), QStringLiteral("walk/right-foot-strides")};
+    auto run = runProcessor(walk, summary, RunRequest{summary.id(), tables, QStringLiteral("walk/summary"), {}});
+    if (!run) return run.error();
+    const Table* s = walk.table(QStringLiteral("walk/summary"));
+    const TableColumn *mean = s->column(QStringLiteral("stride_length_mean")),
+                      *cv = s->column(QStringLiteral("stride_length_cv")),
+                      *si = s->column(QStringLiteral("stride_length_si")), *used = s->column(QStringLiteral("used"));
+    std::vector<SteadyLength> out(3);
+    std::vector<double> allHeel;
+    std::vector<bool> allUse;
+    for (int f = 0; f < 2; ++f) {
+        const Table* t = walk.table(tables[f]);
+        FootStrides strides;
+        strides.start = t->column(QStringLiteral("start"))->numbers;
+        strides.end = t->column(QStringLiteral("end"))->numbers;
+        strides.turn = t->column(QStringLiteral("turning_angle"))->numbers;
+        const std::vector<bool> use = steadyStrides(GaitSummaryParams{}, strides);
+        const std::vector<Eigen::Vector2d>& track = heel.of(f == 0 ? QStringLiteral("left") : QStringLiteral("right"));
+        std::vector<double> lengths;
+        for (std::size_t i = 0; i < strides.start.size(); ++i) {
+            const auto at = [&](double time) {
+                return track[std::size_t(std::clamp(std::lround(time * heel.rate), 0L, long(track.size()) - 1))];
+            };
+            lengths.push_back((at(strides.end[i]) - at(strides.start[i])).norm());
+        }
+        allHeel.insert(allHeel.end(), lengths.begin(), lengths.end());
+        allUse.insert(allUse.end(), use.begin(), use.end());
+        SteadyLength& r = out[std::size_t(f)];
+        r.foot = s->column(QStringLiteral("foot"))->texts[f];
+        r.used = int(used->numbers[std::size_t(f)]);
+        r.estimatedMean = mean->numbers[std::size_t(f)];
+        r.estimatedCv = cv->numbers[std::size_t(f)];
+        std::tie(r.heelMean, r.heelCv) = meanCv(lengths, use);
+    }
+    SteadyLength& both = out[2];
+    both.foot = QStringLiteral("both");
+    both.used = int(used->numbers[2]);
+    both.estimatedMean = mean->numbers[2];
+    both.estimatedCv = cv->numbers[2];
+    both.estimatedSi = si->numbers[2];
+    std::tie(both.heelMean, both.heelCv) = meanCv(allHeel, allUse);
+    both.heelSi = 200.0 * std::abs(out[0].heelMean - out[1].heelMean) / (out[0].heelMean + out[1].heelMean);
+    return out;
+}
+}  // namespace
+
 Expected<HeelScore> evaluateGaitParametersAgainstHeel(const QString& imuCsv, const QString& mocapCsv,
                                                       const QString& bordersCsv, const QVariantMap& parameters) {
     auto heel = readGaitmapHeel(mocapCsv);
@@ -114,6 +180,9 @@ Expected<HeelScore> evaluateGaitParametersAgainstHeel(const QString& imuCsv, con
         for (std::size_t i = 0; i < s0.size(); ++i) strides.push_back({s0[i], s1[i], len[i], turn[i]});
         scoreAgainstHeel(ofFoot, heel->of(foot), heel->rate, strides, score);
     }
+    auto steady = steadyAgainstHeel(walk, *heel);
+    if (!steady) return steady.error();
+    score.steady = std::move(*steady);
     return score;
 }
 

@@ -33,12 +33,23 @@ struct EstimatedStride {
     double turningAngle = 0.0;        // rad
 };
 
+// Steady-state stride length of one foot (gait-summary's strides: GaitSummary.h) from gait-summary's
+// table and from the heel between the same strides' own start and end.
+struct SteadyLength {
+    QString foot;                                // "left", "right", "both"
+    int used = 0;                                // steady strides
+    double estimatedMean = 0.0, heelMean = 0.0;  // m
+    double estimatedCv = 0.0, heelCv = 0.0;      // %, sample SD / mean
+    double estimatedSi = 0.0, heelSi = 0.0;      // %, symmetry index (row "both" only)
+};
+
 struct HeelScore {
     int reference = 0;                  // reference strides
     int matchedOnce = 0;                // reference strides holding the midpoint of exactly one estimated stride
     std::vector<double> error;          // estimate / heel − 1 over the matched reference strides
     std::vector<double> straightError;  // the same, estimated |turning angle| < maxTurn
     std::vector<double> ownError;       // heel between each estimated stride's own start and end
+    std::vector<SteadyLength> steady;   // gait-summary (defaults) of both feet: left, right, both
 };
 
 // Scores one foot (reference: that foot's strides) and adds to score. maxTurn: rad, a straight
@@ -49,7 +60,8 @@ void scoreAgainstHeel(const std::vector<ReferenceStride>& reference, const std::
                       double maxTurn = 0.3, double minOwnLength = 0.2);
 
 // Imports imuCsv (gaitmap format, rate from the file), runs gait-parameters on each foot with
-// `parameters`, and scores it against the heel marker and the reference strides.
+// `parameters`, and scores it against the heel marker and the reference strides; then runs gait-summary
+// on both feet's tables and compares its steady-state stride length with the heel's.
 Expected<HeelScore> evaluateGaitParametersAgainstHeel(const QString& imuCsv, const QString& mocapCsv,
                                                       const QString& bordersCsv, const QVariantMap& parameters);
 
