@@ -597,6 +597,18 @@
         <source>One row per foot (and both): foot, strides, used, then per parameter &lt;p&gt;_mean, &lt;p&gt;_sd, &lt;p&gt;_cv (%) and, for two feet, &lt;p&gt;_si (%, in the row both).</source>
         <translation>Eine Zeile je Fuß (und both): foot, strides, used, dann je Parameter &lt;p&gt;_mean, &lt;p&gt;_sd, &lt;p&gt;_cv (%) und bei zwei Füßen &lt;p&gt;_si (%, in der Zeile both).</translation>
     </message>
+    <message>
+        <source>Which strides to summarise by their stride_height: all, level (|height| at most level_height), up or down (|height| at least stair_height); the others, transitions included, are left out like turns.</source>
+        <translation>Welche Doppelschritte nach ihrer stride_height zusammengefasst werden: all, level (|Höhe| höchstens level_height), up oder down (|Höhe| mindestens stair_height); die anderen, Übergänge eingeschlossen, werden wie Drehungen ausgelassen.</translation>
+    </message>
+    <message>
+        <source>Largest |stride_height| of a level stride (a third of a step; level strides drift by 0.02-0.03 m).</source>
+        <translation>Größte |stride_height| eines ebenen Doppelschritts (ein Drittel einer Stufe; ebene Doppelschritte driften um 0,02-0,03 m).</translation>
+    </message>
+    <message>
+        <source>Smallest |stride_height| of a stride on stairs: a stride climbs two steps of 0.14-0.19 m (DIN 18065), a transition (one step and a landing) less.</source>
+        <translation>Kleinste |stride_height| eines Doppelschritts auf der Treppe: ein Doppelschritt steigt zwei Stufen von 0,14-0,19 m (DIN 18065), ein Übergang (eine Stufe und ein Podest) weniger.</translation>
+    </message>
 </context>
 <context>
     <name>athlos::events::SimulateSkiingProcessor</name>

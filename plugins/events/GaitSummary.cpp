@@ -12,32 +12,61 @@ ParameterStats statsOf(const std::vector<double>& values, const std::vector<bool
     // Eq. 2 over the used, finite values.
     ParameterStats s;
     double sum = 0.0;
-    s.positive = true;
+    bool positive = true, negative = true;
     for (std::size_t i = 0; i < values.size(); ++i)
         if (use[i] && std::isfinite(values[i])) {
             sum += values[i];
-            s.positive = s.positive && values[i] > 0.0;
+            positive = positive && values[i] > 0.0;
+            negative = negative && values[i] < 0.0;
             ++s.n;
         }
-    if (s.n == 0) {
-        s.positive = false;
-        return s;
-    }
+    if (s.n == 0) return s;
+    s.sign = positive ? 1 : negative ? -1 : 0;
     s.mean = sum / s.n;
     if (s.n < 2) return s;
     double ss = 0.0;
     for (std::size_t i = 0; i < values.size(); ++i)
         if (use[i] && std::isfinite(values[i])) ss += (values[i] - s.mean) * (values[i] - s.mean);
     s.sd = std::sqrt(ss / (s.n - 1));  // eq. 2
-    if (s.positive) s.cv = 100.0 * s.sd / s.mean;
+    if (s.sign != 0) s.cv = 100.0 * s.sd / std::abs(s.mean);
     return s;
 }
 }  // namespace
 
+std::optional<Terrain> terrainOf(const QString& name) {
+    if (name == QLatin1String("all")) return Terrain::All;
+    if (name == QLatin1String("level")) return Terrain::Level;
+    if (name == QLatin1String("up")) return Terrain::Up;
+    if (name == QLatin1String("down")) return Terrain::Down;
+    return std::nullopt;
+}
+
+namespace {
+bool onTerrain(const GaitSummaryParams& params, const FootStrides& foot, std::size_t i) {
+    if (params.terrain == Terrain::All) return true;
+    const double h = i < foot.height.size() ? foot.height[i] : std::numeric_limits<double>::quiet_NaN();
+    switch (params.terrain) {
+        case Terrain::Level:
+            return std::abs(h) <= params.levelHeight;
+        case Terrain::Up:
+            return h >= params.stairHeight;
+        case Terrain::Down:
+            return h <= -params.stairHeight;
+        case Terrain::All:
+            break;
+    }
+    return true;
+}
+}  // namespace
+
+bool straightOnTerrain(const GaitSummaryParams& params, const FootStrides& foot, std::size_t i) {
+    return std::abs(foot.turn[i]) <= params.maxTurn && onTerrain(params, foot, i);  // eq. 1
+}
+
 std::vector<bool> steadyStrides(const GaitSummaryParams& params, const FootStrides& foot) {
     const std::size_t n = foot.start.size();
     std::vector<bool> use(n);
-    for (std::size_t i = 0; i < n; ++i) use[i] = std::abs(foot.turn[i]) <= params.maxTurn;  // eq. 1, turns
+    for (std::size_t i = 0; i < n; ++i) use[i] = straightOnTerrain(params, foot, i);
     // Eq. 1, run ends: the first and last edgeStrides of every run of adjacent straight strides.
     std::vector<bool> out = use;
     std::size_t i = 0;
@@ -69,6 +98,8 @@ GaitSummary summariseGait(const GaitSummaryParams& params, const std::vector<Foo
         for (std::size_t i = 0; i < f.start.size(); ++i) {
             if (std::abs(f.turn[i]) > params.maxTurn)
                 ++s.turns;
+            else if (!onTerrain(params, f, i))
+                ++s.terrain;
             else if (!use[i])
                 ++s.edges;
             else
@@ -86,6 +117,7 @@ GaitSummary summariseGait(const GaitSummaryParams& params, const std::vector<Foo
         for (const FootSummary& s : g.feet) {
             g.pooled.strides += s.strides;
             g.pooled.turns += s.turns;
+            g.pooled.terrain += s.terrain;
             g.pooled.edges += s.edges;
             g.pooled.used += s.used;
         }
@@ -105,8 +137,8 @@ GaitSummary summariseGait(const GaitSummaryParams& params, const std::vector<Foo
     if (g.feet.size() == 2)
         for (std::size_t p = 0; p < std::size_t(g.names.size()); ++p) {
             const ParameterStats &l = g.feet[0].stats[p], &r = g.feet[1].stats[p];
-            g.symmetry.push_back(l.positive && r.positive
-                                     ? 100.0 * std::abs(l.mean - r.mean) / (0.5 * (l.mean + r.mean))  // eq. 3
+            g.symmetry.push_back(l.sign != 0 && l.sign == r.sign
+                                     ? 100.0 * std::abs(l.mean - r.mean) / (0.5 * std::abs(l.mean + r.mean))  // eq. 3
                                      : std::numeric_limits<double>::quiet_NaN());
         }
     return g;

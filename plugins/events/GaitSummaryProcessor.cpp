@@ -20,7 +20,7 @@ struct Plan {
 
 // A gait-parameters table as one foot's strides: start, end and turning_angle, and every other numeric
 // column as a parameter.
-Expected<FootStrides> footOf(const RunContext& c, int input, const Table& table) {
+Expected<FootStrides> footOf(const RunContext& c, int input, const Table& table, Terrain terrain) {
     FootStrides f;
     f.foot = table.attributes.value(QStringLiteral("foot")).toString();
     if (f.foot.isEmpty()) f.foot = input == 0 ? QStringLiteral("strides") : QStringLiteral("other");
@@ -34,6 +34,10 @@ Expected<FootStrides> footOf(const RunContext& c, int input, const Table& table)
     f.start = table.column(QStringLiteral("start"))->numbers;
     f.end = table.column(QStringLiteral("end"))->numbers;
     f.turn = table.column(QStringLiteral("turning_angle"))->numbers;
+    if (const TableColumn* height = table.column(QStringLiteral("stride_height")); height && !height->isText)
+        f.height = height->numbers;
+    else if (terrain != Terrain::All)
+        return c.inputError(input, QStringLiteral("terrain: needs a numeric column stride_height"));
     for (const TableColumn& column : table.columns) {
         if (column.isText || column.name == QLatin1String("start") || column.name == QLatin1String("end") ||
             column.name == QLatin1String("turning_angle"))
@@ -49,6 +53,17 @@ Expected<Plan> makePlan(const RunContext& c) {
     Plan plan;
     plan.params.maxTurn = c.number(QStringLiteral("max_turn"));
     plan.params.edgeStrides = c.integer(QStringLiteral("edge_strides"));
+    const auto terrain = terrainOf(c.text(QStringLiteral("terrain")));
+    if (!terrain)
+        return makeError(
+            QStringLiteral("terrain: '%1' is not one of all, level, up, down").arg(c.text(QStringLiteral("terrain"))));
+    plan.params.terrain = *terrain;
+    plan.params.levelHeight = c.number(QStringLiteral("level_height"));
+    plan.params.stairHeight = c.number(QStringLiteral("stair_height"));
+    if (plan.params.stairHeight <= plan.params.levelHeight)
+        return makeError(QStringLiteral("stair_height: %1 m must be above level_height (%2 m)")
+                             .arg(plan.params.stairHeight)
+                             .arg(plan.params.levelHeight));
     for (int input = 0; input < 2; ++input) {
         const Table* table = input == 0 ? nullptr : c.table(1);
         if (input == 0) {
@@ -57,7 +72,7 @@ Expected<Plan> makePlan(const RunContext& c) {
             table = *required;
         }
         if (!table) continue;
-        auto foot = footOf(c, input, *table);
+        auto foot = footOf(c, input, *table, plan.params.terrain);
         if (!foot) return foot.error();
         plan.feet.push_back(std::move(*foot));
     }
@@ -100,6 +115,19 @@ ParameterSpecs GaitSummaryProcessor::parameters() const {
         ParameterSpec::number(QStringLiteral("max_turn"), d.maxTurn, 0.0, 3.2, QStringLiteral("rad"),
                               tr("Strides whose |turning_angle| is larger are turns and left out (0.3 rad = 17°, "
                                  "the straight strides of this project's validation).")),
+        ParameterSpec::choice(
+            QStringLiteral("terrain"),
+            {QStringLiteral("all"), QStringLiteral("level"), QStringLiteral("up"), QStringLiteral("down")},
+            QStringLiteral("all"),
+            tr("Which strides to summarise by their stride_height: all, level (|height| at "
+               "most level_height), up or down (|height| at least stair_height); the others, "
+               "transitions included, are left out like turns.")),
+        ParameterSpec::number(QStringLiteral("level_height"), d.levelHeight, 0.0, 10.0, QStringLiteral("m"),
+                              tr("Largest |stride_height| of a level stride (a third of a step; level strides "
+                                 "drift by 0.02-0.03 m).")),
+        ParameterSpec::number(QStringLiteral("stair_height"), d.stairHeight, 0.0, 10.0, QStringLiteral("m"),
+                              tr("Smallest |stride_height| of a stride on stairs: a stride climbs two steps of "
+                                 "0.14-0.19 m (DIN 18065), a transition (one step and a landing) less.")),
         ParameterSpec::integer(QStringLiteral("edge_strides"), d.edgeStrides, 0, 100,
                                tr("Strides left out at each end of a run of adjacent straight strides: gait "
                                   "initiation and termination (steady state, Lindemann et al. 2008).")),
@@ -134,11 +162,14 @@ Expected<std::vector<ProcessorOutput>> GaitSummaryProcessor::run(const RunContex
     for (std::size_t f = 0; f < g.feet.size(); ++f)
         if (g.feet[f].used == 0)
             return context.inputError(int(f), QStringLiteral("no steady-state stride: %1 stride(s), %2 turning "
-                                                             "(max_turn = %3 rad), %4 at the ends of straight "
-                                                             "runs (edge_strides = %5)")
+                                                             "(max_turn = %3 rad), %4 on other terrain (terrain = "
+                                                             "%5), %6 at the ends of straight runs "
+                                                             "(edge_strides = %7)")
                                                   .arg(g.feet[f].strides)
                                                   .arg(g.feet[f].turns)
                                                   .arg(plan->params.maxTurn)
+                                                  .arg(g.feet[f].terrain)
+                                                  .arg(context.text(QStringLiteral("terrain")))
                                                   .arg(g.feet[f].edges)
                                                   .arg(plan->params.edgeStrides));
     const bool two = g.feet.size() == 2;
@@ -157,20 +188,25 @@ Expected<std::vector<ProcessorOutput>> GaitSummaryProcessor::run(const RunContex
 
     Table table;
     table.kind = QStringLiteral("gait-summary");
-    QJsonArray turns, edges;
+    QJsonArray turns, terrain, edges;
     for (const FootSummary& s : g.feet) {
         turns.append(s.turns);
+        terrain.append(s.terrain);
         edges.append(s.edges);
     }
     table.attributes = QJsonObject{
         {QStringLiteral("max_turn"), plan->params.maxTurn},
         {QStringLiteral("edge_strides"), plan->params.edgeStrides},
         {QStringLiteral("turns_left_out"), turns},
+        {QStringLiteral("terrain"), context.text(QStringLiteral("terrain"))},
+        {QStringLiteral("level_height"), plan->params.levelHeight},
+        {QStringLiteral("stair_height"), plan->params.stairHeight},
+        {QStringLiteral("other_terrain_left_out"), terrain},
         {QStringLiteral("edges_left_out"), edges},
         {QStringLiteral("definitions"),
-         QStringLiteral("sd: sample standard deviation (n - 1); cv = 100 sd / mean; si = 100 |mean_1 - mean_2| / "
-                        "(0.5 (mean_1 + mean_2)) (Robinson et al. 1987), in the row both; cv and si only where "
-                        "every value is positive (empty otherwise)")}};
+         QStringLiteral("sd: sample standard deviation (n - 1); cv = 100 sd / |mean|; si = 100 |mean_1 - mean_2| / "
+                        "(0.5 |mean_1 + mean_2|) (Robinson et al. 1987), in the row both; cv and si only where "
+                        "every value has the same sign (empty otherwise)")}};
     table.columns = std::move(columns);
     context.report(1.0);
     return std::vector<ProcessorOutput>{{QString(), std::move(table)}};

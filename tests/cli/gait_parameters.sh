@@ -113,6 +113,18 @@ expect_ok "stairs strides" "$ATHLOS" run "$P" gait-parameters --input stairs/lef
 expect_ok "export stairs" "$ATHLOS" export "$P" stairs/left-strides --to "$WORK/stairs-left.csv"
 median=$(awk -F, 'NR > 1 { print $5 }' "$WORK/stairs-left.csv" | sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }')
 awk -v m="$median" 'BEGIN { exit !(m > 0.9 && m < 1.6) }' || fail "stair stride time $median s: the time axis is off"
+# gait-summary of the strides on the stairs (terrain=up: stride_height at least 0.2 m, two steps): the
+# mean stride height is two risers (0.12-0.19 m each), the steady stride length varies little, and
+# terrain=level finds no steady stride on this flight.
+expect_ok "stairs summary" "$ATHLOS" run "$P" gait-summary --input stairs/left-strides --output stairs/summary \
+  --param terrain=up
+expect_ok "export stairs summary" "$ATHLOS" export "$P" stairs/summary --to "$WORK/stairs-summary.csv"
+awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) { h = $i; sub(/ \[.*\]$/, "", h); c[h] = i }; next }
+  { exit !($c["used"] >= 5 && $c["stride_height_mean"] > 0.24 && $c["stride_height_mean"] < 0.38 &&
+           $c["stride_length_cv"] < 5) }' "$WORK/stairs-summary.csv" \
+  || fail "stairs summary: $(cat "$WORK/stairs-summary.csv")"
+expect_fail "stairs summary, level" "on other terrain" "$ATHLOS" run "$P" gait-summary --input stairs/left-strides \
+  --output stairs/x --param terrain=level
 expect_ok "import --rate" "$ATHLOS" import "$P" "$WORK/stairs.csv" --as stairs2 --format gaitmap --rate 204.8
 grep -q "from the motion" "$WORK/err" && fail "--rate given, yet estimated: $(cat "$WORK/err")"
 expect_fail "bad --rate" "--rate '0'" "$ATHLOS" import "$P" "$WORK/stairs.csv" --as stairs3 --format gaitmap --rate 0

@@ -109,3 +109,35 @@ TEST(GaitSummary, NoRatiosForASignedQuantity) {
     EXPECT_TRUE(std::isnan(g.symmetry[2]));
     EXPECT_FALSE(std::isnan(g.symmetry[0]));
 }
+
+TEST(GaitSummary, TerrainByStrideHeight) {
+    // Heights: 0.29 m (two steps up) for strides 0–4, 0.15 m (one step and a landing: a transition) for
+    // stride 6, −0.29 m (down) for 7–9; stride 5 turns. With terrain up the steady strides are 1–3 (the
+    // run 0–4 without its ends), down keeps stride 8 only; the transition counts for neither.
+    FootStrides f = walk(QStringLiteral("left"), 1.0);
+    f.height = {0.29, 0.29, 0.29, 0.29, 0.29, 0.0, 0.15, -0.29, -0.29, -0.29};
+    f.names << QStringLiteral("stride_height");
+    f.units << QStringLiteral("m");
+    f.parameters.push_back(f.height);
+    GaitSummaryParams up;
+    up.terrain = Terrain::Up;
+    std::vector<bool> expected = {false, true, true, true, false, false, false, false, false, false};
+    EXPECT_EQ(steadyStrides(up, f), expected);
+    GaitSummaryParams down;
+    down.terrain = Terrain::Down;
+    expected = {false, false, false, false, false, false, false, false, true, false};
+    EXPECT_EQ(steadyStrides(down, f), expected);
+    const GaitSummary g = summariseGait(down, {f});
+    EXPECT_EQ(g.feet[0].turns, 1);
+    EXPECT_EQ(g.feet[0].terrain, 6);  // 0–4 up, 6 a transition
+    EXPECT_EQ(g.feet[0].edges, 2);
+    EXPECT_EQ(g.feet[0].used, 1);
+    // A negative quantity of one sign has a CV relative to |mean|: down stairs, height −0.29 m.
+    GaitSummaryParams downAll = down;
+    downAll.edgeStrides = 0;
+    const ParameterStats& h = summariseGait(downAll, {f}).feet[0].stats[2];
+    EXPECT_NEAR(h.mean, -0.29, 1e-12);
+    EXPECT_NEAR(h.cv, 0.0, 1e-9);
+    EXPECT_EQ(terrainOf(QStringLiteral("up")), Terrain::Up);
+    EXPECT_FALSE(terrainOf(QStringLiteral("stairs")).has_value());
+}
