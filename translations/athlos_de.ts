@@ -3677,6 +3677,10 @@
         <source>Result of %1 %2</source>
         <translation>Ergebnis von %1 %2</translation>
     </message>
+    <message>
+        <source>Values</source>
+        <translation>Werte</translation>
+    </message>
 </context>
 <context>
     <name>athlos::ui::JointAnglesView</name>

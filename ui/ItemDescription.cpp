@@ -1,11 +1,13 @@
 #include "ui/ItemDescription.h"
 
 #include "core/model/Project.h"
+#include "core/model/Table.h"
 
 #include <QDir>
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QLocale>
+#include <cmath>
 
 namespace athlos::ui {
 
@@ -23,6 +25,45 @@ QString jsonText(const QJsonObject& object) {
 }
 
 QString number(double value) { return QLocale().toString(value, 'g', 10); }
+
+// A small table's values (at most kValueCells cells): one row per table row, or, when the table has
+// more columns than rows (a summary: gait-summary's 35 columns over 3 feet), one row per column.
+constexpr long long kValueCells = 5000;
+
+QString cellText(const TableColumn& c, long long r) {
+    if (c.isText) return r < c.texts.size() ? esc(c.texts[qsizetype(r)]) : QString();
+    if (r >= static_cast<long long>(c.numbers.size())) return {};
+    const double v = c.numbers[std::size_t(r)];
+    return std::isfinite(v) ? QLocale().toString(v, 'g', 5) : QString();
+}
+
+QString valuesHtml(const Table& table) {
+    const long long rows = table.rows(), columns = static_cast<long long>(table.columns.size());
+    if (rows == 0 || columns == 0 || rows * columns > kValueCells) return {};
+    const auto header = [](const TableColumn& c) {
+        return esc(c.unit.isEmpty() || c.unit == QLatin1String("1") ? c.name
+                                                                    : QStringLiteral("%1 [%2]").arg(c.name, c.unit));
+    };
+    const QString cell = QStringLiteral("<td style='padding:1px 6px; text-align:right;'>%1</td>");
+    QString html = QStringLiteral("<table style='border-collapse:collapse;'>");
+    if (columns > rows) {
+        for (const TableColumn& c : table.columns) {
+            html += QStringLiteral("<tr><td style='padding-right:10px; color:#555;'>%1</td>").arg(header(c));
+            for (long long r = 0; r < rows; ++r) html += cell.arg(cellText(c, r));
+            html += QStringLiteral("</tr>");
+        }
+    } else {
+        html += QStringLiteral("<tr>");
+        for (const TableColumn& c : table.columns) html += QStringLiteral("<th>%1</th>").arg(header(c));
+        html += QStringLiteral("</tr>");
+        for (long long r = 0; r < rows; ++r) {
+            html += QStringLiteral("<tr>");
+            for (const TableColumn& c : table.columns) html += cell.arg(cellText(c, r));
+            html += QStringLiteral("</tr>");
+        }
+    }
+    return html + QStringLiteral("</table>");
+}
 
 }  // namespace
 
@@ -101,6 +142,8 @@ QString ItemDescription::tableHtml(const QString& path, const Table& table) {
     html += row(tr("Rows"), QLocale().toString(table.rows()));
     html += row(tr("Columns"), esc(columnsText(table)));
     html += QStringLiteral("</table>");
+    if (const QString values = valuesHtml(table); !values.isEmpty())
+        html += QStringLiteral("<h4>%1</h4>").arg(esc(tr("Values"))) + values;
     if (!table.attributes.isEmpty())
         html += QStringLiteral("<h4>%1</h4><pre>%2</pre>").arg(esc(tr("Attributes")), esc(jsonText(table.attributes)));
     if (!table.provenance.isEmpty()) html += provenanceHtml(table.provenance);

@@ -1,11 +1,13 @@
 // The project tree model: recordings → streams and tables with kind, rows, columns/units, and
 // provenance of results in the tooltip.
 #include "GuiTestSupport.h"
+#include "core/model/Table.h"
 #include "ui/ItemDescription.h"
 #include "ui/ProjectTreeModel.h"
 
 #include <QAbstractItemModelTester>
 #include <QtTest>
+#include <cmath>
 
 using namespace athlos;
 using namespace athlos::ui;
@@ -17,6 +19,7 @@ private slots:
     void showsRecordingsAndItems();
     void resultsShowProvenance();
     void refreshFollowsProjectChanges();
+    void smallTablesShowTheirValues();
 };
 
 void GuiProjectTreeTest::showsRecordingsAndItems() {
@@ -91,6 +94,36 @@ void GuiProjectTreeTest::refreshFollowsProjectChanges() {
     model.setProject(nullptr);
     QCOMPARE(model.rowCount(), 0);
     QVERIFY(!model.indexOf(QStringLiteral("run1/imu")).isValid());
+}
+
+void GuiProjectTreeTest::smallTablesShowTheirValues() {
+    // A summary (more columns than rows) is shown one column per line, the feet side by side; NaN is an
+    // empty cell.
+    Table summary;
+    summary.kind = QStringLiteral("gait-summary");
+    summary.columns = {
+        TableColumn{QStringLiteral("foot"), QString(), true, {}, {QStringLiteral("left"), QStringLiteral("right")}},
+        TableColumn{QStringLiteral("used"), QStringLiteral("1"), false, {24, 23}, {}},
+        TableColumn{QStringLiteral("stride_length_mean"), QStringLiteral("m"), false, {1.37594, 1.3882}, {}},
+        TableColumn{QStringLiteral("stride_length_si"), QStringLiteral("%"), false, {std::nan(""), 0.887061}, {}}};
+    QString html = ItemDescription::tableHtml(QStringLiteral("walk/summary"), summary);
+    QVERIFY2(html.contains(QStringLiteral("Values")), qPrintable(html));
+    QVERIFY(html.contains(QStringLiteral("stride_length_mean [m]</td>")));
+    QVERIFY(html.contains(QLocale().toString(1.37594, 'g', 5)));
+    QVERIFY(html.contains(QLocale().toString(0.887061, 'g', 5)));
+    QVERIFY(html.contains(QStringLiteral(">used</td>")));  // a count: no unit "1"
+    QVERIFY(!html.contains(QStringLiteral("nan"), Qt::CaseInsensitive));
+    // A list (more rows than columns) keeps its columns as the header.
+    Table list;
+    list.kind = QStringLiteral("beacons");
+    list.columns = {TableColumn{QStringLiteral("x"), QStringLiteral("m"), false, {1, 2, 3}, {}},
+                    TableColumn{QStringLiteral("y"), QStringLiteral("m"), false, {4, 5, 6}, {}}};
+    html = ItemDescription::tableHtml(QStringLiteral("run/beacons"), list);
+    QVERIFY2(html.contains(QStringLiteral("<th>x [m]</th><th>y [m]</th>")), qPrintable(html));
+    // A large table is described, not listed.
+    list.columns[0].numbers.assign(3000, 1.0);
+    list.columns[1].numbers.assign(3000, 2.0);
+    QVERIFY(!ItemDescription::tableHtml(QStringLiteral("run/beacons"), list).contains(QStringLiteral("Values")));
 }
 
 QTEST_MAIN(GuiProjectTreeTest)
