@@ -16,9 +16,32 @@ namespace {
 
 const QStringList kAxisOrder{"acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z"};
 
-QString streamNameFor(const QString& sensor) {
+// The side a sensor name says: gaitmap's left_sensor / right_sensor, and the forms of its datasets
+// (l_lateral, r_instep, left_foot, foot_l, …): −1 left, +1 right, 0 neither.
+int sideOf(const QString& sensor) {
+    const QString s = sensor.toLower();
+    const auto is = [&](const char* word, const char* letter) {
+        const QString w = QLatin1String(word), l = QLatin1String(letter);
+        return s == w || s.startsWith(w + u'_') || s.startsWith(w + u'-') || s.endsWith(u'_' + w) ||
+               s.startsWith(l + u'_') || s.startsWith(l + u'-') || s.endsWith(u'_' + l) || s.endsWith(u'-' + l);
+    };
+    return is("left", "l") ? -1 : is("right", "r") ? 1 : 0;
+}
+
+// The stream of each sensor: left-foot and right-foot when the file has one sensor of each side (the
+// names the gait processors and their documentation use), else the sensor's own name
+// (l_ankle → l-ankle; left_sensor / right_sensor are always the feet).
+QString streamNameFor(const QString& sensor, const QStringList& sensors) {
     if (sensor == QLatin1String("left_sensor")) return QStringLiteral("left-foot");
     if (sensor == QLatin1String("right_sensor")) return QStringLiteral("right-foot");
+    int left = 0, right = 0;
+    for (const QString& s : sensors) {
+        const int side = sideOf(s);
+        left += side < 0;
+        right += side > 0;
+    }
+    if (left == 1 && right == 1 && sideOf(sensor) != 0)
+        return sideOf(sensor) < 0 ? QStringLiteral("left-foot") : QStringLiteral("right-foot");
     QString name = sensor;
     if (name.endsWith(QLatin1String("_sensor"))) name.chop(7);
     return name.replace(QLatin1Char('_'), QLatin1Char('-'));
@@ -110,8 +133,11 @@ QString GaitmapImporter::description() const {
 bool GaitmapImporter::canRead(const QString& file, const QByteArray& head) const {
     if (QFileInfo(file).suffix().toLower() != QLatin1String("csv")) return false;
     const QList<QByteArray> lines = head.split('\n');
-    return lines.size() >= 2 && (lines[0].contains("left_sensor") || lines[0].contains("right_sensor")) &&
-           (lines[1].contains("acc_") || lines[1].contains("gyr_"));
+    if (lines.size() < 2 || !(lines[1].contains("acc_") || lines[1].contains("gyr_"))) return false;
+    // gaitmap's sensor names, or any sensor row over pandas' axis row (its index cell empty or "axis").
+    const QByteArray axisIndex = lines[1].left(lines[1].indexOf(',')).trimmed().toLower();
+    return lines[0].contains("left_sensor") || lines[0].contains("right_sensor") ||
+           (lines[1].contains(',') && (axisIndex.isEmpty() || axisIndex == "axis"));
 }
 
 Expected<ImportResult> GaitmapImporter::read(const QString& file, const ImportOptions& options,
@@ -262,7 +288,7 @@ Expected<ImportResult> GaitmapImporter::read(const QString& file, const ImportOp
             return rank(a.axis) < rank(b.axis);
         });
         StreamInfo info;
-        info.name = streamNameFor(sensor);
+        info.name = streamNameFor(sensor, order);
         info.kind = QStringLiteral("imu");
         info.frame = imu->defaultFrame;
         info.attributes.insert(QStringLiteral("sampling_rate"), rate);

@@ -4,8 +4,10 @@
 //
 // Columns are found by their header names, never by position (the files differ: interleaved
 // left/right columns in imu_sample_ic_stride.csv, grouped in the stair files). One imu stream per
-// sensor, frame sensor: left_sensor → left-foot, right_sensor → right-foot, any other
-// "<name>_sensor" → <name>. gyr is converted to rad/s; an axis cell may name another unit.
+// sensor, frame sensor: left_sensor → left-foot, right_sensor → right-foot; in a file with one sensor
+// of each side by another name (l_lateral / r_lateral, left_foot / right_foot, …) those two are the
+// feet too; any other "<name>_sensor" → <name>, "l_ankle" → l-ankle (the name is kept in attribute
+// "sensor"). gyr is converted to rad/s; an axis cell may name another unit.
 //
 // The first column (empty header, or "sensor"/"axis": the level names pandas writes for a
 // MultiIndex; a third header row with only the index name is skipped) is either a sample index or time in seconds, and the file does

@@ -145,10 +145,51 @@ TEST(GaitmapImport, PandasLevelNamesInTheIndexColumn) {
     }
 }
 
+TEST(GaitmapImport, OneSensorPerSideAreTheFeetWhateverTheirNames) {
+    // gaitmap's datasets name the sensors by position (l_lateral, r_instep, …): one of each side are the
+    // left-foot and right-foot streams the gait processors expect; more than one per side keep their names.
+    QTemporaryDir dir;
+    const auto streams = [&](const QByteArray& header) {
+        QFile f(dir.filePath("s.csv"));
+        EXPECT_TRUE(f.open(QIODevice::WriteOnly));
+        f.write(header + "\n");
+        QByteArray axes = "axis", row = "0";
+        const int n = int(header.count(','));
+        for (int i = 0; i < n; ++i) axes += ",gyr_x";
+        f.write(axes + "\n");
+        for (int k = 0; k < 3; ++k) {
+            row = QByteArray::number(k);
+            for (int i = 0; i < n; ++i) row += ",1";
+            f.write(row + "\n");
+        }
+        f.close();
+        QStringList names, sensors;
+        auto r = importGaitmap(dir.filePath("s.csv"));
+        EXPECT_TRUE(r.ok()) << r.message().toStdString();
+        if (r.ok())
+            for (const auto& item : r->items) {
+                names << std::get<Stream>(item.item).info().name;
+                sensors << std::get<Stream>(item.item).info().attributes["sensor"].toString();
+            }
+        return std::make_pair(names.join(' '), sensors.join(' '));
+    };
+    EXPECT_EQ(streams("sensor,l_lateral,r_lateral"),
+              std::make_pair(QString("left-foot right-foot"), QString("l_lateral r_lateral")));
+    EXPECT_EQ(streams("sensor,Left_Foot,Right_Foot,chest").first, "left-foot right-foot chest");
+    EXPECT_EQ(streams("sensor,foot_r,foot_l").first, "right-foot left-foot");
+    EXPECT_EQ(streams("sensor,l_ankle,l_lateral,r_ankle,r_lateral").first, "l-ankle l-lateral r-ankle r-lateral");
+    EXPECT_EQ(streams("sensor,left_sensor,l_ankle,right_sensor").first, "left-foot l-ankle right-foot");
+    EXPECT_EQ(streams("sensor,lateral,instep").first, "lateral instep");
+}
+
 TEST(GaitmapImport, DetectsOnlyGaitmapFiles) {
     GaitmapImporter importer;
     EXPECT_TRUE(importer.canRead("walk.csv", ",left_sensor,right_sensor\n,acc_x,acc_x\n0,1,2\n"));
     EXPECT_FALSE(importer.canRead("imu.csv", "t,acc_x,acc_y\n0,1,2\n"));
+    // Other sensor names over pandas' axis row (gaitmap's datasets: l_lateral, r_instep, …).
+    EXPECT_TRUE(importer.canRead("walk.csv", "sensor,l_lateral,r_lateral\naxis,acc_x,acc_x\n0,1,2\n"));
+    EXPECT_TRUE(importer.canRead("walk.csv", ",l_lateral,r_lateral\n,gyr_x,gyr_x\n0,1,2\n"));
+    EXPECT_FALSE(importer.canRead("imu.csv", "sensor,a,b\nt,acc_x,acc_x\n0,1,2\n"));
     EXPECT_FALSE(importer.canRead("walk.h5", ",left_sensor\n,acc_x\n"));
 }
 
