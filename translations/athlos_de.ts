@@ -566,6 +566,10 @@
         <source>rts: accelerometer process noise per sample in quiet phases: sensor noise and vibration (OpenShoe: 0.01 m/s^2 for white noise alone); acc_noise_dynamic adds the errors that come with the motion.</source>
         <translation>rts: Prozessrauschen des Beschleunigungsmessers je Sample in ruhigen Phasen: Sensorrauschen und Vibration (OpenShoe: 0,01 m/s^2 für weißes Rauschen allein); acc_noise_dynamic fügt die Fehler hinzu, die mit der Bewegung kommen.</translation>
     </message>
+    <message>
+        <source>Longest run of missing samples (empty cells, NaN) bridged by linear interpolation (0.05 s: 5 % of a walking stride); a longer one is refused.</source>
+        <translation>Längste Folge fehlender Abtastwerte (leere Zellen, NaN), die linear interpoliert überbrückt wird (0,05 s: 5 % eines Doppelschritts beim Gehen); eine längere wird abgelehnt.</translation>
+    </message>
 </context>
 <context>
     <name>athlos::events::GaitSummaryProcessor</name>

@@ -3,6 +3,7 @@
 #include "core/processing/OutputStreams.h"
 #include "core/processing/Translator.h"
 #include "plugins/events/GaitEventsProcessor.h"
+#include "plugins/events/ImuGaps.h"
 #include "plugins/events/MediolateralAxis.h"
 #include "plugins/events/StaticGyroBias.h"
 #include "plugins/events/StrideIntegrator.h"
@@ -28,6 +29,7 @@ struct Plan {
     bool smoother = false;  // method = rts
     ZuptStrideParams zupt;
     double staticThreshold = 0.0, staticDuration = 0.0;
+    double maxGap = 0.0;   // s: longest run of missing samples bridged (ImuGaps.h)
     QString foot, mlAxis;  // mlAxis: the parameter (x, y, z or auto), resolved on the data in run()
 };
 
@@ -65,6 +67,7 @@ Expected<Plan> makePlan(const RunContext& c) {
     plan.staticThreshold = p.staticThreshold = c.number(QStringLiteral("static_threshold"));
     p.standDuration = c.number(QStringLiteral("stand_duration"));
     plan.staticDuration = c.number(QStringLiteral("static_duration"));
+    plan.maxGap = c.number(QStringLiteral("max_gap"));
     auto input = c.samples(0);
     if (!input) return input.error();
     plan.data = input->data;
@@ -135,6 +138,9 @@ ParameterSpecs GaitParametersProcessor::parameters() const {
                                  "than the foot-flat phase of slow walking.")),
         ParameterSpec::number(QStringLiteral("static_duration"), 1.0, 0.0, kInf, QStringLiteral("s"),
                               tr("Shortest standing phase used for the gyroscope bias; 0: no bias removal.")),
+        ParameterSpec::number(QStringLiteral("max_gap"), 0.05, 0.0, kInf, QStringLiteral("s"),
+                              tr("Longest run of missing samples (empty cells, NaN) bridged by linear interpolation "
+                                 "(0.05 s: 5 % of a walking stride); a longer one is refused.")),
         ParameterSpec::number(QStringLiteral("stance_search"), d.stanceSearch, 0.0, kInf, QStringLiteral("s"),
                               tr("Next to a standing phase, the mid-stance is searched this long after the "
                                  "last swing and before the next one.")),
@@ -190,16 +196,25 @@ Expected<std::vector<ProcessorOutput>> GaitParametersProcessor::run(const RunCon
     auto plan = makePlan(context);
     if (!plan) return plan.error();
     const StreamData& d = *plan->data;
-    const auto stride = std::size_t(d.columns);
-    const double* acc = d.values.data() + plan->acc;
+    // acc_x..z, gyr_x..z per sample, missing samples bridged (ImuGaps.h).
+    constexpr std::size_t stride = 6;
+    std::vector<double> imu(stride * d.rows());
+    for (std::size_t k = 0; k < d.rows(); ++k)
+        for (int i = 0; i < 3; ++i) {
+            imu[stride * k + std::size_t(i)] = d.at(k, plan->acc + i);
+            imu[stride * k + 3 + std::size_t(i)] = d.at(k, plan->gyr + i);
+        }
+    const auto gaps = fillShortGaps(imu, stride, d.t, plan->maxGap);
+    if (!gaps) return context.inputError(0, gaps.message());
+    const double* acc = imu.data();
     // The gyroscope without its bias (from the standing phases), three columns per sample.
     const StaticGyroBias bias =
-        estimateStaticGyroBias(d.t.data(), d.values.data() + plan->gyr, d.rows(), stride, plan->segmentation.restWindow,
+        estimateStaticGyroBias(d.t.data(), imu.data() + 3, d.rows(), stride, plan->segmentation.restWindow,
                                plan->staticThreshold, plan->staticDuration);
     std::vector<double> unbiased(3 * d.rows());
     for (std::size_t k = 0; k < d.rows(); ++k)
         for (int i = 0; i < 3; ++i)
-            unbiased[3 * k + std::size_t(i)] = d.values[k * stride + std::size_t(plan->gyr + i)] - bias.bias[i];
+            unbiased[3 * k + std::size_t(i)] = imu[stride * k + 3 + std::size_t(i)] - bias.bias[i];
     const double* gyr = unbiased.data();
     const auto ml = mediolateralAxis(plan->mlAxis, gyr, d.rows(), 3);
     if (!ml) return makeError(QStringLiteral("ml_axis: '%1' is not one of auto, x, y, z").arg(plan->mlAxis));
@@ -244,6 +259,8 @@ Expected<std::vector<ProcessorOutput>> GaitParametersProcessor::run(const RunCon
                     {QStringLiteral("ml_axis"), QJsonArray{ml->axis.x(), ml->axis.y(), ml->axis.z()}},
                     {QStringLiteral("gyr_bias"), QJsonArray{bias.bias.x(), bias.bias.y(), bias.bias.z()}},
                     {QStringLiteral("gyr_bias_static_time"), bias.staticTime},
+                    {QStringLiteral("missing_samples_filled"), double(gaps->samples)},
+                    {QStringLiteral("missing_runs_filled"), double(gaps->runs)},
                     {QStringLiteral("strides"), int(trajectory.strides.size())},
                     {QStringLiteral("stride_definition"), QStringLiteral("mid-stance to mid-stance")},
                     {QStringLiteral("method"), plan->smoother ? QStringLiteral("rts") : QStringLiteral("instant")},

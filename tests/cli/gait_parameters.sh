@@ -82,6 +82,24 @@ expect_fail "gait-parameters without gyroscope" "needs adjacent columns gyr_x, g
 expect_fail "gait-events without gyroscope" "needs adjacent columns gyr_x, gyr_y, gyr_z \(it has: acc_x, acc_y, acc_z\)" \
   "$ATHLOS" run "$P" gait-events --input acc/imu --output acc/x
 
+# Empty cells (NaN on import) in a few samples are bridged: the strides stay within 5 mm of the complete
+# walk's; a gap of 0.5 s is refused with its times and max_gap.
+awk -F, 'BEGIN { OFS = "," } NR == 1000 || NR == 1500 || NR == 2500 { $2 = ""; $8 = "" } { print }' "$WORK/walk.csv" \
+  > "$WORK/holes.csv"
+expect_ok "import with holes" "$ATHLOS" import "$P" "$WORK/holes.csv" --as holes --format gaitmap
+expect_ok "strides with holes" "$ATHLOS" run "$P" gait-parameters --input holes/left-foot --output holes/left-strides
+expect_ok "export with holes" "$ATHLOS" export "$P" holes/left-strides --to "$WORK/holes-left.csv"
+expect_ok "export without holes" "$ATHLOS" export "$P" walk/left-strides --to "$WORK/whole-left.csv"
+result=$(awk -F, 'NR == FNR { l[FNR] = $3; n = FNR; next }
+  FNR > 1 { d = $3 - l[FNR]; if (d < 0) d = -d; if (d > 0.005) bad = bad sprintf("row %d: %s against %s; ", FNR, $3, l[FNR]) }
+  END { if (FNR != n) bad = bad sprintf("%d rows against %d", FNR, n); print bad ? bad : "ok" }' \
+  "$WORK/whole-left.csv" "$WORK/holes-left.csv")
+[ "$result" = "ok" ] || fail "strides with holes: $result"
+awk -F, 'BEGIN { OFS = "," } NR >= 1000 && NR < 1051 { $2 = "" } { print }' "$WORK/walk.csv" > "$WORK/gap.csv"
+expect_ok "import with a gap" "$ATHLOS" import "$P" "$WORK/gap.csv" --as gap --format gaitmap
+expect_fail "a gap too long" "no complete IMU sample from t = .* longer than max_gap = 0.05 s" \
+  "$ATHLOS" run "$P" gait-parameters --input gap/left-foot --output gap/left-strides
+
 # Another mounting (the held-out walk may come from other devices): the same walk in the raw frames of
 # gaitmap's lateral NilsPods (its extract_example_data.py: raw = Rz(±90°) Rx(±90°) aligned, so x points
 # up and the medio-lateral axis is z). The default ml_axis=auto must give the same strides and lengths.
