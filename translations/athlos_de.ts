@@ -578,10 +578,6 @@
         <translation>Gangzusammenfassung (eingeschwungener Zustand)</translation>
     </message>
     <message>
-        <source>Steady-state summary of the stride tables of gait-parameters, one foot or both: turning strides and the first and last strides of every straight run left out, then per parameter the mean, standard deviation and coefficient of variation per foot, and for two feet both feet together with the symmetry index (Robinson et al. 1987).</source>
-        <translation>Zusammenfassung der Doppelschritt-Tabellen von gait-parameters im eingeschwungenen Zustand, ein Fuß oder beide: Doppelschritte mit Drehung sowie der erste und letzte Doppelschritt jeder geraden Folge werden ausgelassen, dann je Parameter Mittelwert, Standardabweichung und Variationskoeffizient je Fuß und für zwei Füße beide Füße zusammen mit dem Symmetrieindex (Robinson et al. 1987).</translation>
-    </message>
-    <message>
         <source>Strides whose |turning_angle| is larger are turns and left out (0.3 rad = 17°, the straight strides of this project&apos;s validation).</source>
         <translation>Doppelschritte mit größerem |turning_angle| sind Drehungen und werden ausgelassen (0,3 rad = 17°, die geraden Doppelschritte der Validierung dieses Projekts).</translation>
     </message>
@@ -612,6 +608,10 @@
     <message>
         <source>Smallest |stride_height| of a stride on stairs: a stride climbs two steps of 0.14-0.19 m (DIN 18065), a transition (one step and a landing) less.</source>
         <translation>Kleinste |stride_height| eines Doppelschritts auf der Treppe: ein Doppelschritt steigt zwei Stufen von 0,14-0,19 m (DIN 18065), ein Übergang (eine Stufe und ein Podest) weniger.</translation>
+    </message>
+    <message>
+        <source>Steady-state summary of the stride tables of gait-parameters, one foot or both: turning strides, strides on other ground than the chosen terrain (level, stairs up or down) and the first and last strides of every straight run left out, then per parameter the mean, standard deviation and coefficient of variation per foot, and for two feet both feet together with the symmetry index (Robinson et al. 1987).</source>
+        <translation>Zusammenfassung der Doppelschritt-Tabellen von gait-parameters im eingeschwungenen Zustand, ein Fuß oder beide: Doppelschritte mit Drehung, Doppelschritte auf anderem Untergrund als dem gewählten (eben, Treppe auf oder ab) sowie der erste und letzte Doppelschritt jeder geraden Folge werden ausgelassen, dann je Parameter Mittelwert, Standardabweichung und Variationskoeffizient je Fuß und für zwei Füße beide Füße zusammen mit dem Symmetrieindex (Robinson et al. 1987).</translation>
     </message>
 </context>
 <context>

@@ -1,5 +1,6 @@
 #include "plugins/events/GaitSummary.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace athlos::events {
@@ -57,11 +58,12 @@ bool onTerrain(const GaitSummaryParams& params, const FootStrides& foot, std::si
     }
     return true;
 }
-}  // namespace
 
+// Eq. 1 without the run ends: straight and on the chosen terrain.
 bool straightOnTerrain(const GaitSummaryParams& params, const FootStrides& foot, std::size_t i) {
-    return std::abs(foot.turn[i]) <= params.maxTurn && onTerrain(params, foot, i);  // eq. 1
+    return std::abs(foot.turn[i]) <= params.maxTurn && onTerrain(params, foot, i);
 }
+}  // namespace
 
 std::vector<bool> steadyStrides(const GaitSummaryParams& params, const FootStrides& foot) {
     const std::size_t n = foot.start.size();
@@ -133,14 +135,13 @@ GaitSummary summariseGait(const GaitSummaryParams& params, const std::vector<Foo
             }
             g.pooled.stats.push_back(statsOf(values, used));
         }
-    }
-    if (g.feet.size() == 2)
         for (std::size_t p = 0; p < std::size_t(g.names.size()); ++p) {
             const ParameterStats &l = g.feet[0].stats[p], &r = g.feet[1].stats[p];
             g.symmetry.push_back(l.sign != 0 && l.sign == r.sign
                                      ? 100.0 * std::abs(l.mean - r.mean) / (0.5 * std::abs(l.mean + r.mean))  // eq. 3
                                      : std::numeric_limits<double>::quiet_NaN());
         }
+    }
     return g;
 }
 

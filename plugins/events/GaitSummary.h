@@ -73,8 +73,6 @@ struct GaitSummary {
     std::vector<double> symmetry;
 };
 
-// Step 1 without the run ends: is stride i straight and on the chosen terrain?
-bool straightOnTerrain(const GaitSummaryParams& params, const FootStrides& foot, std::size_t i);
 // Step 1: which strides of `foot` count (true) for the summary.
 std::vector<bool> steadyStrides(const GaitSummaryParams& params, const FootStrides& foot);
 

@@ -5,6 +5,7 @@
 
 #include <QJsonArray>
 #include <cmath>
+#include <limits>
 
 namespace athlos::events {
 
@@ -103,10 +104,11 @@ QString GaitSummaryProcessor::name() const { return tr("Gait summary (steady sta
 
 QString GaitSummaryProcessor::description() const {
     return tr(
-        "Steady-state summary of the stride tables of gait-parameters, one foot or both: turning strides and "
-        "the first and last strides of every straight run left out, then per parameter the mean, standard "
-        "deviation and coefficient of variation per foot, and for two feet both feet together with the "
-        "symmetry index (Robinson et al. 1987).");
+        "Steady-state summary of the stride tables of gait-parameters, one foot or both: turning strides, "
+        "strides on other ground than the chosen terrain (level, stairs up or down) and the first and last "
+        "strides of every straight run left out, then per parameter the mean, standard deviation and "
+        "coefficient of variation per foot, and for two feet both feet together with the symmetry index "
+        "(Robinson et al. 1987).");
 }
 
 ParameterSpecs GaitSummaryProcessor::parameters() const {
