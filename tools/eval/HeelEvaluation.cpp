@@ -1,56 +1,63 @@
 #include "tools/eval/HeelEvaluation.h"
 
+#include "core/io/CsvReader.h"
 #include "core/model/Project.h"
 #include "core/processing/ProcessorRunner.h"
 #include "plugins/events/GaitParametersProcessor.h"
 #include "plugins/events/GaitSummary.h"
 #include "plugins/events/GaitSummaryProcessor.h"
 
-#include <QFile>
 #include <QTemporaryDir>
-#include <QTextStream>
 #include <algorithm>
 #include <cmath>
-#include <tuple>
 
 namespace athlos::events {
 
 Expected<HeelTrack> readGaitmapHeel(const QString& path, double rate) {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
-        return makeError(QStringLiteral("%1: %2").arg(path, file.errorString()));
-    QTextStream in(&file);
-    const QStringList markers = in.readLine().trimmed().split(QLatin1Char(','));
-    const QStringList axes = in.readLine().trimmed().split(QLatin1Char(','));
+    MappedFile file;
+    if (Status opened = file.open(path); !opened) return opened.error();
+    CsvReader reader(file.begin(), file.end());
+    QStringList markers, axes;
+    if (!reader.readHeader(markers) || !reader.readHeader(axes))
+        return makeError(QStringLiteral("%1: expected two header rows (marker, axis)").arg(path));
     const auto column = [&](const char* marker, const char* axis) {
         for (int i = 0; i < markers.size() && i < axes.size(); ++i)
             if (markers[i] == QLatin1String(marker) && axes[i] == QLatin1String(axis)) return i;
         return -1;
     };
-    const int lx = column("L_FCC", "x"), ly = column("L_FCC", "y"), rx = column("R_FCC", "x"),
-              ry = column("R_FCC", "y");
-    if (lx < 0 || ly < 0 || rx < 0 || ry < 0)
+    const int cols[4] = {column("L_FCC", "x"), column("L_FCC", "y"), column("R_FCC", "x"), column("R_FCC", "y")};
+    if (*std::min_element(cols, cols + 4) < 0)
         return makeError(QStringLiteral("%1:1-2: expected the heel markers L_FCC and R_FCC with x and y").arg(path));
+    const int last = *std::max_element(cols, cols + 4);
     HeelTrack track;
     track.rate = rate;
-    for (int line = 3; !in.atEnd(); ++line) {
-        const QString text = in.readLine().trimmed();
-        if (text.isEmpty()) continue;
-        const QStringList f = text.split(QLatin1Char(','));
+    std::string rest;
+    while (reader.nextRecord()) {
+        // A marker the cameras lost is an empty cell (NaN): the strides it touches are not scored.
         double v[4];
-        const int cols[4] = {lx, ly, rx, ry};
-        for (int j = 0; j < 4; ++j) {
-            bool ok = cols[j] < f.size();
-            v[j] = ok ? f[cols[j]].toDouble(&ok) : 0.0;
-            if (!ok)
-                return makeError(QStringLiteral("%1:%2:%3: '%4' is not a number")
+        for (int i = 0; i <= last; ++i) {
+            double x = 0.0;
+            const CsvReader::Field f = reader.number(x);
+            if (f == CsvReader::Field::Missing)
+                return makeError(QStringLiteral("%1:%2: %3 fields, the heel markers need %4")
                                      .arg(path)
-                                     .arg(line)
-                                     .arg(cols[j] + 1)
-                                     .arg(cols[j] < f.size() ? f[cols[j]] : QString()));
+                                     .arg(reader.line())
+                                     .arg(reader.fieldsOnLine())
+                                     .arg(last + 1));
+            if (f == CsvReader::Field::Invalid)
+                return makeError(
+                    QStringLiteral("%1:%2:%3: '%4' is not a number")
+                        .arg(path)
+                        .arg(reader.line())
+                        .arg(i + 1)
+                        .arg(QString::fromUtf8(reader.lastField().data(), qsizetype(reader.lastField().size()))));
+            for (int j = 0; j < 4; ++j)
+                if (cols[j] == i) v[j] = x / 1000.0;  // mm → m
         }
-        track.left.emplace_back(v[0] / 1000.0, v[1] / 1000.0);
-        track.right.emplace_back(v[2] / 1000.0, v[3] / 1000.0);
+        while (reader.text(rest)) {}
+        reader.finishRecord();
+        track.left.emplace_back(v[0], v[1]);
+        track.right.emplace_back(v[2], v[3]);
     }
     return track;
 }
@@ -87,63 +94,51 @@ void scoreAgainstHeel(const std::vector<ReferenceStride>& reference, const std::
 }
 
 namespace {
-// Mean and coefficient of variation (sample SD / mean, %) of the values where use is true.
-std::pair<double, double> meanCv(const std::vector<double>& v, const std::vector<bool>& use) {
-    double sum = 0.0, ss = 0.0;
-    int n = 0;
-    for (std::size_t i = 0; i < v.size(); ++i)
-        if (use[i]) sum += v[i], ++n;
-    const double mean = sum / n;
-    for (std::size_t i = 0; i < v.size(); ++i)
-        if (use[i]) ss += (v[i] - mean) * (v[i] - mean);
-    return {mean, 100.0 * std::sqrt(ss / (n - 1)) / mean};
-}
-
-// gait-summary on walk/left-foot-strides and walk/right-foot-strides, and the heel over the same strides.
+// gait-summary on walk/left-foot-strides and walk/right-foot-strides; then the same summary (summariseGait,
+// default parameters, so the same steady strides) of the heel's displacement between each stride's own
+// start and end, with NaN where the marker was lost.
 Expected<std::vector<SteadyLength>> steadyAgainstHeel(Project& walk, const HeelTrack& heel) {
     const GaitSummaryProcessor summary;
     const QStringList tables{QStringLiteral("walk/left-foot-strides"), QStringLiteral("walk/right-foot-strides")};
     auto run = runProcessor(walk, summary, RunRequest{summary.id(), tables, QStringLiteral("walk/summary"), {}});
     if (!run) return run.error();
+    std::vector<FootStrides> heels;
+    for (int f = 0; f < 2; ++f) {
+        const Table* t = walk.table(tables[f]);
+        FootStrides h;
+        h.foot = f == 0 ? QStringLiteral("left") : QStringLiteral("right");
+        h.start = t->column(QStringLiteral("start"))->numbers;
+        h.end = t->column(QStringLiteral("end"))->numbers;
+        h.turn = t->column(QStringLiteral("turning_angle"))->numbers;
+        h.names = {QStringLiteral("stride_length")};
+        h.units = {QStringLiteral("m")};
+        const std::vector<Eigen::Vector2d>& track = heel.of(h.foot);
+        const auto at = [&](double time) {
+            return track[std::size_t(std::clamp(std::lround(time * heel.rate), 0L, long(track.size()) - 1))];
+        };
+        h.parameters.emplace_back();
+        for (std::size_t i = 0; i < h.start.size(); ++i)
+            h.parameters[0].push_back((at(h.end[i]) - at(h.start[i])).norm());
+        heels.push_back(std::move(h));
+    }
+    const GaitSummary truth = summariseGait(GaitSummaryParams{}, heels);
     const Table* s = walk.table(QStringLiteral("walk/summary"));
     const TableColumn *mean = s->column(QStringLiteral("stride_length_mean")),
                       *cv = s->column(QStringLiteral("stride_length_cv")),
                       *si = s->column(QStringLiteral("stride_length_si")), *used = s->column(QStringLiteral("used"));
     std::vector<SteadyLength> out(3);
-    std::vector<double> allHeel;
-    std::vector<bool> allUse;
-    for (int f = 0; f < 2; ++f) {
-        const Table* t = walk.table(tables[f]);
-        FootStrides strides;
-        strides.start = t->column(QStringLiteral("start"))->numbers;
-        strides.end = t->column(QStringLiteral("end"))->numbers;
-        strides.turn = t->column(QStringLiteral("turning_angle"))->numbers;
-        const std::vector<bool> use = steadyStrides(GaitSummaryParams{}, strides);
-        const std::vector<Eigen::Vector2d>& track = heel.of(f == 0 ? QStringLiteral("left") : QStringLiteral("right"));
-        std::vector<double> lengths;
-        for (std::size_t i = 0; i < strides.start.size(); ++i) {
-            const auto at = [&](double time) {
-                return track[std::size_t(std::clamp(std::lround(time * heel.rate), 0L, long(track.size()) - 1))];
-            };
-            lengths.push_back((at(strides.end[i]) - at(strides.start[i])).norm());
-        }
-        allHeel.insert(allHeel.end(), lengths.begin(), lengths.end());
-        allUse.insert(allUse.end(), use.begin(), use.end());
-        SteadyLength& r = out[std::size_t(f)];
-        r.foot = s->column(QStringLiteral("foot"))->texts[f];
-        r.used = int(used->numbers[std::size_t(f)]);
-        r.estimatedMean = mean->numbers[std::size_t(f)];
-        r.estimatedCv = cv->numbers[std::size_t(f)];
-        std::tie(r.heelMean, r.heelCv) = meanCv(lengths, use);
+    for (std::size_t r = 0; r < 3; ++r) {
+        const FootSummary& h = r < 2 ? truth.feet[r] : truth.pooled;
+        SteadyLength& row = out[r];
+        row.foot = s->column(QStringLiteral("foot"))->texts[qsizetype(r)];
+        row.used = int(used->numbers[r]);
+        row.estimatedMean = mean->numbers[r];
+        row.estimatedCv = cv->numbers[r];
+        row.heelMean = h.stats[0].mean;
+        row.heelCv = h.stats[0].cv;
     }
-    SteadyLength& both = out[2];
-    both.foot = QStringLiteral("both");
-    both.used = int(used->numbers[2]);
-    both.estimatedMean = mean->numbers[2];
-    both.estimatedCv = cv->numbers[2];
-    both.estimatedSi = si->numbers[2];
-    std::tie(both.heelMean, both.heelCv) = meanCv(allHeel, allUse);
-    both.heelSi = 200.0 * std::abs(out[0].heelMean - out[1].heelMean) / (out[0].heelMean + out[1].heelMean);
+    out[2].estimatedSi = si->numbers[2];
+    out[2].heelSi = truth.symmetry[0];
     return out;
 }
 }  // namespace

@@ -6,6 +6,7 @@
 #include <QFile>
 #include <QTemporaryDir>
 #include <QTextStream>
+#include <cmath>
 #include <gtest/gtest.h>
 
 using namespace athlos::events;
@@ -72,4 +73,33 @@ TEST(HeelEvaluation, RefusesAFileWithoutHeelMarkers) {
     auto heel = readGaitmapHeel(path);
     ASSERT_FALSE(heel.ok());
     EXPECT_TRUE(heel.message().contains(QStringLiteral("L_FCC"))) << qPrintable(heel.message());
+}
+
+TEST(HeelEvaluation, ALostMarkerIsNotScoredAndABadCellIsNamed) {
+    // An empty cell (the cameras lost the marker) reads as NaN, and a stride ending there is not scored;
+    // text in a cell is refused with its line and column.
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("gap.csv"));
+    QFile f(path);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly | QIODevice::Text));
+    f.write(",L_FCC,L_FCC,R_FCC,R_FCC\n,x,y,x,y\n0,0,0,5,5\n1,,0,5,5\n2,1400,0,5,5\n");
+    f.close();
+    auto heel = readGaitmapHeel(path, 1.0);
+    ASSERT_TRUE(heel.ok()) << qPrintable(heel.message());
+    EXPECT_TRUE(std::isnan(heel->left[1].x()));
+    HeelScore lost, kept;
+    scoreAgainstHeel({{QStringLiteral("left"), 0.0, 1.0}}, heel->left, 1.0, {{0.0, 0.9, 1.4, 0.0}}, lost);
+    EXPECT_EQ(lost.matchedOnce, 1);
+    EXPECT_TRUE(lost.error.empty());  // matched, but its heel length is unknown
+    scoreAgainstHeel({{QStringLiteral("left"), 0.0, 2.0}}, heel->left, 1.0, {{0.0, 2.0, 1.4, 0.0}}, kept);
+    ASSERT_EQ(kept.error.size(), 1u);
+    EXPECT_NEAR(kept.error[0], 0.0, 1e-12);
+    QFile bad(dir.filePath(QStringLiteral("bad.csv")));
+    ASSERT_TRUE(bad.open(QIODevice::WriteOnly | QIODevice::Text));
+    bad.write(",L_FCC,L_FCC,R_FCC,R_FCC\n,x,y,x,y\n0,0,0,5,5\n1,0,x,5,5\n");
+    bad.close();
+    auto refused = readGaitmapHeel(bad.fileName());
+    ASSERT_FALSE(refused.ok());
+    EXPECT_TRUE(refused.message().contains(QStringLiteral("bad.csv:4:3: 'x' is not a number")))
+        << qPrintable(refused.message());
 }
