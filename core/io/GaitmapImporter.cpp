@@ -17,13 +17,14 @@ namespace {
 const QStringList kAxisOrder{"acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z"};
 
 // The side a sensor name says: gaitmap's left_sensor / right_sensor, and the forms of its datasets
-// (l_lateral, r_instep, left_foot, foot_l, …): −1 left, +1 right, 0 neither.
+// and of other exports (l_lateral, r_instep, left_foot, foot_l, LeftFoot, footRight, …): −1 left, +1
+// right, 0 neither. The word may start or end the name; the single letter needs a separator.
 int sideOf(const QString& sensor) {
     const QString s = sensor.toLower();
     const auto is = [&](const char* word, const char* letter) {
         const QString w = QLatin1String(word), l = QLatin1String(letter);
-        return s == w || s.startsWith(w + u'_') || s.startsWith(w + u'-') || s.endsWith(u'_' + w) ||
-               s.startsWith(l + u'_') || s.startsWith(l + u'-') || s.endsWith(u'_' + l) || s.endsWith(u'-' + l);
+        return s.startsWith(w) || s.endsWith(w) || s.startsWith(l + u'_') || s.startsWith(l + u'-') ||
+               s.endsWith(u'_' + l) || s.endsWith(u'-' + l);
     };
     return is("left", "l") ? -1 : is("right", "r") ? 1 : 0;
 }

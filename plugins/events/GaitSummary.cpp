@@ -92,8 +92,9 @@ GaitSummary summariseGait(const GaitSummaryParams& params, const std::vector<Foo
     if (feet.empty()) return g;
     g.names = feet.front().names;
     g.units = feet.front().units;
+    std::vector<std::vector<bool>> uses;
     for (const FootStrides& f : feet) {
-        const std::vector<bool> use = steadyStrides(params, f);
+        const std::vector<bool>& use = uses.emplace_back(steadyStrides(params, f));
         FootSummary s;
         s.foot = f.foot;
         s.strides = int(f.start.size());
@@ -115,7 +116,6 @@ GaitSummary summariseGait(const GaitSummaryParams& params, const std::vector<Foo
     }
     if (g.feet.size() == 2) {
         g.pooled.foot = QStringLiteral("both");
-        std::vector<bool> use[2] = {steadyStrides(params, feet[0]), steadyStrides(params, feet[1])};
         for (const FootSummary& s : g.feet) {
             g.pooled.strides += s.strides;
             g.pooled.turns += s.turns;
@@ -131,7 +131,7 @@ GaitSummary summariseGait(const GaitSummaryParams& params, const std::vector<Foo
                 if (p < 0) continue;
                 const std::vector<double>& v = feet[std::size_t(f)].parameters[std::size_t(p)];
                 values.insert(values.end(), v.begin(), v.end());
-                used.insert(used.end(), use[f].begin(), use[f].end());
+                used.insert(used.end(), uses[std::size_t(f)].begin(), uses[std::size_t(f)].end());
             }
             g.pooled.stats.push_back(statsOf(values, used));
         }

@@ -65,15 +65,12 @@ Expected<Plan> makePlan(const RunContext& c) {
         return makeError(QStringLiteral("stair_height: %1 m must be above level_height (%2 m)")
                              .arg(plan.params.stairHeight)
                              .arg(plan.params.levelHeight));
+    auto first = c.requireTable(0);
+    if (!first) return first.error();
+    const Table* tables[2] = {*first, c.table(1)};  // the other foot is optional
     for (int input = 0; input < 2; ++input) {
-        const Table* table = input == 0 ? nullptr : c.table(1);
-        if (input == 0) {
-            auto required = c.requireTable(0);
-            if (!required) return required.error();
-            table = *required;
-        }
-        if (!table) continue;
-        auto foot = footOf(c, input, *table, plan.params.terrain);
+        if (!tables[input]) continue;
+        auto foot = footOf(c, input, *tables[input], plan.params.terrain);
         if (!foot) return foot.error();
         plan.feet.push_back(std::move(*foot));
     }

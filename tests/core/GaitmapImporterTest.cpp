@@ -177,6 +177,7 @@ TEST(GaitmapImport, OneSensorPerSideAreTheFeetWhateverTheirNames) {
               std::make_pair(QString("left-foot right-foot"), QString("l_lateral r_lateral")));
     EXPECT_EQ(streams("sensor,Left_Foot,Right_Foot,chest").first, "left-foot right-foot chest");
     EXPECT_EQ(streams("sensor,foot_r,foot_l").first, "right-foot left-foot");
+    EXPECT_EQ(streams("sensor,LeftFoot,footRight").first, "left-foot right-foot");
     EXPECT_EQ(streams("sensor,l_ankle,l_lateral,r_ankle,r_lateral").first, "l-ankle l-lateral r-ankle r-lateral");
     EXPECT_EQ(streams("sensor,left_sensor,l_ankle,right_sensor").first, "left-foot l-ankle right-foot");
     EXPECT_EQ(streams("sensor,lateral,instep").first, "lateral instep");
