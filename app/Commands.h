@@ -33,5 +33,8 @@ int fail(const QString& message, int code = Failed);
 // Opens a project to change it (its write lock held until the Project is destroyed) and prints
 // what opening noted ("athlos: note: …") on stderr.
 Expected<std::unique_ptr<Project>> openForChange(const QString& path);
+// The same, but a missing file becomes a new, empty project held in memory (its lock held) and
+// `created` is set: nothing is written until the caller saves it, so a failed import leaves no file.
+Expected<std::unique_ptr<Project>> openOrCreateForChange(const QString& path, bool& created);
 
 }  // namespace athlos::cli

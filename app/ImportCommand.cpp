@@ -26,7 +26,8 @@ int cmdImport(const QStringList& args) {
                        "COL[:FORMAT]] [--date D] [--start T]"),
         QStringLiteral("Import a recording into a project. Nothing is written unless the whole import "
                        "succeeds; errors name the file, line and column."));
-    p.addPositional(QStringLiteral("project"), QStringLiteral("The .athlos file (create it with athlos new)."));
+    p.addPositional(QStringLiteral("project"),
+                    QStringLiteral("The .athlos file; created when it does not exist and the import succeeds."));
     p.addPositional(
         QStringLiteral("file"),
         QStringLiteral("The recording to import. Several files of one kind become one stream (the ranges of "
@@ -170,9 +171,8 @@ int cmdImport(const QStringList& args) {
     if (const QString athlete = p.parser().value(QStringLiteral("athlete")).trimmed(); !athlete.isEmpty())
         options.metadata.insert(QStringLiteral("athlete"), athlete);
 
-    if (!QFileInfo::exists(projectPath))
-        return fail(QStringLiteral("'%1' does not exist (create it with: athlos new %1)").arg(projectPath));
-    auto project = openForChange(projectPath);
+    bool created = false;
+    auto project = openOrCreateForChange(projectPath, created);
     if (!project) return fail(project.message());
 
     TerminalProgress bar(QStringLiteral("import"));
@@ -202,6 +202,7 @@ int cmdImport(const QStringList& args) {
     if (Status s = (*project)->save(bar.progress().sub(0.7, 1.0)); !s)
         return fail(s.message(), s.message() == u"cancelled" ? Cancelled : Failed);
     bar.finish();
+    if (created) std::printf("created project %s\n", qUtf8Printable(projectPath));
     for (const auto& w : written) std::printf("imported %s\n", qUtf8Printable(w));
     return Ok;
 }

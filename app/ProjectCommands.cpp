@@ -7,6 +7,7 @@
 #include "core/io/Exporter.h"
 #include "core/model/Project.h"
 
+#include <QDir>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -24,6 +25,22 @@ Expected<std::unique_ptr<Project>> openForChange(const QString& path) {
     if (project)
         for (const QString& note : (*project)->notes())
             std::fprintf(stderr, "athlos: note: %s\n", qUtf8Printable(note));
+    return project;
+}
+
+Expected<std::unique_ptr<Project>> openOrCreateForChange(const QString& path, bool& created) {
+    created = !QFileInfo::exists(path);
+    if (!created) return openForChange(path);
+    if (const QFileInfo folder(QFileInfo(path).absolutePath()); !folder.isDir())
+        return makeError(QStringLiteral("cannot create project '%1': folder '%2' does not exist")
+                             .arg(path, QDir::toNativeSeparators(folder.filePath())));
+    auto project = Project::create(path);
+    if (Status s = project->lockForChange(); !s) return s.error();
+    if (QFileInfo::exists(path)) {  // another process created it meanwhile: add to that one
+        project.reset();
+        created = false;
+        return openForChange(path);
+    }
     return project;
 }
 

@@ -23,6 +23,14 @@ cp "$P" "$WORK/before.athlos"
 expect_fail "existing name" "exist" "$ATHLOS" import "$P" "$WORK/imu.csv" --as rec --kind imu
 expect_fail "missing file" "nope\.csv" "$ATHLOS" import "$P" "$WORK/nope.csv" --as x --kind imu
 expect_fail "missing project" "missing\.athlos" "$ATHLOS" info "$WORK/missing.athlos"
+# import creates a missing project, but only when the import succeeds.
+expect_fail "import into a missing project, bad file" "bad\.csv:58" "$ATHLOS" import "$WORK/fresh.athlos" "$WORK/bad.csv" --as r --kind imu
+[ -e "$WORK/fresh.athlos" ] && fail "a failed import created the project file"
+expect_fail "import into a missing folder" "folder .*nodir.* does not exist" "$ATHLOS" import "$WORK/nodir/p.athlos" "$WORK/imu.csv" --as r --kind imu
+expect_ok "import creates the project" "$ATHLOS" import "$WORK/fresh.athlos" "$WORK/imu.csv" --as r --kind imu
+grep -q "created project" "$WORK/out" || fail "import did not say it created the project"
+expect_ok "created project opens" "$ATHLOS" info "$WORK/fresh.athlos"
+grep -q "r/imu" "$WORK/out" || fail "created project lacks r/imu"
 echo "this is not HDF5" > "$WORK/garbage.athlos"
 expect_fail "garbage project" "garbage\.athlos" "$ATHLOS" info "$WORK/garbage.athlos"
 head -c 3000 "$P" > "$WORK/truncated.athlos"
