@@ -29,20 +29,30 @@ int sideOf(const QString& sensor) {
     return is("left", "l") ? -1 : is("right", "r") ? 1 : 0;
 }
 
-// The stream of each sensor: left-foot and right-foot when the file has one sensor of each side (the
-// names the gait processors and their documentation use), else the sensor's own name
-// (l_ankle → l-ankle; left_sensor / right_sensor are always the feet).
+// Whether a sensor name says a body part other than the foot (l_wrist, LeftThigh, r_ankle, …): such a
+// sensor is never one of the feet, whatever its side.
+bool namesAnotherBodyPart(const QString& sensor) {
+    static const char* const parts[] = {"wrist", "hand",  "arm",     "elbow", "shoulder", "thigh",  "shank",
+                                        "shin",  "knee",  "ankle",   "leg",   "hip",      "pelvis", "sacrum",
+                                        "trunk", "chest", "sternum", "head",  "waist"};
+    const QString s = sensor.toLower();
+    return std::any_of(std::begin(parts), std::end(parts), [&](const char* p) { return s.contains(QLatin1String(p)); });
+}
+
+// The stream of each sensor: left-foot and right-foot when the file has one foot sensor of each side
+// (a side, and no other body part named; the names the gait processors and their documentation use),
+// else the sensor's own name (l_ankle → l-ankle; left_sensor / right_sensor are always the feet).
 QString streamNameFor(const QString& sensor, const QStringList& sensors) {
     if (sensor == QLatin1String("left_sensor")) return QStringLiteral("left-foot");
     if (sensor == QLatin1String("right_sensor")) return QStringLiteral("right-foot");
+    const auto footSide = [](const QString& s) { return namesAnotherBodyPart(s) ? 0 : sideOf(s); };
     int left = 0, right = 0;
     for (const QString& s : sensors) {
-        const int side = sideOf(s);
-        left += side < 0;
-        right += side > 0;
+        left += footSide(s) < 0;
+        right += footSide(s) > 0;
     }
-    if (left == 1 && right == 1 && sideOf(sensor) != 0)
-        return sideOf(sensor) < 0 ? QStringLiteral("left-foot") : QStringLiteral("right-foot");
+    if (left == 1 && right == 1 && footSide(sensor) != 0)
+        return footSide(sensor) < 0 ? QStringLiteral("left-foot") : QStringLiteral("right-foot");
     QString name = sensor;
     if (name.endsWith(QLatin1String("_sensor"))) name.chop(7);
     return name.replace(QLatin1Char('_'), QLatin1Char('-'));

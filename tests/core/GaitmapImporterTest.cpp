@@ -147,7 +147,8 @@ TEST(GaitmapImport, PandasLevelNamesInTheIndexColumn) {
 
 TEST(GaitmapImport, OneSensorPerSideAreTheFeetWhateverTheirNames) {
     // gaitmap's datasets name the sensors by position (l_lateral, r_instep, …): one of each side are the
-    // left-foot and right-foot streams the gait processors expect; more than one per side keep their names.
+    // left-foot and right-foot streams the gait processors expect; more than one foot sensor per side
+    // keep their names, and other body parts are never the feet.
     QTemporaryDir dir;
     const auto streams = [&](const QByteArray& header) {
         QFile f(dir.filePath("s.csv"));
@@ -178,7 +179,12 @@ TEST(GaitmapImport, OneSensorPerSideAreTheFeetWhateverTheirNames) {
     EXPECT_EQ(streams("sensor,Left_Foot,Right_Foot,chest").first, "left-foot right-foot chest");
     EXPECT_EQ(streams("sensor,foot_r,foot_l").first, "right-foot left-foot");
     EXPECT_EQ(streams("sensor,LeftFoot,footRight").first, "left-foot right-foot");
-    EXPECT_EQ(streams("sensor,l_ankle,l_lateral,r_ankle,r_lateral").first, "l-ankle l-lateral r-ankle r-lateral");
+    // Other body parts are never feet: an ankle pair beside the foot pair, a wrist pair alone.
+    EXPECT_EQ(streams("sensor,l_ankle,l_lateral,r_ankle,r_lateral").first, "l-ankle left-foot r-ankle right-foot");
+    EXPECT_EQ(streams("sensor,LeftWrist,RightWrist").first, "LeftWrist RightWrist");
+    EXPECT_EQ(streams("sensor,l_thigh,r_thigh,l_heel,r_heel").first, "l-thigh r-thigh left-foot right-foot");
+    // Several foot positions per side (gaitmap's sensor position study) are ambiguous: names kept.
+    EXPECT_EQ(streams("sensor,l_heel,l_instep,r_heel,r_instep").first, "l-heel l-instep r-heel r-instep");
     EXPECT_EQ(streams("sensor,left_sensor,l_ankle,right_sensor").first, "left-foot l-ankle right-foot");
     EXPECT_EQ(streams("sensor,lateral,instep").first, "lateral instep");
 }
