@@ -16,6 +16,34 @@
 #include <utility>
 
 namespace athlos {
+namespace {
+
+// What a missing input could have been: the streams (or tables) of its recording, or the project's
+// recordings when that does not exist either, e.g. " (walk has: l-heel, l-instep)".
+QString whatIsThere(const Project& project, const QString& path, bool table) {
+    const auto list = [](QStringList names) {
+        constexpr int kShown = 12;
+        if (names.size() > kShown) names = names.mid(0, kShown) << QStringLiteral("…");
+        return names.join(QStringLiteral(", "));
+    };
+    const QString rec = ItemPath::parse(path).recording;
+    const auto it = project.recordings().find(rec);
+    if (it == project.recordings().end()) {
+        QStringList recordings;
+        for (const auto& r : project.recordings()) recordings << r.first;
+        return recordings.isEmpty() ? QStringLiteral(" (the project has no recordings)")
+                                    : QStringLiteral(" (recordings: %1)").arg(list(recordings));
+    }
+    QStringList names;
+    if (table)
+        for (const auto& t : it->second.tables) names << t.first;
+    else
+        for (const auto& st : it->second.streams) names << st.first;
+    return names.isEmpty() ? QStringLiteral(" ('%1' has no %2)").arg(rec, table ? u"tables" : u"streams")
+                           : QStringLiteral(" (%1 has: %2)").arg(rec, list(names));
+}
+
+}  // namespace
 
 QByteArray tableHash(const Table& table) {
     QCryptographicHash hash(QCryptographicHash::Sha256);
@@ -106,8 +134,8 @@ Expected<ComputedRun> computeRun(const Project& project, const Processor& proces
         if (spec.table) {
             const Table* t = project.table(path);
             if (!t)
-                return makeError(
-                    QStringLiteral("input '%1' (%2): no table of that name in the project").arg(path, spec.name));
+                return makeError(QStringLiteral("input '%1' (%2): no table of that name in the project%3")
+                                     .arg(path, spec.name, whatIsThere(project, path, true)));
             if (!spec.kinds.isEmpty() && !spec.kinds.contains(t->kind))
                 return makeError(QStringLiteral("input '%1' (%2) is a '%3' table; %4 expects %5")
                                      .arg(path, spec.name, t->kind, pid, spec.kinds.join(QStringLiteral(" or "))));
@@ -116,8 +144,8 @@ Expected<ComputedRun> computeRun(const Project& project, const Processor& proces
         } else {
             const Stream* s = project.stream(path);
             if (!s)
-                return makeError(
-                    QStringLiteral("input '%1' (%2): no stream of that name in the project").arg(path, spec.name));
+                return makeError(QStringLiteral("input '%1' (%2): no stream of that name in the project%3")
+                                     .arg(path, spec.name, whatIsThere(project, path, false)));
             if (!spec.kinds.isEmpty() && !spec.kinds.contains(s->kind()))
                 return makeError(QStringLiteral("input '%1' (%2) is a '%3' stream; %4 expects %5")
                                      .arg(path, spec.name, s->kind(), pid, spec.kinds.join(QStringLiteral(" or "))));

@@ -38,7 +38,8 @@ expect_fail "truncated project" "truncated\.athlos" "$ATHLOS" info "$WORK/trunca
 expect_fail "unknown processor" "unknown processor 'nope'" "$ATHLOS" run "$P" nope --input rec/imu --output rec/x
 expect_fail "bad parameter value" "cutoff" "$ATHLOS" run "$P" butterworth --input rec/imu --output rec/lp --param cutoff=500
 expect_fail "unknown parameter" "unknown parameter 'bogus'" "$ATHLOS" run "$P" butterworth --input rec/imu --output rec/lp --param bogus=1
-expect_fail "missing input" "no stream" "$ATHLOS" run "$P" butterworth --input rec/nothing --output rec/lp --param cutoff=5
+expect_fail "missing input" "no stream of that name in the project \(rec has: imu" "$ATHLOS" run "$P" butterworth --input rec/nothing --output rec/lp --param cutoff=5
+expect_fail "missing recording" "\(recordings: " "$ATHLOS" run "$P" butterworth --input nothing/imu --output rec/lp --param cutoff=5
 expect_fail "overwrite imported data" "imported" "$ATHLOS" run "$P" butterworth --input rec/imu --output rec/imu --param cutoff=5
 cmp -s "$P" "$WORK/before.athlos" || fail "failed runs changed the project file"
 echo '{"steps": [' > "$WORK/broken.json"
