@@ -1,12 +1,11 @@
 #include "tools/eval/GaitEvaluation.h"
 
+#include "core/io/CsvReader.h"
 #include "core/io/Importer.h"
 #include "core/model/Project.h"
 #include "plugins/events/GaitEventsProcessor.h"
 #include "plugins/events/MediolateralAxis.h"
 
-#include <QFile>
-#include <QTextStream>
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -26,39 +25,44 @@ Expected<std::unique_ptr<Project>> importGaitmapWalk(const QString& dir, const Q
 }
 
 Expected<std::vector<ReferenceStride>> readStrideBorders(const QString& path, double rate) {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
-        return makeError(QStringLiteral("%1: %2").arg(path, file.errorString()));
     if (!(rate > 0.0)) return makeError(QStringLiteral("%1: sampling rate %2 Hz must be positive").arg(path).arg(rate));
-    QTextStream in(&file);
-    const QStringList header = in.readLine().trimmed().split(QLatin1Char(','));
+    MappedFile file;
+    if (Status opened = file.open(path); !opened) return opened.error();
+    CsvReader reader(file.begin(), file.end());
+    QStringList header;
+    if (!reader.readHeader(header)) return makeError(QStringLiteral("%1: empty file (no header row)").arg(path));
     const int foot = int(header.indexOf(QStringLiteral("foot"))), start = int(header.indexOf(QStringLiteral("start"))),
               end = int(header.indexOf(QStringLiteral("end")));
     if (foot < 0 || start < 0 || end < 0)
         return makeError(QStringLiteral("%1:1: expected columns foot, start, end (found: %2)")
                              .arg(path, header.join(QStringLiteral(", "))));
     std::vector<ReferenceStride> out;
-    for (int line = 2; !in.atEnd(); ++line) {
-        const QString text = in.readLine().trimmed();
-        if (text.isEmpty()) continue;
-        const QStringList f = text.split(QLatin1Char(','));
-        if (f.size() < header.size())
-            return makeError(QStringLiteral("%1:%2: %3 fields, the header has %4")
-                                 .arg(path)
-                                 .arg(line)
-                                 .arg(f.size())
-                                 .arg(header.size()));
-        bool okStart = false, okEnd = false;
-        const double s = f[start].toDouble(&okStart), e = f[end].toDouble(&okEnd);
-        if (!okStart)
-            return makeError(QStringLiteral("%1:%2:%3: start '%4' is not a number")
-                                 .arg(path)
-                                 .arg(line)
-                                 .arg(start + 1)
-                                 .arg(f[start]));
-        if (!okEnd)
-            return makeError(
-                QStringLiteral("%1:%2:%3: end '%4' is not a number").arg(path).arg(line).arg(end + 1).arg(f[end]));
+    std::string cell;
+    while (reader.nextRecord()) {
+        QString footName;
+        double s = 0.0, e = 0.0;
+        for (int i = 0; i < int(header.size()); ++i) {
+            if (!reader.text(cell))
+                return makeError(QStringLiteral("%1:%2: %3 fields, the header has %4")
+                                     .arg(path)
+                                     .arg(reader.line())
+                                     .arg(reader.fieldsOnLine())
+                                     .arg(header.size()));
+            if (i == foot) footName = QString::fromStdString(cell);
+            if (i != start && i != end) continue;
+            bool ok = false;
+            const double x = QString::fromStdString(cell).toDouble(&ok);
+            if (!ok)
+                return makeError(QStringLiteral("%1:%2:%3: %4 '%5' is not a number")
+                                     .arg(path)
+                                     .arg(reader.line())
+                                     .arg(i + 1)
+                                     .arg(i == start ? u"start" : u"end", QString::fromStdString(cell)));
+            (i == start ? s : e) = x;
+        }
+        while (reader.text(cell)) {}
+        const long long line = reader.line();
+        reader.finishRecord();
         if (e <= s)
             return makeError(QStringLiteral("%1:%2:%3: end %4 is not after start %5")
                                  .arg(path)
@@ -66,7 +70,7 @@ Expected<std::vector<ReferenceStride>> readStrideBorders(const QString& path, do
                                  .arg(end + 1)
                                  .arg(e)
                                  .arg(s));
-        out.push_back({f[foot].trimmed(), s / rate, e / rate});
+        out.push_back({footName, s / rate, e / rate});
     }
     return out;
 }

@@ -103,3 +103,39 @@ TEST(HeelEvaluation, ALostMarkerIsNotScoredAndABadCellIsNamed) {
     EXPECT_TRUE(refused.message().contains(QStringLiteral("bad.csv:4:3: 'x' is not a number")))
         << qPrintable(refused.message());
 }
+
+TEST(HeelEvaluation, StrideBordersAreReadInSecondsAndABadCellIsNamed) {
+    // gaitmap's stride_borders_sample.csv: s_id,start,end,foot in samples; quoted or reordered cells,
+    // a CRLF line end and a byte-order mark are read alike; bad cells name their line and column.
+    QTemporaryDir dir;
+    const auto write = [&](const char* name, const QByteArray& text) {
+        QFile f(dir.filePath(QString::fromLatin1(name)));
+        EXPECT_TRUE(f.open(QIODevice::WriteOnly));
+        f.write(text);
+        return f.fileName();
+    };
+    auto ok = readStrideBorders(write("ok.csv",
+                                      "\xEF\xBB\xBFs_id,start,end,foot\r\n0,100,300,left\r\n1,150,\"350\","
+                                      "\"right\"\n\n"),
+                                100.0);
+    ASSERT_TRUE(ok.ok()) << qPrintable(ok.message());
+    ASSERT_EQ(ok->size(), 2u);
+    EXPECT_EQ((*ok)[0].foot, QStringLiteral("left"));
+    EXPECT_DOUBLE_EQ((*ok)[0].tStart, 1.0);
+    EXPECT_DOUBLE_EQ((*ok)[0].tEnd, 3.0);
+    EXPECT_EQ((*ok)[1].foot, QStringLiteral("right"));
+    EXPECT_DOUBLE_EQ((*ok)[1].tEnd, 3.5);
+    const auto refused = [&](const char* name, const QByteArray& text) {
+        auto r = readStrideBorders(write(name, text), 100.0);
+        EXPECT_FALSE(r.ok());
+        return r.ok() ? QString() : r.message();
+    };
+    EXPECT_TRUE(refused("text.csv", "s_id,start,end,foot\n0,100,300,left\n1,1x0,300,left\n")
+                    .contains(QStringLiteral("text.csv:3:2: start '1x0' is not a number")));
+    EXPECT_TRUE(
+        refused("short.csv", "s_id,start,end,foot\n0,100,300\n").contains(QStringLiteral("short.csv:2: 3 fields")));
+    EXPECT_TRUE(refused("order.csv", "s_id,start,end,foot\n0,300,300,left\n")
+                    .contains(QStringLiteral("order.csv:2:3: end 300 is not after start 300")));
+    EXPECT_TRUE(
+        refused("cols.csv", "a,b\n1,2\n").contains(QStringLiteral("cols.csv:1: expected columns foot, start, end")));
+}
