@@ -4,6 +4,7 @@
 #include "core/processing/ProcessorRegistry.h"
 #include "core/processing/ProcessorRunner.h"
 #include "ui/PlotStyle.h"
+#include "ui/report/ReportPage.h"
 #include "ui/venue/VenueDrawing.h"
 #include "ui/views/PlaybackTracks.h"
 
@@ -24,7 +25,11 @@
 
 namespace athlos::ui {
 
+using namespace report;
+
 namespace {
+
+using Page = ReportPage;
 
 QString tr(const char* text) { return QCoreApplication::translate("athlos::ui::SessionReport", text); }
 
@@ -40,73 +45,6 @@ double value(const Table& table, const QString& column, int row) {
     const TableColumn* c = table.column(column);
     if (!c || c->isText || row < 0 || row >= static_cast<int>(c->numbers.size())) return std::nan("");
     return c->numbers[std::size_t(row)];
-}
-
-QString number(double v, int decimals) {
-    return std::isfinite(v) ? QString::number(v, 'f', decimals) : QStringLiteral("–");
-}
-
-// Draws a QCustomPlot laid out at 800 px wide (the GUI's look: fonts and lines in proportion) into the
-// target rectangle, rasterised at the target's device resolution.
-void drawPlot(QPainter& painter, QCustomPlot& plot, const QRectF& target) {
-    const int w = 800, h = std::max(150, int(800 * target.height() / target.width()));
-    plot.resize(w, h);
-    plot.replot(QCustomPlot::rpImmediateRefresh);
-    const QPixmap pixmap = plot.toPixmap(w, h, target.width() / w);
-    painter.drawPixmap(target, pixmap, QRectF(pixmap.rect()));
-}
-
-struct Page {
-    QPainter& painter;
-    QRectF area;  // printable area in device pixels
-    double y = 0;
-    double lineHeight(const QFont& font) const { return QFontMetricsF(font, painter.device()).height(); }
-};
-
-void heading(Page& page, const QString& text, double points) {
-    QFont font = page.painter.font();
-    font.setPointSizeF(points);
-    font.setBold(true);
-    page.painter.setFont(font);
-    const double h = page.lineHeight(font);
-    page.painter.drawText(QRectF(page.area.left(), page.y, page.area.width(), h), Qt::AlignLeft, text);
-    page.y += h * 1.3;
-}
-
-// A simple table: header row, then rows; column widths proportional to `weights`.
-void drawTable(Page& page, const QStringList& header, const QList<QStringList>& rows, const QList<double>& weights) {
-    QFont font = page.painter.font();
-    font.setPointSizeF(8.0);
-    font.setBold(true);
-    const double h = page.lineHeight(font) * 1.35;
-    double total = 0;
-    for (double w : weights) total += w;
-    auto drawRow = [&](const QStringList& cells, bool bold, bool shaded) {
-        font.setBold(bold);
-        page.painter.setFont(font);
-        if (shaded)
-            page.painter.fillRect(QRectF(page.area.left(), page.y, page.area.width(), h), QColor(240, 243, 247));
-        double x = page.area.left();
-        for (int c = 0; c < cells.size() && c < weights.size(); ++c) {
-            const double w = page.area.width() * weights[c] / total;
-            page.painter.drawText(QRectF(x + 4, page.y, w - 8, h),
-                                  (c == 0 ? Qt::AlignLeft : Qt::AlignRight) | Qt::AlignVCenter, cells[c]);
-            x += w;
-        }
-        page.y += h;
-    };
-    drawRow(header, true, false);
-    page.painter.drawLine(QPointF(page.area.left(), page.y), QPointF(page.area.right(), page.y));
-    for (int r = 0; r < rows.size(); ++r) drawRow(rows[r], false, r % 2 == 1);
-    page.y += h * 0.6;
-}
-
-QCustomPlot* newPlot() {
-    auto* plot = new QCustomPlot;
-    PlotStyle::apply(plot);
-    plot->legend->setVisible(false);
-    plot->setAttribute(Qt::WA_DontShowOnScreen);
-    return plot;
 }
 
 void barChart(Page& page, const QStringList& labels, const QVector<double>& values, const QString& xLabel,

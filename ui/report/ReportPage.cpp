@@ -1,0 +1,70 @@
+#include "ui/report/ReportPage.h"
+
+#include "ui/PlotStyle.h"
+
+#include <QPixmap>
+#include <algorithm>
+#include <cmath>
+#include <qcustomplot.h>
+
+namespace athlos::ui::report {
+
+QString number(double v, int decimals) {
+    return std::isfinite(v) ? QString::number(v, 'f', decimals) : QStringLiteral("–");
+}
+
+void heading(ReportPage& page, const QString& text, double points) {
+    QFont font = page.painter.font();
+    font.setPointSizeF(points);
+    font.setBold(true);
+    page.painter.setFont(font);
+    const double h = page.lineHeight(font);
+    page.painter.drawText(QRectF(page.area.left(), page.y, page.area.width(), h), Qt::AlignLeft, text);
+    page.y += h * 1.3;
+}
+
+void drawTable(ReportPage& page, const QStringList& header, const QList<QStringList>& rows,
+               const QList<double>& weights) {
+    QFont font = page.painter.font();
+    font.setPointSizeF(8.0);
+    font.setBold(true);
+    const double h = page.lineHeight(font) * 1.35;
+    double total = 0;
+    for (double w : weights) total += w;
+    auto drawRow = [&](const QStringList& cells, bool bold, bool shaded) {
+        font.setBold(bold);
+        page.painter.setFont(font);
+        if (shaded)
+            page.painter.fillRect(QRectF(page.area.left(), page.y, page.area.width(), h), QColor(240, 243, 247));
+        double x = page.area.left();
+        for (int c = 0; c < cells.size() && c < weights.size(); ++c) {
+            const double w = page.area.width() * weights[c] / total;
+            page.painter.drawText(QRectF(x + 4, page.y, w - 8, h),
+                                  (c == 0 ? Qt::AlignLeft : Qt::AlignRight) | Qt::AlignVCenter, cells[c]);
+            x += w;
+        }
+        page.y += h;
+    };
+    drawRow(header, true, false);
+    page.painter.drawLine(QPointF(page.area.left(), page.y), QPointF(page.area.right(), page.y));
+    for (int r = 0; r < rows.size(); ++r) drawRow(rows[r], false, r % 2 == 1);
+    page.y += h * 0.6;
+}
+
+QCustomPlot* newPlot() {
+    auto* plot = new QCustomPlot;
+    PlotStyle::apply(plot);
+    plot->legend->setVisible(false);
+    plot->setAttribute(Qt::WA_DontShowOnScreen);
+    return plot;
+}
+
+void drawPlot(QPainter& painter, QCustomPlot& plot, const QRectF& target) {
+    const int w = 800, h = std::max(150, int(800 * target.height() / target.width()));
+    plot.resize(w, h);
+    plot.replot(QCustomPlot::rpImmediateRefresh);
+    const QPixmap pixmap = plot.toPixmap(w, h, target.width() / w);
+    painter.drawPixmap(target, pixmap, QRectF(pixmap.rect()));
+}
+
+}  // namespace athlos::ui::report

@@ -1,0 +1,43 @@
+#pragma once
+// Drawing a PDF report page with QPainter (SessionReport, GaitReport): a cursor down the printable
+// area, headings, text, simple tables and QCustomPlot plots laid out as the GUI's panels are.
+#include <QFont>
+#include <QList>
+#include <QPainter>
+#include <QRectF>
+#include <QString>
+#include <QStringList>
+
+class QCustomPlot;
+
+namespace athlos::ui {
+
+struct ReportPage {
+    QPainter& painter;
+    QRectF area;  // printable area in device pixels
+    double y = 0;
+    double lineHeight(const QFont& font) const { return QFontMetricsF(font, painter.device()).height(); }
+};
+
+namespace report {
+
+// "1.23" with `decimals` digits, "–" for NaN or infinite.
+QString number(double v, int decimals);
+
+// A bold heading of `points` size; the cursor moves below it.
+void heading(ReportPage& page, const QString& text, double points);
+
+// A simple table: header row, then rows (every other one shaded); column widths proportional to
+// `weights`; the first column left-aligned, the others right-aligned.
+void drawTable(ReportPage& page, const QStringList& header, const QList<QStringList>& rows,
+               const QList<double>& weights);
+
+// A QCustomPlot in the GUI's style, not shown on screen, without a legend.
+QCustomPlot* newPlot();
+
+// Draws a QCustomPlot laid out at 800 px wide (the GUI's look: fonts and lines in proportion) into the
+// target rectangle, rasterised at the target's device resolution.
+void drawPlot(QPainter& painter, QCustomPlot& plot, const QRectF& target);
+
+}  // namespace report
+}  // namespace athlos::ui
