@@ -72,4 +72,24 @@ BackgroundTask::Outcome BackgroundTask::run(QWidget* parent, const QString& labe
     return outcome;
 }
 
+BackgroundTask::Outcome BackgroundTask::runHere(QWidget* parent, const QString& label, const Job& job) {
+    QProgressDialog dialog(label, tr("Cancel"), 0, 1000, parent);
+    dialog.setWindowModality(Qt::WindowModal);
+    dialog.setMinimumDuration(0);
+    CancelToken token;
+    const Progress progress(
+        [&](double fraction, const QString& message) {
+            if (std::isfinite(fraction)) dialog.setValue(int(std::clamp(fraction, 0.0, 1.0) * 1000));
+            if (!message.isEmpty()) dialog.setLabelText(label + QLatin1Char('\n') + message);
+            QCoreApplication::processEvents();
+            if (dialog.wasCanceled()) token.cancel();
+        },
+        token);
+    Outcome outcome;
+    outcome.status = job(progress);
+    dialog.reset();
+    outcome.cancelled = token.isCancelled();
+    return outcome;
+}
+
 }  // namespace athlos::ui

@@ -27,6 +27,11 @@ public:
     // showDialog false: no dialog (tests, offscreen rendering); the job still runs off-thread
     // and the call still waits for it while processing events.
     static Outcome run(QWidget* parent, const QString& label, const Job& job, bool showDialog = true);
+
+    // The same dialog for a job that must run on the GUI thread (it draws widgets: a PDF with plots):
+    // the job runs here, and each of its progress reports updates the dialog and processes events, so
+    // Cancel trips its CancelToken at the next report.
+    static Outcome runHere(QWidget* parent, const QString& label, const Job& job);
 };
 
 }  // namespace athlos::ui

@@ -13,7 +13,6 @@
 #include <QFileInfo>
 #include <QInputDialog>
 #include <QMessageBox>
-#include <QProgressDialog>
 
 namespace athlos::ui {
 
@@ -60,20 +59,11 @@ void exportReport(Workspace& workspace) {
     if (!runs.empty()) workspace.projectModified();
 
     // 2. The PDF on the GUI thread, a page at a time.
-    QProgressDialog dialog(tr("Writing the report…"), tr("Cancel"), 0, 1000, parent);
-    dialog.setWindowModality(Qt::WindowModal);
-    dialog.setMinimumDuration(0);
-    CancelToken token;
-    const Progress progress(
-        [&](double f, const QString&) {
-            dialog.setValue(int(1000 * f));
-            QCoreApplication::processEvents();
-            if (dialog.wasCanceled()) token.cancel();
-        },
-        token);
-    const Status written = SessionReport::writePdf(*project, list, path, progress);
-    dialog.reset();
-    if (!written && !token.isCancelled()) QMessageBox::warning(parent, tr("Export report"), written.message());
+    const auto written = BackgroundTask::runHere(parent, tr("Writing the report…"), [&](const Progress& progress) {
+        return SessionReport::writePdf(*project, list, path, progress);
+    });
+    if (!written.status && !written.cancelled)
+        QMessageBox::warning(parent, tr("Export report"), written.status.message());
 }
 
 }  // namespace
