@@ -4,6 +4,7 @@
 #include "app/Commands.h"
 #include "app/TerminalProgress.h"
 #include "core/io/Exporter.h"
+#include "ui/report/GaitReport.h"
 #include "ui/report/SessionReport.h"
 
 #include <cstdio>
@@ -12,15 +13,41 @@ namespace athlos::cli {
 
 namespace {
 int exitCode(const Error& error) { return error.message == u"cancelled" ? Cancelled : Failed; }
+
+// `report --gait REC`: reads the project, changes nothing (the summary is computed in memory).
+int gaitReport(CommandParser& p, const QString& pdf, const QVariantMap& parameters) {
+    auto project = Project::open(p.positional()[0]);
+    if (!project) return fail(project.message());
+    QStringList strides;
+    for (const QString& s : p.parser().value(QStringLiteral("strides")).split(QLatin1Char(','), Qt::SkipEmptyParts))
+        strides << s.trimmed();
+    auto input = ui::GaitReport::strideTables(**project, p.parser().value(QStringLiteral("gait")).trimmed(), strides);
+    if (!input) return fail(input.message());
+    auto summary = ui::GaitReport::summary(**project, *input, parameters);
+    if (!summary) return fail(summary.message());
+    TerminalProgress bar(QStringLiteral("report"));
+    if (Status s = ui::GaitReport::writePdf(**project, *input, *summary, pdf, bar.progress()); !s)
+        return fail(s.message(), exitCode(s.error()));
+    bar.finish();
+    std::printf("wrote %s (gait report of %s)\n", qUtf8Printable(pdf),
+                qUtf8Printable(input->strides.join(QStringLiteral(", "))));
+    return Ok;
+}
 }  // namespace
 
 int cmdReport(const QStringList& args) {
-    CommandParser p(QStringLiteral("report <project> --to report.pdf [--recording R] [--csv team.csv] [--param k=v …]"),
-                    QStringLiteral("Write the coach's session report as a PDF: a team page (table and distance bars) "
-                                   "and a page per athlete (speed over time, zone bars, heat map on the venue, splits, "
-                                   "action counts). session-metrics runs first for every athlete whose metrics are "
-                                   "missing or stale (with the given parameters) and the project is saved with them; "
-                                   "Ctrl-C cancels and leaves the project untouched."));
+    CommandParser p(
+        QStringLiteral(
+            "report <project> --to report.pdf [--recording R] [--csv team.csv] [--param k=v …]\n"
+            "       athlos report <project> --to gait.pdf --gait REC [--strides REC/A,REC/B] [--param k=v …]"),
+        QStringLiteral("Write the coach's session report as a PDF: a team page (table and distance bars) "
+                       "and a page per athlete (speed over time, zone bars, heat map on the venue, splits, "
+                       "action counts). session-metrics runs first for every athlete whose metrics are "
+                       "missing or stale (with the given parameters) and the project is saved with them; "
+                       "Ctrl-C cancels and leaves the project untouched. With --gait: the gait report of a "
+                       "recording's stride tables (gait-parameters, one per foot): the steady-state summary of "
+                       "gait-summary (its parameters with --param), stride length and gait speed over time, and "
+                       "every stride; the project is not changed."));
     p.addPositional(QStringLiteral("project"), QStringLiteral("The .athlos file."));
     p.addOption({QStringLiteral("to"), QStringLiteral("The PDF to write."), QStringLiteral("file")});
     p.addOption({QStringLiteral("recording"),
@@ -28,8 +55,16 @@ int cmdReport(const QStringList& args) {
                                 "athletes)."),
                  QStringLiteral("rec")});
     p.addOption({QStringLiteral("csv"), QStringLiteral("Also write the team table as CSV."), QStringLiteral("file")});
-    p.addOption({QStringLiteral("param"), QStringLiteral("session-metrics parameter for missing metrics, repeatable."),
+    p.addOption({QStringLiteral("param"),
+                 QStringLiteral("session-metrics parameter for missing metrics (with --gait: gait-summary parameter), "
+                                "repeatable."),
                  QStringLiteral("k=v")});
+    p.addOption({QStringLiteral("gait"),
+                 QStringLiteral("The gait report of this recording's gait-parameters tables instead."),
+                 QStringLiteral("rec")});
+    p.addOption({QStringLiteral("strides"),
+                 QStringLiteral("With --gait: the stride tables to report, when the recording has several per foot."),
+                 QStringLiteral("rec/a,rec/b")});
     if (auto code = p.parse(args, 1, 1)) return *code;
     const QString pdf = p.parser().value(QStringLiteral("to"));
     if (pdf.isEmpty()) return fail(QStringLiteral("report needs --to <file.pdf>"), Usage);
@@ -39,6 +74,9 @@ int cmdReport(const QStringList& args) {
         if (eq <= 0) return fail(QStringLiteral("--param '%1': expected name=value").arg(kv), Usage);
         parameters.insert(kv.left(eq).trimmed(), kv.mid(eq + 1).trimmed());
     }
+
+    if (p.parser().isSet(QStringLiteral("gait"))) return gaitReport(p, pdf, parameters);
+    if (p.parser().isSet(QStringLiteral("strides"))) return fail(QStringLiteral("--strides needs --gait REC"), Usage);
 
     auto project = openForChange(p.positional()[0]);
     if (!project) return fail(project.message());

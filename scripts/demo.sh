@@ -29,6 +29,8 @@ for extra in "$DEMO_DIR"/pipeline-*.json; do
   [ -e "$extra" ] || continue
   "$ATHLOS" pipeline "$P" "$extra"
 done
+# The walk's gait report (stride tables of pipeline-gait.json): summary, strides over time, every stride.
+"$ATHLOS" report "$P" --gait walk --to "$OUT/demo-gait-report.pdf"
 # A synthetic clip (each frame shows its index) attached to the walk, so the video dock has footage.
 "$ATHLOS" video --write-pattern "$OUT/demo-pattern.avi" --frames 300 --fps 30
 "$ATHLOS" video "$P" walk "$OUT/demo-pattern.avi" --offset 2

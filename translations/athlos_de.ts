@@ -79,6 +79,10 @@
         <source>Stride and cycle table…</source>
         <translation>Schritt- und Zyklustabelle…</translation>
     </message>
+    <message>
+        <source>Export gait report…</source>
+        <translation>Ganganalyse-Bericht exportieren…</translation>
+    </message>
 </context>
 <context>
     <name>athlos::activity::ClassifyActionsProcessor</name>
@@ -2765,16 +2769,32 @@
         <translation>Bericht wird geschrieben…</translation>
     </message>
     <message>
-        <source>Cancel</source>
-        <translation>Abbrechen</translation>
-    </message>
-    <message>
         <source>time (min)</source>
         <translation>Zeit (min)</translation>
     </message>
     <message>
         <source>speed (km/h)</source>
         <translation>Geschwindigkeit (km/h)</translation>
+    </message>
+    <message>
+        <source>Export gait report</source>
+        <translation>Ganganalyse-Bericht exportieren</translation>
+    </message>
+    <message>
+        <source>Choose a stride table.</source>
+        <translation>Wählen Sie eine Schritttabelle.</translation>
+    </message>
+    <message>
+        <source>Writing the gait report…</source>
+        <translation>Ganganalyse-Bericht wird geschrieben…</translation>
+    </message>
+    <message>
+        <source>turns (|turning angle| &gt; %1 rad)</source>
+        <translation>Wendungen (|Drehwinkel| &gt; %1 rad)</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>Zeit (s)</translation>
     </message>
 </context>
 <context>
@@ -3242,6 +3262,160 @@
     <message>
         <source>CMC</source>
         <translation>CMC</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::GaitReport</name>
+    <message>
+        <source>Stride length</source>
+        <translation>Doppelschrittlänge</translation>
+    </message>
+    <message>
+        <source>Stride height</source>
+        <translation>Doppelschritthöhe</translation>
+    </message>
+    <message>
+        <source>Stride time</source>
+        <translation>Doppelschrittdauer</translation>
+    </message>
+    <message>
+        <source>Stance time</source>
+        <translation>Standphase</translation>
+    </message>
+    <message>
+        <source>Swing time</source>
+        <translation>Schwungphase</translation>
+    </message>
+    <message>
+        <source>Cadence</source>
+        <translation>Kadenz</translation>
+    </message>
+    <message>
+        <source>Gait speed</source>
+        <translation>Ganggeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Max. toe clearance</source>
+        <translation>Max. Fußfreiheit</translation>
+    </message>
+    <message>
+        <source>Athlos gait report</source>
+        <translation>Athlos Ganganalyse-Bericht</translation>
+    </message>
+    <message>
+        <source>Gait report: %1</source>
+        <translation>Ganganalyse: %1</translation>
+    </message>
+    <message>
+        <source>%1 · %2 · generated %3 by Athlos</source>
+        <translation>%1 · %2 · erstellt %3 von Athlos</translation>
+    </message>
+    <message>
+        <source>Strides from mid-stance to mid-stance of a foot-mounted IMU (gait-parameters, method %1). Steady state (gait-summary): strides with |turning angle| ≤ %2 rad on terrain &apos;%3&apos;, without the first and last %4 stride(s) of each run of straight strides. SD: sample standard deviation; CV = SD / mean; SI: symmetry index 100 |left − right| / mean of both (Robinson et al. 1987).</source>
+        <translation>Doppelschritte von Mittstand zu Mittstand einer am Fuß getragenen IMU (gait-parameters, Methode %1). Stationärer Gang (gait-summary): Doppelschritte mit |Drehwinkel| ≤ %2 rad auf Gelände &apos;%3&apos;, ohne die ersten und letzten %4 Doppelschritt(e) jeder Folge gerader Doppelschritte. SA: Stichproben-Standardabweichung; CV = SA / Mittelwert; SI: Symmetrieindex 100 |links − rechts| / Mittel beider (Robinson et al. 1987).</translation>
+    </message>
+    <message>
+        <source>%1: %2 of %3 strides in the steady state</source>
+        <translation>%1: %2 von %3 Doppelschritten im stationären Gang</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>%1 mean</source>
+        <translation>%1 Mittel</translation>
+    </message>
+    <message>
+        <source>SD</source>
+        <translation>SA</translation>
+    </message>
+    <message>
+        <source>CV %</source>
+        <translation>CV %</translation>
+    </message>
+    <message>
+        <source>both mean</source>
+        <translation>beide Mittel</translation>
+    </message>
+    <message>
+        <source>SI %</source>
+        <translation>SI %</translation>
+    </message>
+    <message>
+        <source>stride length (m)</source>
+        <translation>Doppelschrittlänge (m)</translation>
+    </message>
+    <message>
+        <source>gait speed (m/s)</source>
+        <translation>Ganggeschwindigkeit (m/s)</translation>
+    </message>
+    <message>
+        <source>Foot</source>
+        <translation>Fuß</translation>
+    </message>
+    <message>
+        <source>Start s</source>
+        <translation>Beginn s</translation>
+    </message>
+    <message>
+        <source>Length m</source>
+        <translation>Länge m</translation>
+    </message>
+    <message>
+        <source>Height m</source>
+        <translation>Höhe m</translation>
+    </message>
+    <message>
+        <source>Time s</source>
+        <translation>Dauer s</translation>
+    </message>
+    <message>
+        <source>Stance %</source>
+        <translation>Stand %</translation>
+    </message>
+    <message>
+        <source>Speed m/s</source>
+        <translation>Tempo m/s</translation>
+    </message>
+    <message>
+        <source>Clearance m</source>
+        <translation>Fußfreiheit m</translation>
+    </message>
+    <message>
+        <source>Turn °</source>
+        <translation>Drehung °</translation>
+    </message>
+    <message>
+        <source>Strides (%1)</source>
+        <translation>Doppelschritte (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>athlos::ui::GaitReportDialog</name>
+    <message>
+        <source>Export gait report</source>
+        <translation>Ganganalyse-Bericht exportieren</translation>
+    </message>
+    <message>
+        <source>Stride tables of &apos;%1&apos; (gait-parameters), one per foot:</source>
+        <translation>Schritttabellen von &apos;%1&apos; (gait-parameters), eine pro Fuß:</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(keine)</translation>
+    </message>
+    <message>
+        <source>Left foot (or the only one):</source>
+        <translation>Linker Fuß (oder der einzige):</translation>
+    </message>
+    <message>
+        <source>Right foot:</source>
+        <translation>Rechter Fuß:</translation>
+    </message>
+    <message>
+        <source>Steady state (gait-summary):</source>
+        <translation>Stationärer Gang (gait-summary):</translation>
     </message>
 </context>
 <context>

@@ -156,4 +156,24 @@ before=$(cd "$WORK" && find p.athlos -type f -exec md5sum {} + | sort)
 expect_fail "still foot" "no stride found" "$ATHLOS" run "$P" gait-parameters --input still/left-foot --output still/strides
 after=$(cd "$WORK" && find p.athlos -type f -exec md5sum {} + | sort)
 [ "$before" = "$after" ] || fail "a refused run changed the project"
+
+# The gait report (athlos report --gait): a PDF of a recording's stride tables, summary computed in
+# memory, the project byte-identical; ambiguous or missing tables are refused with their names.
+cp "$P" "$WORK/before-report.athlos"
+expect_fail "gait report, two tables per foot" "'walk' has 2 gait-parameters tables of the left foot \(left-rts-strides, left-strides\)" \
+  "$ATHLOS" report "$P" --gait walk --to "$WORK/gait.pdf"
+expect_ok "gait report" "$ATHLOS" report "$P" --gait walk --strides walk/left-strides,walk/right-strides --to "$WORK/gait.pdf"
+[ "$(head -c 5 "$WORK/gait.pdf")" = "%PDF-" ] || fail "gait report is not a PDF"
+pages=$(grep -a -o '/Type /Page\b' "$WORK/gait.pdf" | wc -l)
+[ "$pages" -ge 2 ] || fail "gait report has $pages pages (summary and strides expected)"
+expect_ok "gait report, one foot, stairs" "$ATHLOS" report "$P" --gait stairs --param terrain=up --to "$WORK/stairs.pdf"
+grep -q "stairs/left-strides" "$WORK/out" || fail "stairs report: $(cat "$WORK/out")"
+expect_fail "gait report, one foot twice" "both of the left foot" "$ATHLOS" report "$P" --gait walk \
+  --strides walk/left-strides,walk/left-rts-strides --to "$WORK/x.pdf"
+expect_fail "gait report, no stride table" "'acc' has no gait-parameters table" "$ATHLOS" report "$P" --gait acc --to "$WORK/x.pdf"
+expect_fail "gait report, no steady stride" "no steady-state stride" "$ATHLOS" report "$P" --gait stairs \
+  --param terrain=level --to "$WORK/x.pdf"
+expect_fail "--strides without --gait" "--strides needs --gait" "$ATHLOS" report "$P" --strides walk/left-strides --to "$WORK/x.pdf"
+[ -e "$WORK/x.pdf" ] && fail "a refused gait report wrote a PDF"
+cmp -s "$P" "$WORK/before-report.athlos" || fail "the gait report changed the project"
 finish

@@ -23,12 +23,32 @@ void heading(ReportPage& page, const QString& text, double points) {
     page.y += h * 1.3;
 }
 
-void drawTable(ReportPage& page, const QStringList& header, const QList<QStringList>& rows,
-               const QList<double>& weights) {
+void text(ReportPage& page, const QString& text, double points, double lines, double advance) {
     QFont font = page.painter.font();
+    font.setPointSizeF(points);
+    font.setBold(false);
+    page.painter.setFont(font);
+    const double h = page.lineHeight(font);
+    page.painter.drawText(QRectF(page.area.left(), page.y, page.area.width(), h * lines),
+                          Qt::AlignLeft | Qt::TextWordWrap, text);
+    page.y += h * advance;
+}
+
+namespace {
+QFont tableFont(const QPainter& painter) {
+    QFont font = painter.font();
     font.setPointSizeF(8.0);
     font.setBold(true);
-    const double h = page.lineHeight(font) * 1.35;
+    return font;
+}
+}  // namespace
+
+double tableRowHeight(const ReportPage& page) { return page.lineHeight(tableFont(page.painter)) * 1.35; }
+
+void drawTable(ReportPage& page, const QStringList& header, const QList<QStringList>& rows,
+               const QList<double>& weights) {
+    QFont font = tableFont(page.painter);
+    const double h = tableRowHeight(page);
     double total = 0;
     for (double w : weights) total += w;
     auto drawRow = [&](const QStringList& cells, bool bold, bool shaded) {

@@ -27,6 +27,12 @@ QString number(double v, int decimals);
 // A bold heading of `points` size; the cursor moves below it.
 void heading(ReportPage& page, const QString& text, double points);
 
+// Plain text of `points` size, wrapped within `lines` lines; the cursor moves down `advance` lines.
+void text(ReportPage& page, const QString& text, double points, double lines = 1.0, double advance = 1.8);
+
+// The height of one row of drawTable() (to split a long table over pages).
+double tableRowHeight(const ReportPage& page);
+
 // A simple table: header row, then rows (every other one shaded); column widths proportional to
 // `weights`; the first column left-aligned, the others right-aligned.
 void drawTable(ReportPage& page, const QStringList& header, const QList<QStringList>& rows,
