@@ -8,9 +8,6 @@
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QFileInfo>
-#include <QPageSize>
-#include <QPdfWriter>
-#include <QSaveFile>
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -201,24 +198,10 @@ Status GaitReport::writePdf(const Project& project, const GaitReportInput& input
         if (!t) return makeError(QStringLiteral("no table '%1' in the project").arg(p));
         tables.push_back(t);
     }
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return makeError(QStringLiteral("%1: cannot write: %2").arg(path, file.errorString()));
-    QPdfWriter writer(&file);
-    writer.setPageSize(QPageSize(QPageSize::A4));
-    writer.setResolution(200);
-    writer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
-    writer.setTitle(tr("Athlos gait report"));
-    writer.setCreator(QStringLiteral("Athlos"));
-    QPainter painter;
-    if (!painter.begin(&writer)) return makeError(QStringLiteral("%1: cannot write the PDF").arg(path));
-    painter.setRenderHint(QPainter::Antialiasing);
-    const QRectF area(0, 0, writer.width(), writer.height());
-    const auto cancelled = [&] {
-        if (!progress.isCancelled()) return false;
-        painter.end();
-        return true;
-    };
+    ReportDocument document(path);  // a cancelled or failed report leaves an older PDF as it was
+    if (Status s = document.open(tr("Athlos gait report")); !s) return s;
+    QPainter& painter = document.painter();
+    const QRectF area = document.area();
 
     // Page 1: what was measured, the steady state, the strides over time.
     ReportPage page{painter, area, 0};
@@ -311,8 +294,8 @@ Status GaitReport::writePdf(const Project& project, const GaitReportInput& input
     const QList<double> strideWeights{1.1, 1, 1, 1, 0.9, 0.9, 0.9, 1.1, 1.3, 0.9};
     std::size_t next = 0;
     for (int pageNumber = 2; next < strideRows.size(); ++pageNumber) {
-        if (cancelled()) return makeError(QStringLiteral("cancelled"));
-        writer.newPage();
+        if (progress.isCancelled()) return makeError(QStringLiteral("cancelled"));
+        document.newPage();
         ReportPage p{painter, area, 0};
         heading(p, tr("Strides (%1)").arg(input.recording), 13);
         const auto fit = std::size_t(std::max(1.0, std::floor((area.bottom() - p.y) / tableRowHeight(p)) - 2.0));
@@ -322,10 +305,8 @@ Status GaitReport::writePdf(const Project& project, const GaitReportInput& input
         progress.report(0.3 + 0.7 * double(next) / double(strideRows.size()),
                         QStringLiteral("page %1").arg(pageNumber));
     }
-    if (cancelled()) return makeError(QStringLiteral("cancelled"));
-    if (!painter.end()) return makeError(QStringLiteral("%1: cannot finish the PDF").arg(path));
-    if (!file.commit()) return makeError(QStringLiteral("%1: cannot write: %2").arg(path, file.errorString()));
-    return {};
+    if (progress.isCancelled()) return makeError(QStringLiteral("cancelled"));
+    return document.finish();
 }
 
 }  // namespace athlos::ui

@@ -2,10 +2,46 @@
 
 #include "ui/PlotStyle.h"
 
+#include <QPageSize>
+#include <QPdfWriter>
 #include <QPixmap>
 #include <algorithm>
 #include <cmath>
 #include <qcustomplot.h>
+
+namespace athlos::ui {
+
+ReportDocument::ReportDocument(const QString& path) : path_(path), file_(path) {}
+
+ReportDocument::~ReportDocument() {
+    if (painter_.isActive()) painter_.end();
+}
+
+Status ReportDocument::open(const QString& title) {
+    if (!file_.open(QIODevice::WriteOnly))
+        return makeError(QStringLiteral("%1: cannot write: %2").arg(path_, file_.errorString()));
+    writer_ = std::make_unique<QPdfWriter>(&file_);
+    writer_->setPageSize(QPageSize(QPageSize::A4));
+    writer_->setResolution(200);
+    writer_->setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
+    writer_->setTitle(title);
+    writer_->setCreator(QStringLiteral("Athlos"));
+    if (!painter_.begin(writer_.get())) return makeError(QStringLiteral("%1: cannot write the PDF").arg(path_));
+    painter_.setRenderHint(QPainter::Antialiasing);
+    return {};
+}
+
+QRectF ReportDocument::area() const { return QRectF(0, 0, writer_->width(), writer_->height()); }
+
+void ReportDocument::newPage() { writer_->newPage(); }
+
+Status ReportDocument::finish() {
+    if (!painter_.end()) return makeError(QStringLiteral("%1: cannot finish the PDF").arg(path_));
+    if (!file_.commit()) return makeError(QStringLiteral("%1: cannot write: %2").arg(path_, file_.errorString()));
+    return {};
+}
+
+}  // namespace athlos::ui
 
 namespace athlos::ui::report {
 

@@ -1,16 +1,44 @@
 #pragma once
 // Drawing a PDF report page with QPainter (SessionReport, GaitReport): a cursor down the printable
 // area, headings, text, simple tables and QCustomPlot plots laid out as the GUI's panels are.
+#include "core/util/Expected.h"
+
 #include <QFont>
 #include <QList>
 #include <QPainter>
 #include <QRectF>
+#include <QSaveFile>
 #include <QString>
 #include <QStringList>
+#include <memory>
 
 class QCustomPlot;
+class QPdfWriter;
 
 namespace athlos::ui {
+
+// A PDF being written: A4, 200 dpi, 15 mm margins, into a temporary file that replaces `path` only in
+// finish() (QSaveFile), so a cancelled or failed report leaves an older PDF as it was.
+class ReportDocument {
+public:
+    explicit ReportDocument(const QString& path);
+    ~ReportDocument();  // unfinished: the temporary file is discarded
+    ReportDocument(const ReportDocument&) = delete;
+    ReportDocument& operator=(const ReportDocument&) = delete;
+
+    // Opens the file and starts the first page; errors name the file.
+    Status open(const QString& title);
+    QPainter& painter() { return painter_; }
+    QRectF area() const;  // printable area of a page in device pixels
+    void newPage();
+    Status finish();
+
+private:
+    QString path_;
+    QSaveFile file_;
+    std::unique_ptr<QPdfWriter> writer_;
+    QPainter painter_;
+};
 
 struct ReportPage {
     QPainter& painter;

@@ -11,11 +11,8 @@
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QFileInfo>
-#include <QPageSize>
 #include <QPainter>
-#include <QPdfWriter>
 #include <QPixmap>
-#include <QSaveFile>
 #include <QThread>
 #include <QtConcurrent>
 #include <algorithm>
@@ -270,21 +267,10 @@ Status SessionReport::writePdf(const Project& project, const QList<ReportAthlete
                                const Progress& progress) {
     auto team = teamTable(project, athletes);
     if (!team) return team.error();
-    // Written to a temporary file that replaces `path` only when complete (QSaveFile): a cancelled or
-    // failed report leaves an older PDF as it was.
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return makeError(QStringLiteral("%1: cannot write: %2").arg(path, file.errorString()));
-    QPdfWriter writer(&file);
-    writer.setPageSize(QPageSize(QPageSize::A4));
-    writer.setResolution(200);
-    writer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
-    writer.setTitle(tr("Athlos session report"));
-    writer.setCreator(QStringLiteral("Athlos"));
-    QPainter painter;
-    if (!painter.begin(&writer)) return makeError(QStringLiteral("%1: cannot write the PDF").arg(path));
-    painter.setRenderHint(QPainter::Antialiasing);
-    const QRectF area(0, 0, writer.width(), writer.height());
+    ReportDocument document(path);  // a cancelled or failed report leaves an older PDF as it was
+    if (Status s = document.open(tr("Athlos session report")); !s) return s;
+    QPainter& painter = document.painter();
+    const QRectF area = document.area();
     const auto pitch = PitchGeometry::firstOf(project.geometry());
 
     // Team page.
@@ -336,12 +322,9 @@ Status SessionReport::writePdf(const Project& project, const QList<ReportAthlete
 
     // A page per athlete.
     for (int i = 0; i < athletes.size(); ++i) {
-        if (progress.isCancelled()) {
-            painter.end();
-            return makeError(QStringLiteral("cancelled"));
-        }
+        if (progress.isCancelled()) return makeError(QStringLiteral("cancelled"));
         const ReportAthlete& a = athletes[i];
-        writer.newPage();
+        document.newPage();
         Page p{painter, area, 0};
         heading(p, a.team.isEmpty() ? a.label : QStringLiteral("%1 (%2)").arg(a.label, a.team), 15);
         const Table* t = project.table(a.metricsPath);
@@ -365,10 +348,7 @@ Status SessionReport::writePdf(const Project& project, const QList<ReportAthlete
         const Stream* motion = project.stream(a.metricsPath + QStringLiteral("-motion"));
         if (motion) {
             auto data = motion->data();
-            if (!data) {
-                painter.end();
-                return makeError(QStringLiteral("%1: %2").arg(a.metricsPath, data.message()));
-            }
+            if (!data) return makeError(QStringLiteral("%1: %2").arg(a.metricsPath, data.message()));
             speedPlot(p, **data, motion->info().columnIndex(QStringLiteral("speed")), area.height() * 0.17);
         }
         // Zone bars.
@@ -439,9 +419,7 @@ Status SessionReport::writePdf(const Project& project, const QList<ReportAthlete
         }
         progress.report(double(i + 2) / double(athletes.size() + 1), QStringLiteral("page %1").arg(i + 2));
     }
-    if (!painter.end()) return makeError(QStringLiteral("%1: cannot finish the PDF").arg(path));
-    if (!file.commit()) return makeError(QStringLiteral("%1: cannot write: %2").arg(path, file.errorString()));
-    return {};
+    return document.finish();
 }
 
 }  // namespace athlos::ui
