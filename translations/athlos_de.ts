@@ -2796,6 +2796,14 @@
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
+    <message>
+        <source>left</source>
+        <translation>links</translation>
+    </message>
+    <message>
+        <source>right</source>
+        <translation>rechts</translation>
+    </message>
 </context>
 <context>
     <name>athlos::ui::ActionTimeline</name>

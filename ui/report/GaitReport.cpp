@@ -75,7 +75,8 @@ void strideSeriesPlot(ReportPage& page, const std::vector<const Table*>& tables,
         const QColor colour = PlotStyle::seriesColor(int(f));
         QCPGraph* straight = plot->addGraph();
         QCPGraph* turns = plot->addGraph();
-        straight->setName(footOf(t).isEmpty() ? t.name : tr(footOf(t) == QLatin1String("left") ? "left" : "right"));
+        straight->setName(footOf(t).isEmpty() ? t.name
+                                              : (footOf(t) == QLatin1String("left") ? tr("left") : tr("right")));
         turns->setName(tr("turns (|turning angle| > %1 rad)").arg(maxTurn, 0, 'f', 2));
         straight->setPen(QPen(colour, 1.0));
         straight->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, colour, colour, 6));
