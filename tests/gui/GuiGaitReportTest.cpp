@@ -119,6 +119,11 @@ private slots:
         QVERIFY(std::abs(cellOf(*summary, "stride_length_mean", "left") - 1.355) < 1e-12);
         QVERIFY(std::abs(cellOf(*summary, "stride_length_si", "both")) < 1e-12);  // the same strides both sides
         QVERIFY(!project_->table("walk/gait-report"));                            // nothing stored
+        // An imported item under the run's label does not stop the report.
+        Stream imported = testing::makeImuStream(10);
+        imported.info().provenance.processorId = "import:csv";
+        project_->putStream("walk/gait-report", std::move(imported));
+        VERIFY_OK(GaitReport::summary(*project_, input));
 
         const QString pdf = dir_.filePath("gait.pdf");
         QVERIFY2(GaitReport::writePdf(*project_, input, *summary, pdf), "report not written");

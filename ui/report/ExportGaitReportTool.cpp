@@ -46,7 +46,7 @@ void exportGaitReport(Workspace& workspace) {
         return;
     }
     if (const Table* t = project->table(current); t && t->kind == QLatin1String("gait-parameters"))
-        start.strides.prepend(current);
+        start.strides << current;  // chosen last: its foot's combo shows it
     GaitReportDialog dialog(*project, start, parent);
     if (dialog.exec() != QDialog::Accepted) return;
     const GaitReportInput input = dialog.input();

@@ -181,10 +181,12 @@ Expected<Table> GaitReport::summary(const Project& project, const GaitReportInpu
                                     const QVariantMap& parameters) {
     const auto processor = ProcessorRegistry::instance().find(QStringLiteral("gait-summary"));
     if (!processor) return makeError(QStringLiteral("the gait-summary processor is not available (events plugin)"));
-    // The output name only labels the run: nothing is stored.
-    auto run = computeRun(
-        project, *processor,
-        RunRequest{processor->id(), input.strides, input.recording + QStringLiteral("/gait-report"), parameters});
+    // The output name only labels the run (nothing is stored); one the recording does not hold, so that
+    // no item of that name makes the run refuse.
+    QString label = input.recording + QStringLiteral("/gait-report");
+    for (int n = 2; project.stream(label) || project.table(label); ++n)
+        label = input.recording + QStringLiteral("/gait-report-%1").arg(n);
+    auto run = computeRun(project, *processor, RunRequest{processor->id(), input.strides, label, parameters});
     if (!run) return run.error();
     for (auto& produced : run->produced)
         if (auto* table = std::get_if<Table>(&produced.item)) return std::move(*table);
