@@ -81,7 +81,17 @@ int cmdReport(const QStringList& args) {
     auto project = openForChange(p.positional()[0]);
     if (!project) return fail(project.message());
     auto athletes = ui::SessionReport::athletes(**project, p.parser().value(QStringLiteral("recording")));
-    if (!athletes) return fail(athletes.message());
+    if (!athletes) {
+        // A project of gait recordings: say how to report those instead.
+        QStringList gait;
+        for (const auto& [name, rec] : (*project)->recordings())
+            for (const auto& entry : rec.tables)
+                if (entry.second.kind == QLatin1String("gait-parameters") && !gait.contains(name)) gait << name;
+        return fail(athletes.message() + (gait.isEmpty()
+                                              ? QString()
+                                              : QStringLiteral("; for the gait report of its stride tables: --gait %1")
+                                                    .arg(gait.join(QStringLiteral(" or --gait ")))));
+    }
     TerminalProgress bar(QStringLiteral("report"));
     auto computed = ui::SessionReport::computeMissing(**project, *athletes, parameters, bar.progress().sub(0.0, 0.75));
     if (!computed) return fail(computed.message(), exitCode(computed.error()));

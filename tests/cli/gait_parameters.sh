@@ -173,6 +173,8 @@ expect_fail "gait report, one foot twice" "both of the left foot" "$ATHLOS" repo
 expect_fail "gait report, no stride table" "'acc' has no gait-parameters table" "$ATHLOS" report "$P" --gait acc --to "$WORK/x.pdf"
 expect_fail "gait report, no steady stride" "no steady-state stride" "$ATHLOS" report "$P" --gait stairs \
   --param terrain=level --to "$WORK/x.pdf"
+expect_fail "coach report of a gait project" "no athlete position streams.*for the gait report of its stride tables: --gait (holes|raw|stairs|walk)" \
+  "$ATHLOS" report "$P" --to "$WORK/x.pdf"
 expect_fail "--strides without --gait" "--strides needs --gait" "$ATHLOS" report "$P" --strides walk/left-strides --to "$WORK/x.pdf"
 [ -e "$WORK/x.pdf" ] && fail "a refused gait report wrote a PDF"
 cmp -s "$P" "$WORK/before-report.athlos" || fail "the gait report changed the project"
