@@ -93,6 +93,12 @@ private slots:
         QVERIFY(!sameFoot);
         QVERIFY(sameFoot.message().contains("both of the left foot"));
         QVERIFY(!GaitReport::strideTables(*project_, {}, {"run1/beacons"}));  // not a stride table
+        QCOMPARE(GaitReport::defaultRecording(*project_, "run1"), QString("walk"));  // the only one with strides
+        QCOMPARE(GaitReport::defaultRecording(*project_, "walk"), QString("walk"));
+        project_->putTable("walk2/right-a", strides("right", 5, 0.0));
+        QCOMPARE(GaitReport::defaultRecording(*project_, "run1"), QString());  // two: the user selects one
+        QCOMPARE(GaitReport::defaultRecording(*project_, "walk2"), QString("walk2"));
+        project_->removeItem("walk2/right-a");
         project_->removeItem("walk/left-b");
         auto found = GaitReport::strideTables(*project_, {});  // the only recording with stride tables
         VERIFY_OK(found);

@@ -12,7 +12,6 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMessageBox>
-#include <algorithm>
 
 namespace athlos::ui {
 
@@ -27,17 +26,11 @@ void exportGaitReport(Workspace& workspace) {
         QMessageBox::information(parent, tr("Export gait report"), tr("Open a project first."));
         return;
     }
-    // The recording selected in the tree when it has stride tables, else the only one that has any.
-    // Two tables of one foot are no error here: the dialog chooses.
+    // The recording selected in the tree when it has stride tables, else the only one that has any
+    // (several: the user selects one). Two tables of one foot are no error here: the dialog chooses.
     const QString current = workspace.currentItem();
     const QString selected = ItemPath::parse(current + QStringLiteral("/x")).recording;
-    const auto hasStrides = [&](const QString& name) {
-        const Recording* rec = project->recording(name);
-        return rec && std::any_of(rec->tables.begin(), rec->tables.end(), [](const auto& entry) {
-                   return entry.second.kind == QLatin1String("gait-parameters");
-               });
-    };
-    const QString recording = hasStrides(selected) ? selected : QString();
+    const QString recording = GaitReport::defaultRecording(*project, selected);
     auto found = GaitReport::strideTables(*project, recording);
     GaitReportInput start{recording, {}};
     if (found) start = *found;

@@ -177,6 +177,18 @@ Expected<GaitReportInput> GaitReport::strideTables(const Project& project, const
     return input;
 }
 
+QString GaitReport::defaultRecording(const Project& project, const QString& selected) {
+    const auto hasStrides = [&](const Recording& rec) {
+        return std::any_of(rec.tables.begin(), rec.tables.end(),
+                           [](const auto& entry) { return entry.second.kind == kStrideKind; });
+    };
+    if (const Recording* rec = project.recording(selected); rec && hasStrides(*rec)) return selected;
+    QStringList withStrides;
+    for (const auto& [name, rec] : project.recordings())
+        if (hasStrides(rec)) withStrides << name;
+    return withStrides.size() == 1 ? withStrides.front() : QString();
+}
+
 Expected<Table> GaitReport::summary(const Project& project, const GaitReportInput& input,
                                     const QVariantMap& parameters) {
     const auto processor = ProcessorRegistry::instance().find(QStringLiteral("gait-summary"));

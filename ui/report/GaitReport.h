@@ -29,6 +29,10 @@ public:
     static Expected<GaitReportInput> strideTables(const Project& project, const QString& recording,
                                                   const QStringList& strides = {});
 
+    // The recording to offer: `selected` when it has gait-parameters tables, else the only recording
+    // that has any; empty when none or several have them.
+    static QString defaultRecording(const Project& project, const QString& selected);
+
     // gait-summary of the tables with `parameters` (its declaration: max_turn, terrain, …), computed
     // without storing anything.
     static Expected<Table> summary(const Project& project, const GaitReportInput& input,
