@@ -83,10 +83,7 @@ int cmdReport(const QStringList& args) {
     auto athletes = ui::SessionReport::athletes(**project, p.parser().value(QStringLiteral("recording")));
     if (!athletes) {
         // A project of gait recordings: say how to report those instead.
-        QStringList gait;
-        for (const auto& [name, rec] : (*project)->recordings())
-            for (const auto& entry : rec.tables)
-                if (entry.second.kind == QLatin1String("gait-parameters") && !gait.contains(name)) gait << name;
+        const QStringList gait = ui::GaitReport::recordingsWithStrides(**project);
         return fail(athletes.message() + (gait.isEmpty()
                                               ? QString()
                                               : QStringLiteral("; for the gait report of its stride tables: --gait %1")

@@ -42,22 +42,30 @@ Expected<std::vector<ReferenceStride>> readStrideBorders(const QString& path, do
         QString footName;
         double s = 0.0, e = 0.0;
         for (int i = 0; i < int(header.size()); ++i) {
-            if (!reader.text(cell))
+            const auto missing = [&] {
                 return makeError(QStringLiteral("%1:%2: %3 fields, the header has %4")
                                      .arg(path)
                                      .arg(reader.line())
                                      .arg(reader.fieldsOnLine())
                                      .arg(header.size()));
-            if (i == foot) footName = QString::fromStdString(cell);
-            if (i != start && i != end) continue;
-            bool ok = false;
-            const double x = QString::fromStdString(cell).toDouble(&ok);
-            if (!ok)
-                return makeError(QStringLiteral("%1:%2:%3: %4 '%5' is not a number")
-                                     .arg(path)
-                                     .arg(reader.line())
-                                     .arg(i + 1)
-                                     .arg(i == start ? u"start" : u"end", QString::fromStdString(cell)));
+            };
+            if (i != start && i != end) {
+                if (!reader.text(cell)) return missing();
+                if (i == foot) footName = QString::fromStdString(cell);
+                continue;
+            }
+            double x = 0.0;
+            const CsvReader::Field f = reader.number(x);
+            if (f == CsvReader::Field::Missing) return missing();
+            if (f != CsvReader::Field::Number) {
+                const auto raw = reader.lastField();
+                return makeError(
+                    QStringLiteral("%1:%2:%3: %4 '%5' is not a number")
+                        .arg(path)
+                        .arg(reader.line())
+                        .arg(i + 1)
+                        .arg(i == start ? u"start" : u"end", QString::fromUtf8(raw.data(), qsizetype(raw.size()))));
+            }
             (i == start ? s : e) = x;
         }
         while (reader.text(cell)) {}

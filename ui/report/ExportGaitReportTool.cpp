@@ -38,7 +38,7 @@ void exportGaitReport(Workspace& workspace) {
         QMessageBox::warning(parent, tr("Export gait report"), found.message());
         return;
     }
-    if (const Table* t = project->table(current); t && t->kind == QLatin1String("gait-parameters"))
+    if (const Table* t = project->table(current); t && GaitReport::isStrideTable(*t))
         start.strides << current;  // chosen last: its foot's combo shows it
     GaitReportDialog dialog(*project, start, parent);
     if (dialog.exec() != QDialog::Accepted) return;

@@ -121,7 +121,7 @@ Expected<GaitReportInput> GaitReport::strideTables(const Project& project, const
         for (const QString& path : strides) {
             const Table* t = project.table(path);
             if (!t) return makeError(QStringLiteral("no table '%1' in the project").arg(path));
-            if (t->kind != kStrideKind)
+            if (!isStrideTable(*t))
                 return makeError(
                     QStringLiteral("'%1' is a '%2' table, not a %3 table").arg(path, t->kind, kStrideKind));
             const QString rec = ItemPath::parse(path).recording;
@@ -141,9 +141,7 @@ Expected<GaitReportInput> GaitReport::strideTables(const Project& project, const
             if (!project.recording(recording)) return makeError(QStringLiteral("no recording '%1'").arg(recording));
             candidates << recording;
         } else {
-            for (const auto& [name, rec] : project.recordings())
-                for (const auto& [tableName, table] : rec.tables)
-                    if (table.kind == kStrideKind && !candidates.contains(name)) candidates << name;
+            candidates = recordingsWithStrides(project);
             if (candidates.isEmpty())
                 return makeError(QStringLiteral("the project has no %1 table: run gait-parameters on a foot IMU first")
                                      .arg(kStrideKind));
@@ -154,7 +152,7 @@ Expected<GaitReportInput> GaitReport::strideTables(const Project& project, const
         input.recording = candidates.front();
         std::map<QString, QStringList> byFoot;  // "left" < "right" < others
         for (const auto& [tableName, table] : project.recording(input.recording)->tables)
-            if (table.kind == kStrideKind) byFoot[footOf(table)] << tableName;
+            if (isStrideTable(table)) byFoot[footOf(table)] << tableName;
         if (byFoot.empty())
             return makeError(QStringLiteral("'%1' has no %2 table: run gait-parameters on its foot streams first")
                                  .arg(input.recording, kStrideKind));
@@ -177,15 +175,20 @@ Expected<GaitReportInput> GaitReport::strideTables(const Project& project, const
     return input;
 }
 
-QString GaitReport::defaultRecording(const Project& project, const QString& selected) {
-    const auto hasStrides = [&](const Recording& rec) {
-        return std::any_of(rec.tables.begin(), rec.tables.end(),
-                           [](const auto& entry) { return entry.second.kind == kStrideKind; });
-    };
-    if (const Recording* rec = project.recording(selected); rec && hasStrides(*rec)) return selected;
-    QStringList withStrides;
+bool GaitReport::isStrideTable(const Table& table) { return table.kind == kStrideKind; }
+
+QStringList GaitReport::recordingsWithStrides(const Project& project) {
+    QStringList names;
     for (const auto& [name, rec] : project.recordings())
-        if (hasStrides(rec)) withStrides << name;
+        if (std::any_of(rec.tables.begin(), rec.tables.end(),
+                        [](const auto& entry) { return isStrideTable(entry.second); }))
+            names << name;
+    return names;
+}
+
+QString GaitReport::defaultRecording(const Project& project, const QString& selected) {
+    const QStringList withStrides = recordingsWithStrides(project);
+    if (withStrides.contains(selected)) return selected;
     return withStrides.size() == 1 ? withStrides.front() : QString();
 }
 
@@ -228,13 +231,14 @@ Status GaitReport::writePdf(const Project& project, const GaitReportInput& input
                   QDateTime::currentDateTimeUtc().toString(QStringLiteral("yyyy-MM-dd HH:mm 'UTC'"))),
          9);
     const QJsonObject& a = summary.attributes;
+    const double maxTurn = a.value(QStringLiteral("max_turn")).toDouble();  // rad
     text(page,
          tr("Strides from mid-stance to mid-stance of a foot-mounted IMU (gait-parameters, method %1). Steady "
             "state (gait-summary): strides with |turning angle| ≤ %2 rad on terrain '%3', without the first and "
             "last %4 stride(s) of each run of straight strides. SD: sample standard deviation; CV = SD / mean; "
             "SI: symmetry index 100 |left − right| / mean of both (Robinson et al. 1987).")
              .arg(method.isEmpty() ? QStringLiteral("–") : method)
-             .arg(a.value(QStringLiteral("max_turn")).toDouble(), 0, 'f', 2)
+             .arg(maxTurn, 0, 'f', 2)
              .arg(a.value(QStringLiteral("terrain")).toString())
              .arg(a.value(QStringLiteral("edge_strides")).toInt()),
          9, 4.2, 4.6);
@@ -278,7 +282,6 @@ Status GaitReport::writePdf(const Project& project, const GaitReportInput& input
         rows << row;
     }
     drawTable(page, header, rows, weights);
-    const double maxTurn = a.value(QStringLiteral("max_turn")).toDouble();
     const double plotHeight = std::max(area.height() * 0.15, (area.bottom() - page.y) / 2.0 - area.height() * 0.02);
     strideSeriesPlot(page, tables, QStringLiteral("stride_length"), tr("stride length (m)"), maxTurn, plotHeight);
     strideSeriesPlot(page, tables, QStringLiteral("gait_speed"), tr("gait speed (m/s)"), maxTurn, plotHeight);

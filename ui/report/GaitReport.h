@@ -29,6 +29,11 @@ public:
     static Expected<GaitReportInput> strideTables(const Project& project, const QString& recording,
                                                   const QStringList& strides = {});
 
+    // Whether a table is a stride table of gait-parameters (kind "gait-parameters").
+    static bool isStrideTable(const Table& table);
+    // The recordings that hold at least one stride table, in the project's order.
+    static QStringList recordingsWithStrides(const Project& project);
+
     // The recording to offer: `selected` when it has gait-parameters tables, else the only recording
     // that has any; empty when none or several have them.
     static QString defaultRecording(const Project& project, const QString& selected);

@@ -25,7 +25,7 @@ GaitReportDialog::GaitReportDialog(const Project& project, const GaitReportInput
     right_->addItem(tr("(none)"), QString());
     if (const Recording* rec = project.recording(recording_))
         for (const auto& [name, table] : rec->tables) {
-            if (table.kind != QLatin1String("gait-parameters")) continue;
+            if (!GaitReport::isStrideTable(table)) continue;
             const bool right = table.attributes.value(QStringLiteral("foot")).toString() == QLatin1String("right");
             (right ? right_ : left_)->addItem(name, QString(recording_ + u'/' + name));
         }
